@@ -1,0 +1,32 @@
+# Run after linking (cmake -P): every undefined yade:: symbol of the plugin must be exported by
+# the installed YADE libraries, or YADE would abort at start-up ("Bailing out").
+# Inputs: PLUGIN, YADE_LIBDIR, NM.
+execute_process(COMMAND ${NM} -D --undefined-only ${PLUGIN} OUTPUT_VARIABLE _undef RESULT_VARIABLE _r1)
+file(GLOB _libs "${YADE_LIBDIR}/lib*.so")
+set(_defined "")
+foreach(_l IN LISTS _libs)
+  get_filename_component(_name "${_l}" NAME)
+  if(_name STREQUAL "${PLUGIN_NAME}")
+    continue()
+  endif()
+  execute_process(COMMAND ${NM} -D --defined-only ${_l} OUTPUT_VARIABLE _out)
+  string(APPEND _defined "${_out}")
+endforeach()
+string(REGEX MATCHALL "[^ \n]*4yade[^ \n]*" _needed "${_undef}")  # mangled names in namespace yade
+string(REGEX MATCHALL "[^ \n]*4yade[^ \n]*" _have "${_defined}")
+list(REMOVE_DUPLICATES _needed)
+set(_missing "")
+foreach(_s IN LISTS _needed)
+  list(FIND _have "${_s}" _i)
+  if(_i EQUAL -1)
+    list(APPEND _missing "${_s}")
+  endif()
+endforeach()
+list(LENGTH _needed _n)
+if(_missing)
+  execute_process(COMMAND c++filt ${_missing} OUTPUT_VARIABLE _demangled)
+  file(REMOVE "${PLUGIN}")
+  message(FATAL_ERROR "The plugin needs yade:: symbols that the installed YADE does not export "
+                      "(the headers do not match the installed version):\n${_demangled}")
+endif()
+message(STATUS "symbol check: all ${_n} yade:: symbols the plugin needs are exported by ${YADE_LIBDIR}")

@@ -1,0 +1,107 @@
+#include "MesoParams.hpp"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace meso {
+
+namespace {
+	[[noreturn]] void reject(const char* name, double value, const char* rule)
+	{
+		std::ostringstream msg;
+		msg.precision(17);
+		msg << name << " = " << value << " is invalid: " << rule;
+		throw std::invalid_argument(msg.str());
+	}
+	void finite(const char* name, double v)
+	{
+		if (!std::isfinite(v)) reject(name, v, "must be a finite number");
+	}
+}
+
+Adhesion parseAdhesion(const std::string& s)
+{
+	if (s == "none") return Adhesion::None;
+	if (s == "reversible") return Adhesion::Reversible;
+	if (s == "jumpIn") return Adhesion::JumpIn;
+	throw std::invalid_argument("adhesion = '" + s + "' is invalid: must be 'none', 'reversible' or 'jumpIn'");
+}
+
+K2Interpolation parseK2Interpolation(const std::string& s)
+{
+	if (s == "linear") return K2Interpolation::Linear;
+	if (s == "sqrt") return K2Interpolation::Sqrt;
+	throw std::invalid_argument("k2Interpolation = '" + s + "' is invalid: must be 'linear' or 'sqrt'");
+}
+
+const char* adhesionName(Adhesion a)
+{
+	switch (a) {
+		case Adhesion::Reversible: return "reversible";
+		case Adhesion::JumpIn: return "jumpIn";
+		default: return "none";
+	}
+}
+
+const char* k2InterpolationName(K2Interpolation k) { return k == K2Interpolation::Sqrt ? "sqrt" : "linear"; }
+
+void validate(const MaterialParams& m)
+{
+	finite("k1", m.k1);
+	finite("kp", m.kp);
+	finite("kc", m.kc);
+	finite("phiF", m.phiF);
+	finite("fa", m.fa);
+	finite("kca", m.kca);
+	finite("gammaN", m.gammaN);
+	if (!(m.k1 > 0)) reject("k1", m.k1, "the loading stiffness must be > 0");
+	if (!(m.kp >= m.k1)) reject("kp", m.kp, "the limit stiffness must be >= k1");
+	if (!(m.kc >= 0)) reject("kc", m.kc, "the adhesive stiffness must be >= 0");
+	if (!(m.phiF > 0 && m.phiF <= 1)) reject("phiF", m.phiF, "the plasticity depth must lie in (0, 1]");
+	if (!(m.fa >= 0)) reject("fa", m.fa, "the non-contact adhesive force must be >= 0");
+	if (!(m.kca >= 0)) reject("kca", m.kca, "the non-contact adhesive stiffness must be >= 0");
+	if (m.fa > 0 && !(m.kca > 0)) reject("kca", m.kca, "must be > 0 when fa > 0 (the range of the non-contact force is fa/kca)");
+	if (m.fa > 0 && m.adhesion == Adhesion::None)
+		throw std::invalid_argument("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0");
+	if (!(m.gammaN >= 0)) reject("gammaN", m.gammaN, "the viscous damping must be >= 0");
+}
+
+double harmonicMean(double x, double y) { return (x == 0 || y == 0) ? 0.0 : 2 * x * y / (x + y); }
+
+void deriveGeometry(PairParams& p, double a12)
+{
+	p.a12     = a12;
+	p.delta0P = p.phiF * a12;
+	if (p.kp > p.k1) {
+		p.deltaMaxP    = p.kp / (p.kp - p.k1) * p.delta0P;
+		p.invDeltaMaxP = 1.0 / p.deltaMaxP;
+	} else { // purely elastic: the limit branch is never reached
+		p.deltaMaxP    = std::numeric_limits<double>::infinity();
+		p.invDeltaMaxP = 0;
+	}
+	p.deltaA = (p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0;
+}
+
+PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12)
+{
+	PairParams p;
+	p.k1     = harmonicMean(m1.k1, m2.k1);
+	p.kp     = std::max(harmonicMean(m1.kp, m2.kp), p.k1); // monotone mean keeps kp >= k1; max() guards rounding
+	p.kc     = harmonicMean(m1.kc, m2.kc);
+	p.phiF   = 0.5 * (m1.phiF + m2.phiF);
+	p.fa     = harmonicMean(m1.fa, m2.fa);
+	p.kca    = harmonicMean(m1.kca, m2.kca);
+	p.gammaN = harmonicMean(m1.gammaN, m2.gammaN);
+	auto strength = [](Adhesion a) { return a == Adhesion::None ? 0 : (a == Adhesion::JumpIn ? 1 : 2); };
+	p.adhesion    = strength(m1.adhesion) <= strength(m2.adhesion) ? m1.adhesion : m2.adhesion;
+	p.k2Interpolation = (m1.k2Interpolation == K2Interpolation::Sqrt && m2.k2Interpolation == K2Interpolation::Sqrt)
+	        ? K2Interpolation::Sqrt
+	        : K2Interpolation::Linear;
+	if (p.adhesion == Adhesion::None) p.fa = 0;
+	deriveGeometry(p, a12);
+	return p;
+}
+
+} // namespace meso

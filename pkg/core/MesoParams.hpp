@@ -1,0 +1,55 @@
+// Parameters of the meso-particle contact law (Singh, Magnanimo & Luding): per material, their
+// validation, and the mixing of two materials into the parameters of one pair. No YADE here.
+#pragma once
+#include <string>
+
+namespace meso {
+
+enum class Adhesion : int { None = 0, Reversible = 1, JumpIn = 2 };
+enum class K2Interpolation : int { Linear = 0, Sqrt = 1 };
+
+Adhesion        parseAdhesion(const std::string& name);        // throws std::invalid_argument naming 'adhesion'
+K2Interpolation parseK2Interpolation(const std::string& name); // throws naming 'k2Interpolation'
+const char*     adhesionName(Adhesion a);
+const char*     k2InterpolationName(K2Interpolation k);
+
+// What a material declares (MODEL.md §2); SI units.
+struct MaterialParams {
+	double          k1     = 1e2;  // plastic loading stiffness [N/m]
+	double          kp     = 5e2;  // elastic limit stiffness [N/m], >= k1
+	double          kc     = 0;    // adhesive (tensile branch) stiffness [N/m]
+	double          phiF   = 0.1;  // plasticity depth, (0, 1]
+	double          fa     = 0;    // non-contact adhesive force [N]
+	double          kca    = 0;    // non-contact adhesive stiffness [N/m], > 0 when fa > 0
+	double          gammaN = 0;    // normal viscous damping [kg/s]
+	Adhesion        adhesion        = Adhesion::None;
+	K2Interpolation k2Interpolation = K2Interpolation::Linear;
+};
+
+// Throws std::invalid_argument whose message starts with the offending parameter's name.
+void validate(const MaterialParams& m);
+
+// Harmonic mean 2xy/(x+y) (0 if either is 0): reduces to x for equal materials.
+double harmonicMean(double x, double y);
+
+// The parameters of one pair (MODEL.md §8) with the geometric constants derived from a12.
+struct PairParams {
+	double          k1 = 0, kp = 0, kc = 0, phiF = 0, fa = 0, kca = 0, gammaN = 0;
+	Adhesion        adhesion        = Adhesion::None;
+	K2Interpolation k2Interpolation = K2Interpolation::Linear;
+	double          a12          = 0; // reduced radius 2 a1 a2/(a1+a2); 2 a against a wall [m]
+	double          deltaMaxP    = 0; // limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]
+	double          invDeltaMaxP = 0; // 1/deltaMaxP (0 if kp == k1) [1/m]
+	double          delta0P      = 0; // plastic overlap on the limit branch phiF a12 (Eq. 11) [m]
+	double          deltaA       = 0; // range of the non-contact force -fa/kca (<= 0) [m]
+};
+
+// Mixes two materials: stiffnesses, fa and gammaN by harmonic mean; phiF by arithmetic mean;
+// adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation
+// only when both ask for it. Equal materials give their own values.
+PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12);
+
+// Fills the derived constants of p from its parameters and a12.
+void deriveGeometry(PairParams& p, double a12);
+
+} // namespace meso

@@ -1,0 +1,139 @@
+// The normal force of the meso-particle law (MODEL.md §3–5): hysteretic contact force with the
+// exact history update, non-contact adhesion, viscous damping, and the per-contact energy
+// bookkeeping. Header-only so that it inlines into Law2::go(); no YADE here.
+#pragma once
+#include "MesoParams.hpp"
+#include <cmath>
+
+namespace meso {
+
+// What one contact remembers. deltaMax is the only true state of the hysteresis; k2 and delta0
+// are cached functions of it (they change only when deltaMax does).
+struct NormalHistory {
+	double deltaMax = 0; // largest overlap of the current contact (after -kc resets) [m]
+	double k2       = 0; // un-/re-loading stiffness k2(deltaMax) [N/m]
+	double delta0   = 0; // force-free overlap of the current k2 line [m]
+	bool   touched  = false; // the pair has been in mechanical contact (jump-in adhesion)
+};
+
+// The three parts of the normal force (> 0 repulsive) [N].
+struct NormalForce {
+	double hysteretic = 0, adhesive = 0, viscous = 0;
+	double total() const { return hysteretic + adhesive + viscous; }
+};
+
+// k2 and delta0 of the un-/re-loading line that belongs to deltaMax (Eqs. 7, 9, 10, D.1).
+inline void setUnloadingLine(const PairParams& p, NormalHistory& h, double deltaMax)
+{
+	h.deltaMax = deltaMax;
+	if (deltaMax >= p.deltaMaxP) {
+		h.k2     = p.kp;
+		h.delta0 = p.delta0P;
+		return;
+	}
+	const double x = deltaMax * p.invDeltaMaxP; // in [0, 1)
+	h.k2           = p.k1 + (p.kp - p.k1) * (p.k2Interpolation == K2Interpolation::Sqrt ? std::sqrt(x) : x);
+	h.delta0       = (1 - p.k1 / h.k2) * deltaMax;
+}
+
+// The deltaMax whose k2 line passes through (delta, -kc delta) on the tensile branch: the root of
+// (k2(dm) - k1) dm = (k2(dm) + kc) delta, solved in closed form (no lagged k2).
+inline double deltaMaxThrough(const PairParams& p, double delta)
+{
+	const double x = delta * p.invDeltaMaxP;
+	const double q = (p.k1 + p.kc) / (p.kp - p.k1); // (1 + beta)/eta
+	if (p.k2Interpolation == K2Interpolation::Linear) {
+		// c dm^2 - c delta dm - (k1 + kc) delta = 0 with c = (kp - k1)/deltaMaxP, in units of deltaMaxP
+		return p.deltaMaxP * (0.5 * x + std::sqrt(0.25 * x * x + q * x));
+	}
+	// k2 = k1 (1 + eta s), dm = deltaMaxP s^2:  s^3 - x s - q x = 0, one positive root
+	const double P = -x, Q = -q * x;
+	const double D = 0.25 * Q * Q + P * P * P / 27;
+	double       s;
+	if (D >= 0) {
+		const double r = std::sqrt(D);
+		s              = std::cbrt(-0.5 * Q + r) + std::cbrt(-0.5 * Q - r);
+	} else {
+		s = 2 * std::sqrt(-P / 3) * std::cos(std::acos(1.5 * Q / P * std::sqrt(-3 / P)) / 3);
+	}
+	s -= (s * s * s + P * s + Q) / (3 * s * s + P); // one Newton step polishes rounding
+	return p.deltaMaxP * s * s;
+}
+
+// Hysteretic contact force at overlap delta; updates the history first (MODEL.md §3 order).
+inline double hystereticForce(const PairParams& p, NormalHistory& h, double delta)
+{
+	if (delta <= 0) { // mechanical contact over: the next one starts new
+		h.deltaMax = 0;
+		h.k2       = p.k1;
+		h.delta0   = 0;
+		return 0;
+	}
+	if (delta > h.deltaMax) setUnloadingLine(p, h, delta); // the k2 line meets k1 delta (or the kp branch) here
+	const double f    = h.k2 * (delta - h.delta0);
+	const double fMin = -p.kc * delta;
+	if (f >= fMin) return f;
+	setUnloadingLine(p, h, deltaMaxThrough(p, delta)); // moving along -kc changes the history
+	return fMin;
+}
+
+// Non-contact adhesion superposed on the contact force (Eqs. 14, 15 and the jump-in tail).
+inline double adhesiveForce(const PairParams& p, NormalHistory& h, double delta)
+{
+	if (p.adhesion == Adhesion::None) return 0;
+	if (p.adhesion == Adhesion::JumpIn && !h.touched) {
+		if (delta <= 0) return 0;
+		h.touched = true;
+	}
+	if (delta > 0) return -p.fa;
+	if (delta > p.deltaA) return -p.kca * delta - p.fa;
+	return 0;
+}
+
+// All parts of the normal force; vn = d(delta)/dt, > 0 while approaching [m/s].
+inline NormalForce normalForce(const PairParams& p, NormalHistory& h, double delta, double vn)
+{
+	NormalForce f;
+	f.hysteretic = hystereticForce(p, h, delta);
+	f.adhesive   = adhesiveForce(p, h, delta);
+	f.viscous    = delta > 0 ? p.gammaN * vn : 0.0;
+	return f;
+}
+
+// Whether the pair still interacts: while the non-contact force can act (delta > deltaA), or in contact.
+inline bool keepsInteracting(const PairParams& p, double delta) { return delta > p.deltaA; }
+
+// Elastic energy stored on the current un-/re-loading line: 1/2 k2 (delta - delta0)^2 = f^2/(2 k2) [J].
+inline double storedElastic(const NormalHistory& h, double fHysteretic) { return h.k2 > 0 ? 0.5 * fHysteretic * fHysteretic / h.k2 : 0.0; }
+
+// Energy bookkeeping of one contact consistent with YADE's leapfrog integrator, whose kinetic
+// energy at step n uses the velocity of step n-1/2: the work absorbed by the contact up to that
+// time is the trapezoidal sum up to step n minus f_n (delta_n - delta_{n-1})/2.
+struct NormalEnergyState {
+	double prevDelta   = 0; // overlap of the previous step [m]
+	double prevElastic = 0; // stored elastic energy of the previous step [J]
+};
+
+struct NormalEnergyStep {
+	double elastic = 0;    // stored elastic energy, half-step consistent (reset every step) [J]
+	double plastic = 0;    // increment of hysteretic dissipation [J]
+	double adhesive = 0;   // increment of the work absorbed by the adhesive force (< 0 while binding) [J]
+	double viscous = 0;    // increment of viscous dissipation [J]
+};
+
+// prev: the force parts of the previous step (zero before the first one); f: this step's.
+inline NormalEnergyStep energyStep(NormalEnergyState& s, const NormalHistory& h, const NormalForce& prev, const NormalForce& f, double delta)
+{
+	const double     dd      = delta - s.prevDelta;
+	const double     elastic = storedElastic(h, f.hysteretic);
+	NormalEnergyStep e;
+	e.plastic       = 0.5 * (prev.hysteretic + f.hysteretic) * dd - (elastic - s.prevElastic);
+	e.adhesive      = 0.5 * (prev.adhesive + f.adhesive) * dd;
+	e.viscous       = 0.5 * (prev.viscous + f.viscous) * dd;
+	e.elastic       = elastic - 0.5 * f.total() * dd;
+	s.prevDelta     = delta;
+	s.prevElastic   = elastic;
+	return e;
+}
+
+} // namespace meso

@@ -1,0 +1,149 @@
+// YADE adapter of the meso-particle contact law: Material (parameters), IPhys (per-contact
+// history), Ip2 (mixing) and Law2 (calls the YADE-free core in pkg/core and applies forces).
+#pragma once
+#include "../core/NormalLaw.hpp"
+
+#include <core/Dispatching.hpp>
+#include <pkg/common/ElastMat.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+class MesoMat : public FrictMat {
+	meso::MaterialParams lastValid;                               // restored when an assignment is rejected
+	std::string          lastAdhesion = "none", lastK2Interpolation = "linear";
+	bool                 deferChecks  = false;                    // set while the constructor applies its keywords
+
+public:
+	virtual ~MesoMat() = default;
+	meso::MaterialParams params() const; // parsed; valid by construction
+	void                 postLoad(MesoMat&);
+	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
+		((Real,k1,1e2,Attr::triggerPostLoad,"Plastic (initial) loading stiffness $k_1$ [N/m], > 0."))
+		((Real,kp,5e2,Attr::triggerPostLoad,"Elastic limit stiffness $k_p\\geq k_1$ [N/m]; $k_p=k_1$ gives a linear elastic contact."))
+		((Real,kc,0,Attr::triggerPostLoad,"Adhesive stiffness $k_c\\geq 0$ of the tensile branch $f=-k_c\\delta$ [N/m]."))
+		((Real,phiF,0.1,Attr::triggerPostLoad,"Dimensionless plasticity depth $\\phi_f\\in(0,1]$: the limit branch starts at $\\delta_{max}^p=k_p/(k_p-k_1)\\,\\phi_f a_{12}$ [-]."))
+		((Real,fa,0,Attr::triggerPostLoad,"Non-contact adhesive force magnitude $f_a\\geq 0$ [N]; needs ``adhesion`` other than 'none' and $k_{ca}>0$."))
+		((Real,kca,0,Attr::triggerPostLoad,"Non-contact adhesive stiffness $k_{ca}$ [N/m]; the non-contact force acts down to the overlap $\\delta_a=-f_a/k_{ca}$."))
+		((Real,gammaN,0,Attr::triggerPostLoad,"Normal viscous damping coefficient $\\gamma_0\\geq 0$ [kg/s]; the force $\\gamma_0 v_n$ acts in mechanical contact."))
+		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion: 'none', 'reversible' (Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$) or 'jumpIn' (Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after)."))
+		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1).")),
+		createIndex();
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(MesoMat, FrictMat);
+};
+REGISTER_SERIALIZABLE(MesoMat);
+
+class MesoPhys : public FrictPhys {
+public:
+	virtual ~MesoPhys() = default;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoPhys,FrictPhys,"Physics of one meso-particle contact, created by :yref:`Ip2_MesoMat_MesoMat_MesoPhys`: the mixed pair parameters, the contact history and the energy bookkeeping of :yref:`Law2_ScGeom_MesoPhys_Meso`. All are read-only from Python and are saved with the simulation. ``kn`` is the stiffest branch $k_p$ (for YADE's time-step tools).",
+		((meso::PairParams,pair,,Attr::hidden,"Mixed pair parameters (see the read-only properties)."))
+		((meso::NormalHistory,history,,Attr::hidden,"Contact history (see the read-only properties)."))
+		((meso::NormalForce,force,,Attr::hidden,"Parts of the normal force at the last step (see the read-only properties)."))
+		((meso::NormalEnergyState,energy,,Attr::hidden,"Previous step, for the energy bookkeeping.")),
+		createIndex(); energy.prevDelta = NaN;,
+		.add_property("deltaMax",&MesoPhys::getDeltaMax,"Largest overlap $\\delta_{max}$ of the current mechanical contact, after resets along the $-k_c$ branch [m].")
+		.add_property("delta0",&MesoPhys::getDelta0,"Force-free overlap $\\delta_0$ of the current un-/re-loading line [m].")
+		.add_property("k2",&MesoPhys::getK2,"Current un-/re-loading stiffness $k_2(\\delta_{max})$ [N/m].")
+		.add_property("deltaMaxP",&MesoPhys::getDeltaMaxP,"Limit overlap $\\delta_{max}^p$ (Eq. 10) [m]; inf when $k_p=k_1$.")
+		.add_property("delta0P",&MesoPhys::getDelta0P,"Plastic overlap $\\phi_f a_{12}$ on the limit branch (Eq. 11) [m].")
+		.add_property("deltaA",&MesoPhys::getDeltaA,"Range of the non-contact force $-f_a/k_{ca}$ (0 without adhesion) [m].")
+		.add_property("a12",&MesoPhys::getA12,"Reduced radius $2a_1a_2/(a_1+a_2)$ ($2a$ against a wall) [m].")
+		.add_property("touched",&MesoPhys::getTouched,"Whether the pair has been in mechanical contact (starts the jump-in adhesion).")
+		.add_property("k1",&MesoPhys::getK1,"Mixed loading stiffness [N/m].")
+		.add_property("kp",&MesoPhys::getKp,"Mixed limit stiffness [N/m].")
+		.add_property("kc",&MesoPhys::getKc,"Mixed adhesive stiffness [N/m].")
+		.add_property("phiF",&MesoPhys::getPhiF,"Mixed plasticity depth [-].")
+		.add_property("fa",&MesoPhys::getFa,"Mixed non-contact adhesive force [N].")
+		.add_property("kca",&MesoPhys::getKca,"Mixed non-contact adhesive stiffness [N/m].")
+		.add_property("gammaN",&MesoPhys::getGammaN,"Mixed normal viscous damping [kg/s].")
+		.add_property("adhesion",&MesoPhys::getAdhesion,"Adhesion mode of the pair.")
+		.add_property("k2Interpolation",&MesoPhys::getK2Interpolation,"Interpolation of $k_2$ for the pair.")
+		.add_property("hystereticForce",&MesoPhys::getFh,"Hysteretic contact part of the normal force at the last step (> 0 repulsive) [N]. The total is ``normalForce``.")
+		.add_property("adhesiveForce",&MesoPhys::getFadh,"Non-contact adhesive part of the normal force at the last step [N].")
+		.add_property("viscousForce",&MesoPhys::getFv,"Viscous part of the normal force at the last step [N].")
+	);
+	// clang-format on
+	Real        getDeltaMax() const { return history.deltaMax; }
+	Real        getDelta0() const { return history.delta0; }
+	Real        getK2() const { return history.k2; }
+	bool        getTouched() const { return history.touched; }
+	Real        getDeltaMaxP() const { return pair.deltaMaxP; }
+	Real        getDelta0P() const { return pair.delta0P; }
+	Real        getDeltaA() const { return pair.deltaA; }
+	Real        getA12() const { return pair.a12; }
+	Real        getK1() const { return pair.k1; }
+	Real        getKp() const { return pair.kp; }
+	Real        getKc() const { return pair.kc; }
+	Real        getPhiF() const { return pair.phiF; }
+	Real        getFa() const { return pair.fa; }
+	Real        getKca() const { return pair.kca; }
+	Real        getGammaN() const { return pair.gammaN; }
+	std::string getAdhesion() const { return meso::adhesionName(pair.adhesion); }
+	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair.k2Interpolation); }
+	Real        getFh() const { return force.hysteretic; }
+	Real        getFadh() const { return force.adhesive; }
+	Real        getFv() const { return force.viscous; }
+	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
+};
+REGISTER_SERIALIZABLE(MesoPhys);
+
+class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
+public:
+	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without adhesion switches it off); $\\phi_f$ by the arithmetic mean; the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it. The friction angle is the smaller one, as in :yref:`Ip2_FrictMat_FrictMat_FrictPhys`. $a_{12}=2a_1a_2/(a_1+a_2)$ from the sphere radii of the geometry.");
+	// clang-format on
+	FUNCTOR2D(MesoMat, MesoMat);
+};
+REGISTER_SERIALIZABLE(Ip2_MesoMat_MesoMat_MesoPhys);
+
+class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
+public:
+	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation) [J].",
+		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
+		((int,plasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoPlastic' in O.energy"))
+		((int,adhesiveIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoAdhesive' in O.energy"))
+		((int,viscousIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoViscous' in O.energy"))
+	);
+	// clang-format on
+	FUNCTOR2D(ScGeom, MesoPhys);
+};
+REGISTER_SERIALIZABLE(Law2_ScGeom_MesoPhys_Meso);
+
+} // namespace yade
+
+// boost::serialization of the core structs (they live in MesoPhys as hidden attributes).
+namespace boost { namespace serialization {
+	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int)
+	{
+		int adhesion = static_cast<int>(p.adhesion), interp = static_cast<int>(p.k2Interpolation);
+		ar& make_nvp("k1", p.k1)& make_nvp("kp", p.kp)& make_nvp("kc", p.kc)& make_nvp("phiF", p.phiF);
+		ar& make_nvp("fa", p.fa)& make_nvp("kca", p.kca)& make_nvp("gammaN", p.gammaN);
+		ar& make_nvp("adhesion", adhesion)& make_nvp("k2Interpolation", interp);
+		ar& make_nvp("a12", p.a12)& make_nvp("deltaMaxP", p.deltaMaxP)& make_nvp("invDeltaMaxP", p.invDeltaMaxP);
+		ar& make_nvp("delta0P", p.delta0P)& make_nvp("deltaA", p.deltaA);
+		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
+		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
+	{
+		ar& make_nvp("deltaMax", h.deltaMax)& make_nvp("k2", h.k2)& make_nvp("delta0", h.delta0)& make_nvp("touched", h.touched);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::NormalForce& f, const unsigned int)
+	{
+		ar& make_nvp("hysteretic", f.hysteretic)& make_nvp("adhesive", f.adhesive)& make_nvp("viscous", f.viscous);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::NormalEnergyState& s, const unsigned int)
+	{
+		ar& make_nvp("prevDelta", s.prevDelta)& make_nvp("prevElastic", s.prevElastic);
+	}
+}} // namespace boost::serialization

@@ -1,0 +1,79 @@
+#include "MesoParams.hpp"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+using namespace meso;
+
+namespace {
+std::string rejection(const MaterialParams& m)
+{
+	try {
+		validate(m);
+	} catch (const std::invalid_argument& e) {
+		return e.what();
+	}
+	return "";
+}
+bool startsWith(const std::string& s, const std::string& p) { return s.rfind(p, 0) == 0; }
+}
+
+TEST(Validate, DefaultsAreValid) { EXPECT_EQ(rejection(MaterialParams()), ""); }
+
+TEST(Validate, EachRuleNamesItsParameter)
+{
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	struct Case { void (*set)(MaterialParams&); const char* name; };
+	const Case cases[] = {
+		{[](MaterialParams& m) { m.kp = 50; }, "kp"},
+		{[](MaterialParams& m) { m.k1 = -1; }, "k1"},
+		{[](MaterialParams& m) { m.kc = -1; }, "kc"},
+		{[](MaterialParams& m) { m.phiF = 0; }, "phiF"},
+		{[](MaterialParams& m) { m.phiF = 1.5; }, "phiF"},
+		{[](MaterialParams& m) { m.fa = 1e-3; m.adhesion = Adhesion::Reversible; }, "kca"},
+		{[](MaterialParams& m) { m.fa = -1; }, "fa"},
+		{[](MaterialParams& m) { m.gammaN = -1; }, "gammaN"},
+		{[](MaterialParams& m) { m.fa = 1e-3; m.kca = 1; }, "adhesion"},
+		{[](MaterialParams& m) { m.k1 = std::numeric_limits<double>::quiet_NaN(); }, "k1"},
+		{[](MaterialParams& m) { m.kc = std::numeric_limits<double>::infinity(); }, "kc"},
+	};
+	(void)nan;
+	for (const Case& c : cases) {
+		MaterialParams m;
+		c.set(m);
+		const std::string msg = rejection(m);
+		EXPECT_TRUE(startsWith(msg, c.name)) << c.name << ": '" << msg << "'";
+	}
+}
+
+TEST(Validate, ModeNames)
+{
+	EXPECT_EQ(parseAdhesion("jumpIn"), Adhesion::JumpIn);
+	EXPECT_EQ(parseK2Interpolation("sqrt"), K2Interpolation::Sqrt);
+	EXPECT_THROW(parseAdhesion("jump-in"), std::invalid_argument);
+	EXPECT_THROW(parseK2Interpolation("cubic"), std::invalid_argument);
+}
+
+TEST(Mixing, EqualMaterialsKeepTheirValues)
+{
+	MaterialParams m; m.k1 = 3; m.kp = 7; m.kc = 2; m.phiF = 0.3; m.fa = 1e-3; m.kca = 5; m.gammaN = 1e-2;
+	m.adhesion = Adhesion::JumpIn; m.k2Interpolation = K2Interpolation::Sqrt;
+	const PairParams p = mixPair(m, m, 1e-3);
+	EXPECT_DOUBLE_EQ(p.k1, 3); EXPECT_DOUBLE_EQ(p.kp, 7); EXPECT_DOUBLE_EQ(p.kc, 2);
+	EXPECT_DOUBLE_EQ(p.phiF, 0.3); EXPECT_DOUBLE_EQ(p.fa, 1e-3); EXPECT_DOUBLE_EQ(p.kca, 5);
+	EXPECT_DOUBLE_EQ(p.gammaN, 1e-2);
+	EXPECT_EQ(p.adhesion, Adhesion::JumpIn); EXPECT_EQ(p.k2Interpolation, K2Interpolation::Sqrt);
+}
+
+TEST(Mixing, UnlikeMaterials)
+{
+	MaterialParams a, b; a.k1 = 100; a.kp = 500; b.k1 = 300; b.kp = 300;
+	a.adhesion = Adhesion::Reversible; a.fa = 1e-3; a.kca = 1;
+	const PairParams p = mixPair(a, b, 1e-3);
+	EXPECT_DOUBLE_EQ(p.k1, 150); EXPECT_DOUBLE_EQ(p.kp, 375);
+	EXPECT_GE(p.kp, p.k1);
+	EXPECT_EQ(p.adhesion, Adhesion::None); // b has none
+	EXPECT_EQ(p.fa, 0.0); EXPECT_EQ(p.deltaA, 0.0);
+}
