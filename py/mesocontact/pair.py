@@ -1,0 +1,181 @@
+"""Pair collisions in YADE: a scene builder and a driver (run inside ``yade``).
+
+    from mesocontact import pair
+    s = pair.build(radius1=1.1e-3, v_inf=0.05, material=dict(k1=100, kp=500, kc=100, phiF=0.1))
+    r = pair.collide(s)
+    print(r.e, r.stuck, r.final_overlap)
+"""
+import math
+from dataclasses import dataclass, field
+
+from . import params as _params
+
+try:
+    from yade import O
+    from yade import wrapper as _w
+    from yade import utils as _utils
+except ImportError as _exc:  # pragma: no cover - outside yade
+    raise ImportError("mesocontact.pair needs YADE: run it inside `yade`") from _exc
+
+
+@dataclass
+class PairScene:
+    """What build() set up (SI units)."""
+    ids: tuple
+    radii: tuple
+    masses: tuple
+    m_r: float
+    a12: float
+    v_inf: float
+    delta_a: float       # range of the non-contact force (<= 0) [m]
+    contact_time: float  # pi sqrt(m_r/kp) [s]
+    material: object = None
+
+
+@dataclass
+class PairResult:
+    """Outcome of collide()."""
+    e: float                 # restitution (0 if stuck)
+    stuck: bool
+    final_overlap: float     # resting overlap (viscous) or lower turning point delta_c (elastic oscillation) [m]
+    steps: int
+    trace: list = field(default_factory=list)  # (time, overlap, hysteretic force, total force) if recorded
+
+
+def _material(material, density):
+    if isinstance(material, _w.MesoMat):
+        return material
+    kw = dict(material or {})
+    kw.setdefault("density", density)
+    return _w.MesoMat(**kw)
+
+
+def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2=None, dt=None,
+          steps_per_contact=2000, track_energy=False, gap=None):
+    """Two spheres on the x axis approaching head-on with relative speed v_inf, in the centre of
+    mass frame, starting just outside the range of the non-contact force.
+
+    material/material2: ``MesoMat`` or dict of its attributes (material2 defaults to material).
+    The collider and the geometry functor are set to detect the pair at the gap where the
+    non-contact force starts. dt defaults to the contact time of kp over steps_per_contact.
+    """
+    _params._positive("radius1", radius1)
+    _params._positive("v_inf", v_inf)
+    radius2 = radius1 if radius2 is None else radius2
+    _params._positive("radius2", radius2)
+    O.reset()
+    m1 = _material(material, density)
+    m2 = m1 if material2 is None else _material(material2, density)
+    O.materials.append(m1)
+    if m2 is not m1:
+        O.materials.append(m2)
+
+    mass1, mass2 = _params.sphere_mass(radius1, m1.density), _params.sphere_mass(radius2, m2.density)
+    m_r = _params.reduced_mass(mass1, mass2)
+    a12 = _params.reduced_radius(radius1, radius2)
+    # Same mixing as Ip2 for the range: harmonic means of fa and kca.
+    fa = _hm(m1.fa, m2.fa) if "none" not in (m1.adhesion, m2.adhesion) else 0.0
+    kca = _hm(m1.kca, m2.kca)
+    delta_a = -fa / kca if fa > 0 else 0.0
+    kp = _hm(m1.kp, m2.kp)
+    t_c = _params.contact_time(kp, m_r)
+    O.dt = dt if dt is not None else t_c / steps_per_contact
+
+    start_gap = gap if gap is not None else -delta_a + 3.0 * v_inf * O.dt
+    factor = 1.0 + 1.2 * start_gap / (radius1 + radius2)  # detect at the start gap, with margin
+    b1 = _utils.sphere((0, 0, 0), radius1, material=m1)
+    b2 = _utils.sphere((radius1 + radius2 + start_gap, 0, 0), radius2, material=m2)
+    ids = tuple(O.bodies.append([b1, b2]))
+    b1.state.vel = (v_inf * mass2 / (mass1 + mass2), 0, 0)
+    b2.state.vel = (-v_inf * mass1 / (mass1 + mass2), 0, 0)
+    O.engines = [
+        _w.ForceResetter(),
+        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor)], verletDist=0),
+        _w.InteractionLoop(
+            [_w.Ig2_Sphere_Sphere_ScGeom(interactionDetectionFactor=factor)],
+            [_w.Ip2_MesoMat_MesoMat_MesoPhys()],
+            [_w.Law2_ScGeom_MesoPhys_Meso()]),
+        _w.NewtonIntegrator(damping=0.0, gravity=(0, 0, 0)),
+    ]
+    O.trackEnergy = track_energy
+    return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1)
+
+
+def _hm(x, y):
+    return 0.0 if x == 0 or y == 0 else 2.0 * x * y / (x + y)
+
+
+def overlap(s):
+    """Current overlap delta = a1 + a2 - distance [m]."""
+    p1, p2 = O.bodies[s.ids[0]].state.pos, O.bodies[s.ids[1]].state.pos
+    return s.radii[0] + s.radii[1] - (p2 - p1).norm()
+
+
+def separation_speed(s):
+    """Relative normal speed, > 0 while the spheres recede [m/s]."""
+    b1, b2 = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
+    n = (b2.pos - b1.pos).normalized()
+    return (b2.vel - b1.vel).dot(n)
+
+
+def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0):
+    """Runs the collision until the pair has separated beyond the non-contact range, or for
+    max_contact_times contact times (then it is stuck).
+
+    For a stuck pair, final_overlap is the lower turning point of the oscillation it settled
+    into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further contact
+    times; with viscosity that is the resting overlap. record=True keeps
+    (t, delta, f_hysteretic, f_total) at every step.
+    """
+    trace = []
+    check_every = max(1, int(0.02 * s.contact_time / O.dt))
+    limit = O.iter + int(max_contact_times * s.contact_time / O.dt) + int(-s.delta_a / (s.v_inf * O.dt)) + 10
+    _DRIVER.update(scene=s, trace=trace if record else None, low=math.inf, separated=False)
+    watcher = _w.PyRunner(iterPeriod=1 if record else check_every, command=_COMMAND % "_watch()")
+    O.engines = O.engines + [watcher]
+    try:
+        _run_until(limit)
+        if _DRIVER["separated"]:
+            return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
+        watcher.iterPeriod = 1
+        watcher.command = _COMMAND % "_track_low()"
+        _run_until(O.iter + int(settle_contact_times * s.contact_time / O.dt))
+        return PairResult(0.0, True, _DRIVER["low"], O.iter, trace)
+    finally:
+        O.engines = [e for e in O.engines if e is not watcher]
+
+
+# The watcher runs inside YADE's loop (one PyRunner) so that a collision costs one O.run().
+_COMMAND = "import mesocontact.pair as _mp; _mp.%s"
+_DRIVER = {}
+
+
+def _run_until(iteration):
+    O.stopAtIter = iteration
+    O.run()
+    O.wait()
+
+
+def _watch():
+    s = _DRIVER["scene"]
+    if _DRIVER["trace"] is not None:
+        _DRIVER["trace"].append(_sample(s))
+    if overlap(s) < s.delta_a and separation_speed(s) > 0:
+        _DRIVER["separated"] = True
+        O.pause()
+
+
+def _track_low():
+    s = _DRIVER["scene"]
+    _DRIVER["low"] = min(_DRIVER["low"], overlap(s))
+    if _DRIVER["trace"] is not None:
+        _DRIVER["trace"].append(_sample(s))
+
+
+def _sample(s):
+    i = O.interactions[s.ids[0], s.ids[1]] if O.interactions.has(s.ids[0], s.ids[1]) else None
+    fh = ft = 0.0
+    if i is not None and i.isReal:
+        fh = i.phys.hystereticForce
+        ft = i.phys.normalForce.dot(i.geom.normal)
+    return (O.time, overlap(s), fh, ft)

@@ -1,0 +1,52 @@
+"""Parameter helpers for the meso-particle law (plain Python, SI units)."""
+import math
+
+from .theory import _nonnegative, _positive
+
+
+def sphere_mass(radius, density):
+    """Mass of a sphere [kg]."""
+    _positive("radius", radius)
+    _positive("density", density)
+    return 4.0 / 3.0 * math.pi * radius ** 3 * density
+
+
+def reduced_mass(m1, m2=math.inf):
+    """m1 m2/(m1 + m2); against a wall (m2 = inf) the sphere's own mass [kg]."""
+    return m1 if math.isinf(m2) else m1 * m2 / (m1 + m2)
+
+
+def reduced_radius(a1, a2=math.inf):
+    """a12 = 2 a1 a2/(a1 + a2); against a wall (a2 = inf) 2 a1 [m]."""
+    return 2.0 * a1 if math.isinf(a2) else 2.0 * a1 * a2 / (a1 + a2)
+
+
+def stiffnesses(k1, eta, beta):
+    """k1, kp, kc from the loading stiffness and the groups eta = (kp - k1)/k1, beta = kc/k1 [N/m]."""
+    _positive("k1", k1)
+    _nonnegative("eta", eta)
+    _nonnegative("beta", beta)
+    return {"k1": k1, "kp": k1 * (1.0 + eta), "kc": k1 * beta}
+
+
+def fa_from_alpha(alpha, k1, m_r, v_i):
+    """Non-contact force from the adhesivity alpha = sqrt(fa^2/(k1 m_r v_i^2)) (Eq. 27c) [N]."""
+    _nonnegative("alpha", alpha)
+    return alpha * math.sqrt(k1 * m_r) * v_i
+
+
+def contact_time(k, m_r):
+    """Half period pi sqrt(m_r/k) of a linear contact of stiffness k [s]."""
+    _positive("k", k)
+    _positive("m_r", m_r)
+    return math.pi * math.sqrt(m_r / k)
+
+
+def safe_time_step(kp, m_min, gamma=0.0, steps_per_contact=50):
+    """A stable, accurate time step: the stiffest contact (kp) resolved by steps_per_contact
+    steps for the smallest mass m_min, and short against the viscous time m_min/gamma [s]."""
+    _positive("steps_per_contact", steps_per_contact)
+    dt = contact_time(kp, m_min) / steps_per_contact
+    if gamma > 0:
+        dt = min(dt, 0.1 * m_min / gamma)
+    return dt

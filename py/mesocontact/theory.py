@@ -1,0 +1,199 @@
+"""Closed-form theory of the meso-particle contact model (Singh, Magnanimo & Luding).
+
+Equation numbers are those of the long paper ("A contact model for sticking of adhesive
+meso-particles"); see MODEL.md §6. Plain Python (math only): importable anywhere.
+
+Two layers:
+- dimensionless forms for fa = 0 (Eqs. 32-40, Appendix A, C, D) in terms of the plasticity
+  eta = (kp - k1)/k1, the adhesivity beta = kc/k1 and the scaled velocity chi = v_i/v_p;
+- the dimensional restitution of a pair with non-contact adhesion (Eqs. 16-25), in SI units.
+"""
+import math
+from dataclasses import dataclass
+
+ADHESION_MODES = ("none", "reversible", "jumpIn")
+K2_INTERPOLATIONS = ("linear", "sqrt")
+
+
+def _positive(name, value):
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
+
+
+def _nonnegative(name, value):
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number >= 0")
+
+
+# --- dimensionless groups ----------------------------------------------------------------
+
+def plasticity(k1, kp):
+    """eta = (kp - k1)/k1 (Eq. 27a)."""
+    return (kp - k1) / k1
+
+
+def adhesivity(k1, kc):
+    """beta = kc/k1 (Eq. 27b)."""
+    return kc / k1
+
+
+def k2_over_k1(chi, eta, interpolation="linear"):
+    """k2(deltaMax)/k1 at chi = deltaMax/deltaMax^p (Eq. 29; Eq. D.1 for 'sqrt'), capped at 1 + eta."""
+    x = min(chi, 1.0)
+    return 1.0 + eta * (math.sqrt(x) if interpolation == "sqrt" else x)
+
+
+# --- fa = 0: restitution, sticking window, sticking overlap -------------------------------
+
+def en_squared(chi, eta, beta, interpolation="linear"):
+    """Signed e_n^2 for fa = 0 (argument of the roots of Eqs. 32 and 33); negative means sticking."""
+    _nonnegative("chi", chi)
+    if chi <= 1.0:
+        r = k2_over_k1(chi, eta, interpolation)  # k2/k1
+        # E_f/E_i = k1/k2 - kc (k2 - k1)^2/(k1 k2 (k2 + kc))  (Eq. 21 with fa = 0)
+        return 1.0 / r - beta * (r - 1.0) ** 2 / (r * (r + beta))
+    return 1.0 - (1.0 - en_squared(1.0, eta, beta, interpolation)) / chi ** 2
+
+
+def restitution_fa0(chi, eta, beta, interpolation="linear"):
+    """e(chi) for fa = 0: Eq. 32 (chi <= 1) and Eq. 33 (chi > 1); 0 where the pair sticks."""
+    return math.sqrt(max(en_squared(chi, eta, beta, interpolation), 0.0))
+
+
+def low_velocity_restitution(chi, eta):
+    """Small-chi approximation e ~ 1 - eta chi/2 (Fig. 6)."""
+    return 1.0 - 0.5 * eta * chi
+
+
+def chi_c_b(eta, beta):
+    """Lower end of the sticking window, Eq. 34 (requires beta > 0)."""
+    _positive("eta", eta)
+    _positive("beta", beta)
+    return (1.0 + math.sqrt(1.0 + 4.0 * beta * (1.0 + beta))) / (2.0 * beta * eta)
+
+
+def chi_c_c(eta, beta):
+    """Upper end of the sticking window, Eq. 37."""
+    return math.sqrt(1.0 - 1.0 / (1.0 + eta) + beta * eta ** 2 / ((1.0 + eta) * (1.0 + beta + eta)))
+
+
+def beta_star(eta):
+    """Smallest adhesivity for which pairs can stick, Eq. 40b (eta > 1)."""
+    if not eta > 1:
+        raise ValueError(f"eta = {eta!r} is invalid: beta* exists only for eta > 1")
+    return 1.0 / (eta - 1.0)
+
+
+def sticking_overlap(chi, eta, beta, interpolation="linear"):
+    """delta_c/deltaMax^p of a sticking pair, Eqs. 36 and 38: (chi/sqrt(beta)) sqrt(-e_n^2).
+
+    The overlap where the kinetic energy vanishes on the -kc branch (the lower turning point of
+    the oscillation that follows). Raises ValueError where the pair does not stick.
+    """
+    _positive("beta", beta)
+    e2 = en_squared(chi, eta, beta, interpolation)
+    if e2 > 0:
+        raise ValueError(f"chi = {chi!r}: the pair rebounds (e = {math.sqrt(e2):.6g}), no sticking overlap")
+    return chi / math.sqrt(beta) * math.sqrt(-e2)
+
+
+def max_sticking_overlap(eta, beta):
+    """delta_c(chi = 1)/deltaMax^p, Eq. 39."""
+    return math.sqrt((beta * eta ** 2 - (1.0 + eta + beta)) / (beta * (1.0 + eta) * (1.0 + eta + beta)))
+
+
+def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
+    """Large-chi (chi <= 1, eta chi >> 1) asymptotes: (eta chi)^-1/2 (C.2), sqrt(1/(eta chi) - beta)
+    (C.3); for 'sqrt' interpolation sqrt(eta)^-1 chi^-1/4-type decay (D.2)."""
+    if interpolation == "sqrt":
+        return 1.0 / math.sqrt(eta * math.sqrt(chi))
+    return math.sqrt(max(1.0 / (eta * chi) - beta, 0.0))
+
+
+def widened_kp(k1, kp, phiF, phiF_new):
+    """Appendix A, Eq. A.3: limit stiffness kp' for a wider plastic range phiF' > phiF that keeps
+    the low-overlap behaviour."""
+    A = (kp - k1) ** 2 / kp
+    B = phiF_new / phiF
+    h = 0.5 * A * B
+    return k1 + h + math.sqrt(h * h + k1 * A * B)
+
+
+# --- dimensional: a pair with non-contact adhesion ----------------------------------------
+
+@dataclass(frozen=True)
+class PairOutcome:
+    """Result of the closed-form collision of a pair (SI units)."""
+    e: float            # restitution v_f,inf / v_i,inf (0 if the pair stays bound)
+    en: float           # contact part e_n = v_f/v_i (0 if it sticks in contact)
+    eps_in: float       # pull-in factor v_i/v_i,inf (Eq. 17b; 1 for jump-in)
+    eps_out: float      # pull-off factor v_f,inf/v_f (Eq. 18b; 0 if bound)
+    v_contact: float    # relative velocity at first touch v_i [m/s]
+    delta_max: float    # largest overlap, Eq. 20b [m]
+    v_p: float          # plastic-limit velocity, Eq. 19 [m/s]
+    E_f: float          # kinetic energy at the end of contact, Eqs. 21/23e [J] (<= 0: sticks)
+    regime: str         # 'sticking-contact', 'sticking-noncontact', 'rebound'
+    plastic_limit: bool  # the limit branch was reached (v_i >= v_p)
+
+
+def delta_max_p(k1, kp, phiF, a12):
+    """Limit overlap kp/(kp - k1) phiF a12, Eq. 10 [m] (inf when kp == k1)."""
+    return math.inf if kp == k1 else kp / (kp - k1) * phiF * a12
+
+
+def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
+    """v_p of Eq. 19: 1/2 m_r v_p^2 = 1/2 k1 dmp^2 - fa dmp [m/s]."""
+    dmp = delta_max_p(k1, kp, phiF, a12)
+    return math.sqrt(max(dmp * (k1 * dmp - 2.0 * fa), 0.0) / m_r)
+
+
+def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhesion="none",
+                   interpolation="linear"):
+    """Closed-form outcome of a head-on collision without viscosity (Eqs. 16-25, 17b, 18b).
+
+    v_inf: approach speed before any force acts [m/s]; stiffnesses in N/m, a12 [m], m_r [kg],
+    fa [N]. adhesion: 'none', 'reversible' (pull-in and pull-off along -kca delta - fa) or
+    'jumpIn' (no pull-in; -fa from first touch; pull-off tail after contact).
+    """
+    for name, v in (("v_inf", v_inf), ("k1", k1), ("phiF", phiF), ("a12", a12), ("m_r", m_r)):
+        _positive(name, v)
+    _nonnegative("kc", kc)
+    _nonnegative("fa", fa)
+    if not kp >= k1:
+        raise ValueError(f"kp = {kp!r} is invalid: must be >= k1")
+    if adhesion not in ADHESION_MODES:
+        raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
+    if interpolation not in K2_INTERPOLATIONS:
+        raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
+    if adhesion == "none":
+        fa = 0.0
+    if fa > 0 and not kca > 0:
+        raise ValueError(f"kca = {kca!r} is invalid: must be > 0 when fa > 0")
+    tail = fa * fa / kca if fa > 0 else 0.0  # 2 x energy of the non-contact tail, fa^2/kca [J]
+
+    v_i = math.sqrt(v_inf ** 2 + tail / m_r) if adhesion == "reversible" else v_inf  # Eq. 17
+    E_i = 0.5 * m_r * v_i ** 2
+    d_max = (fa + math.sqrt(fa * fa + k1 * m_r * v_i ** 2)) / k1  # Eq. 20b
+    dmp = delta_max_p(k1, kp, phiF, a12)
+    v_p = plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa)
+    limit = d_max >= dmp
+    if not limit:
+        k2 = k1 * k2_over_k1(d_max / dmp if math.isfinite(dmp) else 0.0, (kp - k1) / k1, interpolation)
+        E_f = (k1 / k2 - kc * (k2 - k1) ** 2 / (k1 * k2 * (k2 + kc))) * 0.5 * k1 * d_max ** 2 - fa * d_max  # Eq. 21
+    else:
+        E_diss = (1.0 - k1 / kp + kc * (kp - k1) ** 2 / (k1 * kp * (kp + kc))) * 0.5 * k1 * dmp ** 2  # Eq. 23e
+        E_f = E_i - E_diss
+    if E_f <= 0:
+        return PairOutcome(0.0, 0.0, v_i / v_inf, 0.0, v_i, d_max, v_p, E_f, "sticking-contact", limit)
+    v_f = math.sqrt(2.0 * E_f / m_r)
+    v_f_inf2 = v_f ** 2 - tail / m_r  # Eq. 18: the pull-off tail acts in both adhesive modes
+    if v_f_inf2 <= 0:
+        return PairOutcome(0.0, v_f / v_i, v_i / v_inf, 0.0, v_i, d_max, v_p, E_f, "sticking-noncontact", limit)
+    v_f_inf = math.sqrt(v_f_inf2)
+    return PairOutcome(v_f_inf / v_inf, v_f / v_i, v_i / v_inf, v_f_inf / v_f, v_i, d_max, v_p, E_f, "rebound", limit)
+
+
+def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
+    """Approach speed at contact v_i that reaches deltaMax = chi deltaMax^p (inverse of Eq. 20b) [m/s]."""
+    d = chi * delta_max_p(k1, kp, phiF, a12)
+    return math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)
