@@ -1,0 +1,131 @@
+"""The closed-form theory against the reference values of MODEL.md §6 and against an
+independent numerical integration of the force law written here from MODEL.md §3-4."""
+import math
+import unittest
+
+from mesocontact import params, theory
+
+
+def integrate_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhesion="none", steps=40000):
+    """Velocity-Verlet integration of the head-on collision (reference written independently of
+    the C++ core: the -kc reset is found by bisection). Returns e, or 0 if still bound."""
+    dmp = kp / (kp - k1) * phiF * a12
+    da = -fa / kca if fa > 0 else 0.0
+
+    def k2_of(dm):
+        return kp if dm >= dmp else k1 + (kp - k1) * dm / dmp
+
+    st = {"dm": 0.0, "touched": False}
+
+    def force(d):
+        f = 0.0
+        if d > 0:
+            if d > st["dm"]:
+                st["dm"] = d
+            k2 = k2_of(st["dm"])
+            d0 = phiF * a12 if st["dm"] >= dmp else (1 - k1 / k2) * st["dm"]
+            f = k2 * (d - d0)
+            if f < -kc * d:
+                lo, hi = d, st["dm"]  # (k2(x) - k1) x - (k2(x) + kc) d changes sign in [d, dm]
+                for _ in range(200):
+                    mid = 0.5 * (lo + hi)
+                    if (k2_of(mid) - k1) * mid - (k2_of(mid) + kc) * d > 0:
+                        hi = mid
+                    else:
+                        lo = mid
+                st["dm"] = 0.5 * (lo + hi)
+                f = -kc * d
+        else:
+            st["dm"] = 0.0
+        if adhesion != "none" and fa > 0:
+            if adhesion == "jumpIn" and not st["touched"]:
+                if d > 0:
+                    st["touched"] = True
+            if adhesion == "reversible" or st["touched"]:
+                f += -fa if d > 0 else (-kca * d - fa if d > da else 0.0)
+        return f
+
+    t_c = math.pi * math.sqrt(m_r / kp)
+    dt = t_c / 2000
+    d, v = da - 2 * v_inf * dt, v_inf  # v = d(delta)/dt
+    a = -force(d) / m_r
+    for _ in range(steps * 5):
+        v_half = v + 0.5 * dt * a
+        d += dt * v_half
+        a = -force(d) / m_r
+        v = v_half + 0.5 * dt * a
+        if d < da and v < 0:
+            return -v / v_inf
+    return 0.0
+
+
+class ReferenceValues(unittest.TestCase):
+    """MODEL.md §6, eta = 4, beta = 1."""
+
+    def test_sticking_window(self):
+        self.assertAlmostEqual(theory.chi_c_b(4, 1), 0.5, places=12)
+        self.assertAlmostEqual(theory.chi_c_c(4, 1), math.sqrt(4 / 3), places=12)
+        self.assertAlmostEqual(theory.beta_star(4), 1 / 3, places=12)
+        self.assertAlmostEqual(theory.max_sticking_overlap(4, 1), math.sqrt(1 / 3), places=12)
+
+    def test_quoted_restitution(self):
+        self.assertAlmostEqual(theory.restitution_fa0(0.34, 4, 1), 0.4364, delta=5e-5)
+        self.assertAlmostEqual(theory.restitution_fa0(1.37, 4, 1), 0.5382, delta=5e-5)
+
+    def test_window_edges_and_continuity(self):
+        self.assertAlmostEqual(theory.en_squared(theory.chi_c_b(4, 1), 4, 1), 0.0, places=12)
+        self.assertAlmostEqual(theory.en_squared(theory.chi_c_c(4, 1), 4, 1), 0.0, places=12)
+        for eta, beta in ((4, 1), (50, 0.1), (5, 0)):
+            lo = theory.en_squared(1 - 1e-9, eta, beta)
+            hi = theory.en_squared(1 + 1e-9, eta, beta)
+            self.assertAlmostEqual(lo, hi, places=7)
+        self.assertAlmostEqual(theory.sticking_overlap(1.0, 4, 1), theory.max_sticking_overlap(4, 1), places=12)
+        with self.assertRaises(ValueError):
+            theory.sticking_overlap(0.3, 4, 1)
+
+    def test_no_sticking_below_beta_star(self):
+        b = theory.beta_star(4)
+        self.assertGreater(theory.en_squared(1.0, 4, 0.9 * b), 0)
+        self.assertLess(theory.en_squared(1.0, 4, 1.1 * b), 0)
+
+    def test_asymptotes(self):
+        self.assertAlmostEqual(theory.restitution_fa0(1.0, 500, 0) * math.sqrt(500), 1.0, delta=2e-3)  # C.2
+        self.assertAlmostEqual(theory.low_velocity_restitution(1e-4, 4), theory.restitution_fa0(1e-4, 4, 1), delta=1e-7)
+
+    def test_widened_kp(self):
+        self.assertAlmostEqual(theory.widened_kp(100, 500, 0.1, 0.1), 500, places=9)  # B = 1 gives kp back
+        self.assertGreater(theory.widened_kp(100, 500, 0.05, 0.5), 500)
+
+
+class DimensionalForm(unittest.TestCase):
+    r = 1.1e-3
+    m_r = params.sphere_mass(1.1e-3, 2000) / 2
+
+    def test_matches_dimensionless_for_fa0(self):
+        for chi in (0.05, 0.34, 0.7, 1.0, 1.37, 3.0):
+            v = theory.impact_velocity_for_chi(chi, 100, 500, 0.1, self.r, self.m_r)
+            out = theory.pair_collision(v, 100, 500, 100, 0.1, self.r, self.m_r)
+            self.assertAlmostEqual(out.e, theory.restitution_fa0(chi, 4, 1), places=10)
+
+    def test_against_independent_integration(self):
+        fa_small = params.fa_from_alpha(0.042, 100, self.m_r, 0.01)
+        fa_large = params.fa_from_alpha(0.42, 100, self.m_r, 0.01)
+        cases = [(0.3, 0.0, "none"), (1.5, 0.0, "none"), (0.2, fa_small, "jumpIn"), (1.3, fa_large, "jumpIn"),
+                 (0.1, fa_large, "reversible"), (2.0, fa_small, "reversible")]
+        for zeta, fa, mode in cases:
+            v = zeta * theory.plastic_limit_velocity(100, 500, 0.1, self.r, self.m_r, fa)
+            closed = theory.pair_collision(v, 100, 500, 100, 0.1, self.r, self.m_r, fa=fa, kca=100, adhesion=mode)
+            numeric = integrate_collision(v, 100, 500, 100, 0.1, self.r, self.m_r, fa=fa, kca=100, adhesion=mode)
+            self.assertAlmostEqual(closed.e, numeric, delta=1e-3, msg=f"{zeta} {fa} {mode}")
+
+    def test_bad_input_names_parameter(self):
+        for kw, name in ((dict(kp=50), "kp"), (dict(adhesion="glue"), "adhesion"), (dict(v_inf=float("nan")), "v_inf"),
+                         (dict(fa=1e-3, kca=0, adhesion="reversible"), "kca")):
+            args = dict(v_inf=0.1, k1=100, kp=500, kc=100, phiF=0.1, a12=self.r, m_r=self.m_r)
+            args.update(kw)
+            with self.assertRaisesRegex(ValueError, "^" + name):
+                theory.pair_collision(**args)
+
+
+if __name__ == "__main__":
+    unittest.main()
