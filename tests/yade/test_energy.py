@@ -1,0 +1,52 @@
+# ctest (inside yade): with O.trackEnergy, kinetic + stored + dissipated energy stays constant
+# to 1e-4 of the initial kinetic energy at every step of a collision, with every mechanism
+# of the normal law on; and the hysteretic dissipation of a rebound equals the closed form
+# E_i (1 - e^2).
+import math
+import sys
+
+from yade import O
+from mesocontact import pair, params, theory
+
+failures = []
+r = 1.1e-3
+m_r = params.sphere_mass(r, 2000) / 2
+fa = params.fa_from_alpha(0.42, 100, m_r, 0.01)
+base = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)
+cases = [
+    ("fa=0, elastic-plastic rebound", dict(base), 0.34, None),
+    ("jumpIn + viscous, sticking", dict(base, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=5e-3), 1.0, None),
+    ("reversible + viscous, rebound", dict(base, fa=fa, kca=100.0, adhesion="reversible", gammaN=2e-3), 2.0, None),
+    ("sqrt, unequal radii, jumpIn", dict(base, fa=fa, kca=50.0, adhesion="jumpIn", k2Interpolation="sqrt"), 1.5, 2e-3),
+]
+for label, mat, zeta, r2 in cases:
+    mr = params.reduced_mass(params.sphere_mass(r, 2000), params.sphere_mass(r2 or r, 2000))
+    v = zeta * theory.plastic_limit_velocity(100, 500, 0.1, params.reduced_radius(r, r2 or r), mr, mat.get("fa", 0.0))
+    s = pair.build(r, v, mat, radius2=r2, track_energy=True)
+    O.step()
+    e0 = O.energy.total()
+    ek0 = 0.5 * s.m_r * v * v
+    worst = 0.0
+    n = int(12 * s.contact_time / O.dt)
+    for _ in range(n):
+        O.step()
+        worst = max(worst, abs(O.energy.total() - e0) / ek0)
+    parts = {k: O.energy[k] / ek0 for k in O.energy.keys()}
+    ok = worst <= 1e-4 and abs(e0 - ek0) / ek0 < 1e-6
+    line = f"{label:32s} max |E_total - E_0|/E_kin,0 = {worst:.2e}; final shares: " + \
+        ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0)
+    if label.startswith("fa=0"):  # rebound: all the lost kinetic energy went into the hysteresis
+        e_th = theory.pair_collision(v, 100, 500, 100, 0.1, s.a12, s.m_r).e
+        plastic_err = abs(parts["mesoPlastic"] - (1 - e_th ** 2)) / (1 - e_th ** 2)
+        ok = ok and plastic_err <= 1e-3
+        line += f"; plastic vs E_i(1-e^2): rel. error {plastic_err:.1e}"
+    if "viscous" in label and not parts.get("mesoViscous", 0) > 0:
+        ok = False
+        line += "; no viscous dissipation booked"
+    print(("ok   " if ok else "FAIL ") + line, flush=True)
+    if not ok:
+        failures.append(label)
+if failures:
+    print(f"{len(failures)} FAILED")
+    sys.exit(1)
+print("all passed")

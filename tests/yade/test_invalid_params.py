@@ -1,0 +1,72 @@
+# ctest (inside yade): invalid parameters raise a Python ValueError naming the parameter, in
+# the constructor and on assignment; a rejected assignment leaves the material as it was, so
+# a simulation with it gives finite forces.
+import math
+import sys
+
+from yade import *
+from mesocontact import pair
+
+nan = float("nan")
+cases = [
+    (dict(k1=100, kp=50), "kp"),
+    (dict(k1=-1), "k1"),
+    (dict(kc=-5), "kc"),
+    (dict(phiF=0), "phiF"),
+    (dict(phiF=1.01), "phiF"),
+    (dict(fa=1e-3, kca=0, adhesion="reversible"), "kca"),
+    (dict(fa=1e-3, kca=-2, adhesion="jumpIn"), "kca"),
+    (dict(fa=1e-3, kca=10), "adhesion"),
+    (dict(adhesion="jump-in"), "adhesion"),
+    (dict(k2Interpolation="cubic"), "k2Interpolation"),
+    (dict(k1=nan), "k1"),
+    (dict(kp=nan), "kp"),
+    (dict(gammaN=nan), "gammaN"),
+    (dict(fa=nan, adhesion="reversible", kca=1), "fa"),
+    (dict(gammaN=-1e-3), "gammaN"),
+]
+failures = []
+for kw, name in cases:
+    try:
+        MesoMat(**kw)
+        failures.append(f"constructor {kw}: no exception")
+    except ValueError as e:
+        if not str(e).startswith(name):
+            failures.append(f"constructor {kw}: message does not name {name}: {e}")
+    if len(kw) > 1:
+        continue  # combined cases are checked by the constructor, which applies all keywords first
+    m = MesoMat(k1=100, kp=500, kc=100)
+    before = {a: getattr(m, a) for a in ("k1", "kp", "kc", "phiF", "fa", "kca", "gammaN", "adhesion", "k2Interpolation")}
+    try:
+        setattr(m, name, kw[name])
+        failures.append(f"assignment {kw}: no exception")
+    except ValueError as e:
+        if not str(e).startswith(name):
+            failures.append(f"assignment {kw}: message does not name {name}: {e}")
+    after = {a: getattr(m, a) for a in before}
+    if after != before:
+        failures.append(f"assignment {kw}: the material changed: {after}")
+
+# Order of keywords does not matter in the constructor.
+MesoMat(kp=5000, k1=1000)
+MesoMat(adhesion="reversible", fa=1e-3, kca=10)
+
+# A material whose bad assignment was rejected still simulates with finite forces.
+m = MesoMat(k1=100, kp=500, kc=100, density=2000)
+try:
+    m.kp = nan
+except ValueError:
+    pass
+s = pair.build(1e-3, 0.05, m)
+finite = True
+for _ in range(2000):
+    O.step()
+    for i in O.interactions:
+        finite = finite and all(math.isfinite(x) for x in i.phys.normalForce)
+if not finite:
+    failures.append("non-finite force after a rejected assignment")
+for f in failures:
+    print("FAIL", f)
+if failures:
+    sys.exit(1)
+print(f"all passed ({len(cases)} invalid cases, constructor and assignment)")

@@ -1,0 +1,70 @@
+# ctest (inside yade): O.save / O.load in the middle of a collision continues identically
+# (the contact history, the jump-in flag and the energy bookkeeping survive), in YADE's
+# binary and XML formats, at three moments: loading, on the -kc branch after a history
+# reset, and in the pull-off tail after contact.
+import os
+import sys
+import tempfile
+
+from yade import O
+from mesocontact import pair, params, theory
+
+r = 1.1e-3
+m_r = params.sphere_mass(r, 2000) / 2
+fa = params.fa_from_alpha(0.42, 100, m_r, 0.01)
+mat = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=1e-4)
+v = 1.5 * theory.plastic_limit_velocity(100, 500, 0.1, r, m_r, fa)
+failures = []
+
+
+def snapshot():
+    i = O.interactions[0, 1] if O.interactions.has(0, 1) else None
+    hist = (i.phys.deltaMax, i.phys.k2, i.phys.delta0, i.phys.touched) if (i and i.isReal) else None
+    return ([(tuple(b.state.pos), tuple(b.state.vel)) for b in O.bodies], hist, O.energy.total())
+
+
+def phase(moment):
+    i = O.interactions[0, 1] if O.interactions.has(0, 1) else None
+    if i is None or not i.isReal:
+        return None
+    d, p = i.geom.penetrationDepth, i.phys
+    if moment == "loading":
+        return d > 0 and p.deltaMax == d
+    if moment == "kc-branch":  # on -kc: the force equals -kc delta (to rounding) while unloading
+        return d > 0 and abs(p.hystereticForce + p.kc * d) < 1e-9 * p.kc * d and p.deltaMax < 0.9 * p.deltaMaxP
+    return d < 0 and p.touched  # pull-off tail
+
+
+tmp = tempfile.mkdtemp()
+for moment in ("loading", "kc-branch", "tail"):
+    for ext in (".yade.gz", ".xml"):
+        s = pair.build(r, v, mat, track_energy=True)
+        steps = 0
+        while not phase(moment):
+            O.step()
+            steps += 1
+            if steps > 200000:
+                break
+        if steps > 200000:
+            failures.append(f"{moment}: phase never reached")
+            continue
+        path = os.path.join(tmp, "mid" + ext)
+        hist_before = snapshot()[1]
+        O.save(path)
+        for _ in range(3000):
+            O.step()
+        direct = snapshot()
+        O.load(path)
+        loaded_hist = snapshot()[1]
+        for _ in range(3000):
+            O.step()
+        resumed = snapshot()
+        ok = direct == resumed and loaded_hist == hist_before
+        print(("ok   " if ok else "FAIL ") + f"{moment:10s} {ext:9s} saved at step {steps}, history {hist_before}; "
+              f"identical after 3000 more steps: {direct == resumed}", flush=True)
+        if not ok:
+            failures.append(f"{moment} {ext}")
+if failures:
+    print(f"{len(failures)} FAILED: {failures}")
+    sys.exit(1)
+print("all passed")
