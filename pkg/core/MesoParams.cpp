@@ -66,6 +66,18 @@ void validate(const MaterialParams& m)
 	if (m.fa > 0 && m.adhesion == Adhesion::None)
 		throw std::invalid_argument("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0");
 	if (!(m.gammaN >= 0)) reject("gammaN", m.gammaN, "the viscous damping must be >= 0");
+	const struct {
+		const char* name;
+		double      value;
+	} nonNegative[] = { { "muS", m.muS }, { "kt", m.kt }, { "gammaT", m.gammaT }, { "kr", m.kr },
+		            { "gammaR", m.gammaR },                  { "muR", m.muR }, { "ko", m.ko },         { "gammaO", m.gammaO },
+		            { "muO", m.muO } };
+	for (const auto& q : nonNegative) {
+		finite(q.name, q.value);
+		if (!(q.value >= 0)) reject(q.name, q.value, "must be >= 0");
+	}
+	finite("phiD", m.phiD);
+	if (!(m.phiD > 0 && m.phiD <= 1)) reject("phiD", m.phiD, "the dynamic/static friction ratio must lie in (0, 1]");
 }
 
 double harmonicMean(double x, double y) { return (x == 0 || y == 0) ? 0.0 : 2 * x * y / (x + y); }
@@ -100,6 +112,18 @@ PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a1
 	        ? K2Interpolation::Sqrt
 	        : K2Interpolation::Linear;
 	if (p.adhesion == Adhesion::None) p.fa = 0;
+	const double phiD = std::min(m1.phiD, m2.phiD);
+	auto element = [phiD](double k1_, double k2_, double g1, double g2, double mu1, double mu2) {
+		ElementParams e;
+		e.k     = harmonicMean(k1_, k2_);
+		e.gamma = harmonicMean(g1, g2);
+		e.muS   = std::min(mu1, mu2);
+		e.muD   = phiD * e.muS;
+		return e;
+	};
+	p.sliding  = element(m1.kt, m2.kt, m1.gammaT, m2.gammaT, m1.muS, m2.muS);
+	p.rolling  = element(m1.kr, m2.kr, m1.gammaR, m2.gammaR, m1.muR, m2.muR);
+	p.twisting = element(m1.ko, m2.ko, m1.gammaO, m2.gammaO, m1.muO, m2.muO);
 	deriveGeometry(p, a12);
 	return p;
 }

@@ -13,6 +13,13 @@ K2Interpolation parseK2Interpolation(const std::string& name); // throws naming 
 const char*     adhesionName(Adhesion a);
 const char*     k2InterpolationName(K2Interpolation k);
 
+// One spring-dashpot-Coulomb element (sliding, rolling or torsion): spring k [N/m], dashpot
+// gamma [kg/s], static and dynamic coefficients of the Coulomb limit [-].
+struct ElementParams {
+	double k = 0, gamma = 0, muS = 0, muD = 0;
+	bool   active() const { return k > 0 || gamma > 0; }
+};
+
 // What a material declares (MODEL.md §2); SI units.
 struct MaterialParams {
 	double          k1     = 1e2;  // plastic loading stiffness [N/m]
@@ -24,6 +31,17 @@ struct MaterialParams {
 	double          gammaN = 0;    // normal viscous damping [kg/s]
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
+	// Luding 2008 tangential mechanisms; all off by default.
+	double muS    = 0; // static sliding friction coefficient (YADE: tan(frictionAngle)) [-]
+	double phiD   = 1; // dynamic/static ratio of all three Coulomb limits, (0, 1] [-]
+	double kt     = 0; // sliding spring [N/m]
+	double gammaT = 0; // sliding dashpot [kg/s]
+	double kr     = 0; // rolling spring [N/m]
+	double gammaR = 0; // rolling dashpot [kg/s]
+	double muR    = 0; // rolling coefficient [-]
+	double ko     = 0; // torsion spring [N/m]
+	double gammaO = 0; // torsion dashpot [kg/s]
+	double muO    = 0; // torsion coefficient [-]
 };
 
 // Throws std::invalid_argument whose message starts with the offending parameter's name.
@@ -42,9 +60,11 @@ struct PairParams {
 	double          invDeltaMaxP = 0; // 1/deltaMaxP (0 if kp == k1) [1/m]
 	double          delta0P      = 0; // plastic overlap on the limit branch phiF a12 (Eq. 11) [m]
 	double          deltaA       = 0; // range of the non-contact force -fa/kca (<= 0) [m]
+	ElementParams   sliding, rolling, twisting; // Luding 2008 tangential elements
 };
 
-// Mixes two materials: stiffnesses, fa and gammaN by harmonic mean; phiF by arithmetic mean;
+// Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;
+// friction coefficients by the smaller one (as YADE's Ip2_FrictMat_FrictMat_FrictPhys); phiD by the smaller;
 // adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation
 // only when both ask for it. Equal materials give their own values.
 PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12);

@@ -1,0 +1,153 @@
+// Sliding, rolling and torsion resistance of Luding 2008 (LUDING2008.md): one spring-dashpot-
+// Coulomb element used three times, plus the contact kinematics. Header-only; Eigen, no YADE.
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include "MesoParams.hpp"
+#include <cmath>
+
+namespace meso {
+
+using Vec3 = Eigen::Vector3d;
+
+// Outcome of one step of an element: the (quasi-)force and whether it slipped.
+template <class V> struct ElementStep {
+	V    force;
+	bool slipped = false;
+};
+
+inline double magnitude(const Vec3& v) { return v.norm(); }
+inline double magnitude(double v) { return std::abs(v); }
+
+// One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
+// The spring is advanced by v dt first (so the force belongs to this step's configuration, as
+// the normal law does), then the trial force -k xi - gamma v is limited by the static limit
+// muS * level; beyond it the force is the dynamic limit muD * level along the trial direction
+// and the spring is reset to -(f + gamma v)/k so that sticking resumes without a jump.
+// level = f_n + kc delta >= 0: the normal contact force measured from the adhesive branch.
+template <class V> inline ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level)
+{
+	ElementStep<V> out;
+	xi += v * dt;
+	const V      trial = -p.k * xi - p.gamma * v;
+	const double t     = magnitude(trial);
+	const double fs    = p.muS * level;
+	if (t <= fs) {
+		out.force = trial;
+		return out;
+	}
+	out.slipped = true;
+	out.force   = trial * (p.muD * level / t);
+	if (p.k > 0) xi = -(out.force + p.gamma * v) / p.k;
+	else xi = xi * 0.0;
+	return out;
+}
+
+// Rotates a tangential spring with the contact: from the previous normal to the current one
+// (Rodrigues, exact) and about the normal by the mean spin of the pair; then removes any normal
+// component left by rounding. A rigid rotation of the pair thus leaves the spring unchanged in
+// the pair's frame.
+inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle)
+{
+	const Vec3   axis = nPrev.cross(n); // |axis| = sin(theta)
+	const double c    = nPrev.dot(n);
+	if (c > -0.5) xi = xi * c + axis.cross(xi) + axis * (axis.dot(xi) / (1 + c));
+	if (spinAngle != 0) xi = xi * std::cos(spinAngle) + n.cross(xi) * std::sin(spinAngle);
+	xi -= n * n.dot(xi);
+}
+
+// Relative velocities at a contact of body 1 with body 2; n points from 1 to 2 (YADE's normal).
+// arm1, arm2: centre-to-contact-point distances (a - delta/2 for spheres); leverArm: a'_ij.
+struct ContactVelocities {
+	Vec3   sliding; // v_t: tangential velocity of 1 relative to 2 at the contact point [m/s]
+	Vec3   rolling; // v_r = a'_ij n x (w1 - w2) [m/s]
+	double twist;   // v_o = a'_ij n.(w1 - w2) [m/s], along n
+};
+
+inline ContactVelocities contactVelocities(const Vec3& n, const Vec3& relVel, const Vec3& w1, const Vec3& w2, double arm1, double arm2,
+                                           double leverArm)
+{
+	ContactVelocities c;
+	const Vec3 vc = relVel + arm1 * w1.cross(n) + arm2 * w2.cross(n);
+	c.sliding     = vc - n * n.dot(vc);
+	const Vec3 dw = w1 - w2;
+	c.rolling     = leverArm * n.cross(dw);
+	c.twist       = leverArm * n.dot(dw);
+	return c;
+}
+
+// Energy absorbed by an element over one step (trapezoid of the force over the relative
+// displacement v dt, with the previous step's force), and its stored spring energy [J].
+inline double dotOf(const Vec3& a, const Vec3& b) { return a.dot(b); }
+inline double dotOf(double a, double b) { return a * b; }
+template <class V> inline double absorbedWork(const V& prevForce, const V& force, const V& v, double dt)
+{
+	return -0.5 * dt * (dotOf(prevForce, v) + dotOf(force, v));
+}
+inline double springEnergy(const ElementParams& p, const Vec3& xi) { return 0.5 * p.k * xi.squaredNorm(); }
+inline double springEnergy(const ElementParams& p, double xi) { return 0.5 * p.k * xi * xi; }
+
+// What a contact remembers of its tangential mechanisms; forces are those of the last step,
+// acting on body 1 (body 2 gets the opposite).
+struct TangentialState {
+	Vec3   xiT   = Vec3::Zero(); // sliding spring [m]
+	Vec3   xiR   = Vec3::Zero(); // rolling spring [m]
+	double xiO   = 0;            // torsion spring, along n [m]
+	Vec3   fT    = Vec3::Zero(); // sliding force on body 1 [N]
+	Vec3   fR    = Vec3::Zero(); // rolling quasi-force [N]
+	double fO    = 0;            // torsion quasi-force, along n [N]
+	Vec3   nPrev = Vec3::Zero(); // normal of the previous step (zero: none yet)
+	void   reset() { *this = TangentialState(); }
+};
+
+// Energy of one step: stored spring energy (half-step consistent with YADE's leapfrog kinetic
+// energy, reset every step) and the increments of dissipation of each mechanism [J].
+struct TangentialEnergy {
+	double stored = 0, sliding = 0, rolling = 0, twisting = 0;
+};
+
+// One step of all tangential mechanisms of a contact in mechanical contact. rollTwist: rolling
+// and torsion act (ScGeom6D). level: f_n + kc delta (clamped at 0 here). energy may be null.
+inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState& s, const ContactVelocities& v, const Vec3& n, double spinAngle,
+                           double dt, double level, TangentialEnergy* energy)
+{
+	if (level < 0) level = 0;
+	if (s.nPrev.squaredNorm() > 0) {
+		rotateWithContact(s.xiT, s.nPrev, n, spinAngle);
+		rotateWithContact(s.xiR, s.nPrev, n, spinAngle);
+		rotateWithContact(s.fT, s.nPrev, n, spinAngle);
+		rotateWithContact(s.fR, s.nPrev, n, spinAngle);
+	}
+	s.nPrev = n;
+	const Vec3   prevT = s.fT, prevR = s.fR;
+	const double prevO = s.fO;
+	double       uT0 = 0, uR0 = 0, uO0 = 0;
+	if (energy) {
+		uT0 = springEnergy(p.sliding, s.xiT);
+		uR0 = springEnergy(p.rolling, s.xiR);
+		uO0 = springEnergy(p.twisting, s.xiO);
+	}
+	if (p.sliding.active()) s.fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level).force;
+	if (rollTwist && p.rolling.active()) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level).force;
+	if (rollTwist && p.twisting.active()) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level).force;
+	if (!energy) return;
+	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.twisting, s.xiO);
+	energy->sliding  = absorbedWork(prevT, s.fT, v.sliding, dt) - (uT - uT0);
+	energy->rolling  = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
+	energy->twisting = absorbedWork(prevO, s.fO, v.twist, dt) - (uO - uO0);
+	energy->stored   = uT + uR + uO + 0.5 * dt * (s.fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.twist);
+}
+
+// The step at which the contact ends (delta <= 0): forces vanish; what the springs held is lost.
+inline void tangentialRelease(const PairParams& p, TangentialState& s, const ContactVelocities& v, double dt, TangentialEnergy* energy)
+{
+	if (energy) {
+		energy->sliding  = absorbedWork(s.fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
+		energy->rolling  = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
+		energy->twisting = absorbedWork(s.fO, 0.0, v.twist, dt) + springEnergy(p.twisting, s.xiO);
+		energy->stored   = 0;
+	}
+	s.reset();
+}
+
+} // namespace meso

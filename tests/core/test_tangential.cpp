@@ -1,0 +1,120 @@
+// The spring-dashpot-Coulomb element, the rotation of springs with the contact and the contact
+// kinematics, against hand-derived values (LUDING2008.md).
+#include "Tangential.hpp"
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace meso;
+
+namespace {
+ElementParams element(double k, double gamma, double muS, double muD)
+{
+	ElementParams e;
+	e.k = k; e.gamma = gamma; e.muS = muS; e.muD = muD;
+	return e;
+}
+}
+
+TEST(Element, SticksBelowTheStaticLimit)
+{
+	const ElementParams p = element(100, 0.5, 1.0, 0.8);
+	Vec3 xi = Vec3::Zero();
+	const Vec3 v(1e-3, 0, 0);
+	for (int i = 1; i <= 10; ++i) {
+		const auto s = elementStep(p, xi, v, 1e-3, 1.0);
+		EXPECT_FALSE(s.slipped);
+		EXPECT_NEAR(s.force.x(), -100 * 1e-6 * i - 0.5e-3, 1e-15); // -k (i v dt) - gamma v
+	}
+}
+
+TEST(Element, SlipsAtTheDynamicLimitAndResumesWithoutJump)
+{
+	const ElementParams p = element(100, 0.0, 1.0, 0.8);
+	Vec3 xi(0.0, -0.02, 0); // trial |f| = 2 > muS level = 1
+	const auto s = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0);
+	EXPECT_TRUE(s.slipped);
+	EXPECT_NEAR(s.force.norm(), 0.8, 1e-15);       // muD level
+	EXPECT_NEAR(s.force.y(), 0.8, 1e-15);          // along the trial direction
+	EXPECT_NEAR((-p.k * xi - s.force).norm(), 0, 1e-15); // spring reset: next trial equals f
+	const auto again = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0);
+	EXPECT_FALSE(again.slipped);
+	EXPECT_NEAR(again.force.y(), 0.8, 1e-15);
+}
+
+TEST(Element, ScalarTorsion)
+{
+	const ElementParams p = element(10, 0, 0.5, 0.5);
+	double xi = 0;
+	for (int i = 0; i < 1000; ++i) elementStep(p, xi, 1.0, 1e-3, 2.0);
+	EXPECT_NEAR(-p.k * xi, -1.0, 1e-12); // capped at mu level = 1
+}
+
+TEST(Element, NoSpringNoDivision)
+{
+	const ElementParams p = element(0, 1.0, 0.1, 0.1);
+	Vec3 xi = Vec3::Zero();
+	const auto s = elementStep(p, xi, Vec3(1, 0, 0), 1e-3, 1.0);
+	EXPECT_NEAR(s.force.x(), -0.1, 1e-15);
+	EXPECT_TRUE(xi.allFinite());
+}
+
+TEST(Rotation, SpringFollowsTheNormal)
+{
+	const Vec3 n0(1, 0, 0);
+	const double th = 0.3;
+	const Vec3 n1(std::cos(th), std::sin(th), 0);
+	Vec3 xi(0, 2e-3, 5e-4);
+	rotateWithContact(xi, n0, n1, 0);
+	EXPECT_NEAR(xi.dot(n1), 0, 1e-18);
+	EXPECT_NEAR(xi.x(), -2e-3 * std::sin(th), 1e-15); // rotated about z by th
+	EXPECT_NEAR(xi.y(), 2e-3 * std::cos(th), 1e-15);
+	EXPECT_NEAR(xi.z(), 5e-4, 1e-15);
+	Vec3 xi2(0, 0, 1); // perpendicular to n1
+	rotateWithContact(xi2, n1, n1, 0.5 * M_PI); // spin about n by 90 degrees
+	EXPECT_NEAR(xi2.norm(), 1, 1e-15);
+	EXPECT_NEAR(xi2.dot(n1.cross(Vec3(0, 0, 1))), 1, 1e-12);
+}
+
+TEST(Kinematics, RigidRotationHasNoRelativeMotion)
+{
+	// Two spheres (radii 1 and 2, overlap 0.1) rotating rigidly with w about an arbitrary axis.
+	const Vec3 w(0.3, -0.7, 0.2), x1(0, 0, 0);
+	const double a1 = 1, a2 = 2, delta = 0.1, d = a1 + a2 - delta;
+	const Vec3 n = Vec3(1, 2, 2).normalized(), x2 = x1 + d * n;
+	const Vec3 v1 = w.cross(x1), v2 = w.cross(x2);
+	const ContactVelocities c = contactVelocities(n, v1 - v2, w, w, a1 - delta / 2, a2 - delta / 2, 0.6);
+	EXPECT_NEAR(c.sliding.norm(), 0, 1e-15);
+	EXPECT_NEAR(c.rolling.norm(), 0, 1e-15);
+	EXPECT_NEAR(c.twist, 0, 1e-15);
+}
+
+TEST(Kinematics, RollingAndTwistOpposeRelativeRotation)
+{
+	const Vec3 n(0, 0, 1);
+	const ContactVelocities c = contactVelocities(n, Vec3(Vec3::Zero()), Vec3(0, 2, 3), Vec3(Vec3::Zero()), 1, 1, 0.5);
+	EXPECT_NEAR(c.rolling.x(), -1.0, 1e-15); // 0.5 n x (0, 2, 3) = (-1, 0, 0)
+	EXPECT_NEAR(c.twist, 1.5, 1e-15);
+}
+
+TEST(Energy, ElasticCycleDissipatesNothingSlipDissipatesFriction)
+{
+	PairParams p;
+	p.sliding = element(100, 0, 1.0, 1.0);
+	TangentialState s;
+	const Vec3 n(0, 0, 1);
+	ContactVelocities v{Vec3(1e-3, 0, 0), Vec3::Zero(), 0.0};
+	double diss = 0;
+	TangentialEnergy e;
+	const double dt = 1e-3;
+	for (int i = 0; i < 100; ++i) { tangentialStep(p, false, s, v, n, 0, dt, 10.0, &e); diss += e.sliding; }
+	v.sliding = -v.sliding;
+	for (int i = 0; i < 100; ++i) { tangentialStep(p, false, s, v, n, 0, dt, 10.0, &e); diss += e.sliding; }
+	EXPECT_NEAR(diss, 0, 1e-15);
+	EXPECT_NEAR(s.xiT.norm(), 0, 1e-15);
+	// Now slip: level 0.001 -> limit 1e-3 N; pushing 0.1 m further at the limit dissipates ~1e-4 J.
+	v.sliding = Vec3(1e-3, 0, 0);
+	diss = 0;
+	for (int i = 0; i < 100000; ++i) { tangentialStep(p, false, s, v, n, 0, dt, 1e-3, &e); diss += e.sliding; }
+	const double slip = 0.1 - 1e-3 / 100; // total displacement minus the elastic part
+	EXPECT_NEAR(diss, 1e-3 * slip, 1e-12);
+}
