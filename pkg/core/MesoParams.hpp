@@ -61,6 +61,11 @@ struct PairParams {
 	double          delta0P      = 0; // plastic overlap on the limit branch phiF a12 (Eq. 11) [m]
 	double          deltaA       = 0; // range of the non-contact force -fa/kca (<= 0) [m]
 	ElementParams   sliding, rolling, twisting; // Luding 2008 tangential elements
+	// Geometry of the pair, fixed when the contact is created.
+	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
+	double leverFactor = 1;          // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
+	bool   rollTwist   = false;      // rolling and torsion act (ScGeom6D and a spring or dashpot set)
+	bool   tangential  = false;      // any tangential mechanism acts
 };
 
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;

@@ -2,6 +2,7 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <core/State.hpp>
+#include <pkg/common/Sphere.hpp>
 #include <stdexcept>
 
 namespace yade {
@@ -22,6 +23,18 @@ meso::MaterialParams MesoMat::params() const
 	m.gammaN          = gammaN;
 	m.adhesion        = meso::parseAdhesion(adhesion);
 	m.k2Interpolation = meso::parseK2Interpolation(k2Interpolation);
+	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
+		throw std::invalid_argument("frictionAngle = " + std::to_string(frictionAngle) + " is invalid: must lie in [0, pi/2)");
+	m.muS    = math::tan(frictionAngle);
+	m.phiD   = phiD;
+	m.kt     = kt;
+	m.gammaT = gammaT;
+	m.kr     = kr;
+	m.gammaR = gammaR;
+	m.muR    = muR;
+	m.ko     = ko;
+	m.gammaO = gammaO;
+	m.muO    = muO;
 	return m;
 }
 
@@ -42,6 +55,16 @@ void MesoMat::postLoad(MesoMat&)
 		fa              = lastValid.fa;
 		kca             = lastValid.kca;
 		gammaN          = lastValid.gammaN;
+		frictionAngle   = math::atan(lastValid.muS);
+		phiD            = lastValid.phiD;
+		kt              = lastValid.kt;
+		gammaT          = lastValid.gammaT;
+		kr              = lastValid.kr;
+		gammaR          = lastValid.gammaR;
+		muR             = lastValid.muR;
+		ko              = lastValid.ko;
+		gammaO          = lastValid.gammaO;
+		muO             = lastValid.muO;
 		adhesion        = lastAdhesion;
 		k2Interpolation = lastK2Interpolation;
 		throw;
@@ -65,22 +88,48 @@ void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict&
 
 /* Ip2 */
 
+void Ip2_MesoMat_MesoMat_MesoPhys::postLoad(Ip2_MesoMat_MesoMat_MesoPhys&)
+{
+	if (leverArm == "reduced") leverFactor = 1;
+	else if (leverArm == "a12") leverFactor = 2;
+	else {
+		const std::string bad = leverArm;
+		leverArm              = leverFactor == 2 ? "a12" : "reduced";
+		throw std::invalid_argument("leverArm = '" + bad + "' is invalid: must be 'reduced' or 'a12'");
+	}
+}
+
+namespace {
+	Real sphereRadius(const Body::id_t id, Scene* scene) // 0 for walls, boxes, facets
+	{
+		const auto* sphere = dynamic_cast<const Sphere*>(Body::byId(id, scene)->shape.get());
+		return sphere ? sphere->radius : 0;
+	}
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return;
 	const auto* mat1 = static_cast<const MesoMat*>(m1.get());
 	const auto* mat2 = static_cast<const MesoMat*>(m2.get());
-	const auto* geom = YADE_CAST<GenericSpheresContact*>(I->geom.get());
-	const Real  r1   = geom->refR1 > 0 ? geom->refR1 : geom->refR2;
-	const Real  r2   = geom->refR2 > 0 ? geom->refR2 : geom->refR1;
-	const Real  a12  = 2 * r1 * r2 / (r1 + r2);
+	const Real  r1   = sphereRadius(I->getId1(), scene);
+	const Real  r2   = sphereRadius(I->getId2(), scene);
+	// Against a wall, box or facet a12 is the limit 2 a of the formula (MODEL.md §1); the radii
+	// those geometries report are not used, they differ between YADE's Ig2 functors.
+	const Real a12 = (r1 > 0 && r2 > 0) ? 2 * r1 * r2 / (r1 + r2) : 2 * (r1 > 0 ? r1 : r2);
 
 	auto phys                    = shared_ptr<MesoPhys>(new MesoPhys());
-	phys->pair                   = meso::mixPair(mat1->params(), mat2->params(), a12);
-	phys->history.k2             = phys->pair.k1;
-	phys->kn                     = phys->pair.kp;
-	phys->ks                     = 0;
-	phys->tangensOfFrictionAngle = math::tan(math::min(mat1->frictionAngle, mat2->frictionAngle));
+	meso::PairParams& p          = phys->pair;
+	p                            = meso::mixPair(mat1->params(), mat2->params(), a12);
+	p.radius1                    = r1;
+	p.radius2                    = r2;
+	p.leverFactor                = leverFactor;
+	p.tangential                 = p.sliding.active() || p.rolling.active() || p.twisting.active();
+	p.rollTwist                  = (p.rolling.active() || p.twisting.active()) && dynamic_cast<const ScGeom6D*>(I->geom.get());
+	phys->history.k2             = p.k1;
+	phys->kn                     = p.kp;
+	phys->ks                     = p.sliding.k;
+	phys->tangensOfFrictionAngle = p.sliding.muS;
 	I->phys                      = phys;
 }
 
@@ -90,15 +139,17 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 {
 	const auto*  geom  = static_cast<const ScGeom*>(ig.get());
 	auto*        phys  = static_cast<MesoPhys*>(ip.get());
+	const auto&  p     = phys->pair;
 	const Real   delta = geom->penetrationDepth;
 	const int    id1 = I->getId1(), id2 = I->getId2();
 	const State* s1 = Body::byId(id1, scene)->state.get();
 	const State* s2 = Body::byId(id2, scene)->state.get();
-	Vector3r     relVel = s1->vel - s2->vel;
+	const Vector3r& n      = geom->normal; // from 1 to 2
+	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
-	const Real vn = relVel.dot(geom->normal); // d(delta)/dt: the normal points from 1 to 2
+	const Real vn = relVel.dot(n); // d(delta)/dt
 
-	const meso::NormalForce f = meso::normalForce(phys->pair, phys->history, delta, vn);
+	const meso::NormalForce f = meso::normalForce(p, phys->history, delta, vn);
 	if (scene->trackEnergy) {
 		if (std::isnan(phys->energy.prevDelta)) phys->energy.prevDelta = delta - vn * scene->dt; // no force before
 		const meso::NormalEnergyStep e = meso::energyStep(phys->energy, phys->history, phys->force, f, delta);
@@ -107,14 +158,59 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
 		scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
 	}
-	phys->force             = f;
-	const Real ft           = f.total();
-	phys->normalForce       = ft * geom->normal;
-	if (ft != 0) {
-		scene->forces.addForce(id1, -phys->normalForce);
-		scene->forces.addForce(id2, phys->normalForce);
+	phys->force       = f;
+	phys->normalForce = f.total() * n;
+	Vector3r force1   = -phys->normalForce; // on body 1
+
+	if (p.tangential) {
+		// Arms from the centres to the contact point: a - delta/2 for spheres; for a wall, box or
+		// facet the branch to YADE's contact point (its torque then follows from the force).
+		const Vector3r b1   = p.radius1 > 0 ? Vector3r((p.radius1 - 0.5 * delta) * n) : Vector3r(geom->contactPoint - s1->pos);
+		const Vector3r b2   = p.radius2 > 0 ? Vector3r(-(p.radius2 - 0.5 * delta) * n)
+		                                    : Vector3r(geom->contactPoint - s2->pos
+		                                               - (scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero()));
+		const Real     arm1 = p.radius1 > 0 ? p.radius1 - 0.5 * delta : 0;
+		const Real     arm2 = p.radius2 > 0 ? p.radius2 - 0.5 * delta : 0;
+		const Real     reduced = (arm1 > 0 && arm2 > 0) ? arm1 * arm2 / (arm1 + arm2) : math::max(arm1, arm2);
+		const Real     lever   = p.leverFactor * reduced;
+		phys->lastLever        = lever;
+		meso::ContactVelocities v;
+		const Vector3r vc = relVel + s1->angVel.cross(b1) - s2->angVel.cross(b2);
+		v.sliding         = vc - n * n.dot(vc);
+		const Vector3r dw = s1->angVel - s2->angVel;
+		v.rolling         = lever * n.cross(dw);
+		v.twist           = lever * n.dot(dw);
+		meso::TangentialEnergy  e;
+		meso::TangentialEnergy* ePtr = scene->trackEnergy ? &e : nullptr;
+		auto& t = phys->tangential;
+		if (delta > 0) {
+			// The frame spins with the pair's mean spin about n; against a wall, with the wall's.
+			const Real spin = (p.radius1 > 0 && p.radius2 > 0) ? 0.5 * (s1->angVel + s2->angVel).dot(n)
+			                                                   : (p.radius1 > 0 ? s2->angVel : s1->angVel).dot(n);
+			const Real level = f.hysteretic + f.viscous + p.kc * delta;
+			meso::tangentialStep(p, p.rollTwist, t, v, n, spin * scene->dt, scene->dt, level, ePtr);
+		} else if (t.nPrev.squaredNorm() > 0) {
+			meso::tangentialRelease(p, t, v, scene->dt, ePtr);
+		}
+		if (ePtr) {
+			scene->energy->add(e.stored, "mesoSprings", springsIx, true);
+			scene->energy->add(e.sliding, "mesoSliding", slidingIx, false);
+			scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
+			scene->energy->add(e.twisting, "mesoTwisting", twistingIx, false);
+		}
+		phys->shearForce = -t.fT; // YADE's convention: the force sustained by body 2
+		if (delta > 0) {
+			force1 += t.fT;
+			const Vector3r quasiTorque = -lever * n.cross(t.fR) + lever * t.fO * n; // rolling and torsion, on body 1
+			scene->forces.addTorque(id1, b1.cross(t.fT) + quasiTorque);
+			scene->forces.addTorque(id2, b2.cross(-t.fT) - quasiTorque);
+		}
 	}
-	return meso::keepsInteracting(phys->pair, delta);
+	if (force1 != Vector3r::Zero()) {
+		scene->forces.addForce(id1, force1);
+		scene->forces.addForce(id2, -force1);
+	}
+	return meso::keepsInteracting(p, delta);
 }
 
 } // namespace yade

@@ -2,6 +2,7 @@
 // history), Ip2 (mixing) and Law2 (calls the YADE-free core in pkg/core and applies forces).
 #pragma once
 #include "../core/NormalLaw.hpp"
+#include "../core/Tangential.hpp"
 
 #include <core/Dispatching.hpp>
 #include <pkg/common/ElastMat.hpp>
@@ -30,7 +31,16 @@ public:
 		((Real,kca,0,Attr::triggerPostLoad,"Non-contact adhesive stiffness $k_{ca}$ [N/m]; the non-contact force acts down to the overlap $\\delta_a=-f_a/k_{ca}$."))
 		((Real,gammaN,0,Attr::triggerPostLoad,"Normal viscous damping coefficient $\\gamma_0\\geq 0$ [kg/s]; the force $\\gamma_0 v_n$ acts in mechanical contact."))
 		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion: 'none', 'reversible' (Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$) or 'jumpIn' (Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after)."))
-		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1).")),
+		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1)."))
+		((Real,phiD,1,Attr::triggerPostLoad,"Ratio $\\phi_d=\\mu_d/\\mu_s\\in(0,1]$ of the dynamic to the static Coulomb limit, for sliding, rolling and torsion [-]. The static sliding coefficient is $\\mu_s=\\tan$ :yref:`frictionAngle<FrictMat.frictionAngle>`."))
+		((Real,kt,0,Attr::triggerPostLoad,"Sliding spring stiffness $k_t$ [N/m]; sliding acts when $k_t$ or $\\gamma_t$ is > 0 (off by default)."))
+		((Real,gammaT,0,Attr::triggerPostLoad,"Sliding dashpot $\\gamma_t$ [kg/s]."))
+		((Real,kr,0,Attr::triggerPostLoad,"Rolling spring stiffness $k_r$ [N/m]; rolling acts on :yref:`ScGeom6D` contacts only."))
+		((Real,gammaR,0,Attr::triggerPostLoad,"Rolling dashpot $\\gamma_r$ [kg/s]."))
+		((Real,muR,0,Attr::triggerPostLoad,"Rolling Coulomb coefficient $\\mu_r$ [-]."))
+		((Real,ko,0,Attr::triggerPostLoad,"Torsion spring stiffness $k_o$ [N/m]; torsion acts on :yref:`ScGeom6D` contacts only."))
+		((Real,gammaO,0,Attr::triggerPostLoad,"Torsion dashpot $\\gamma_o$ [kg/s]."))
+		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-].")),
 		createIndex();
 	);
 	// clang-format on
@@ -46,7 +56,8 @@ public:
 		((meso::PairParams,pair,,Attr::hidden,"Mixed pair parameters (see the read-only properties)."))
 		((meso::NormalHistory,history,,Attr::hidden,"Contact history (see the read-only properties)."))
 		((meso::NormalForce,force,,Attr::hidden,"Parts of the normal force at the last step (see the read-only properties)."))
-		((meso::NormalEnergyState,energy,,Attr::hidden,"Previous step, for the energy bookkeeping.")),
+		((meso::NormalEnergyState,energy,,Attr::hidden,"Previous step, for the energy bookkeeping."))
+		((meso::TangentialState,tangential,,Attr::hidden,"Springs and forces of sliding, rolling and torsion (see the read-only properties).")),
 		createIndex(); energy.prevDelta = NaN;,
 		.add_property("deltaMax",&MesoPhys::getDeltaMax,"Largest overlap $\\delta_{max}$ of the current mechanical contact, after resets along the $-k_c$ branch [m].")
 		.add_property("delta0",&MesoPhys::getDelta0,"Force-free overlap $\\delta_0$ of the current un-/re-loading line [m].")
@@ -68,6 +79,20 @@ public:
 		.add_property("hystereticForce",&MesoPhys::getFh,"Hysteretic contact part of the normal force at the last step (> 0 repulsive) [N]. The total is ``normalForce``.")
 		.add_property("adhesiveForce",&MesoPhys::getFadh,"Non-contact adhesive part of the normal force at the last step [N].")
 		.add_property("viscousForce",&MesoPhys::getFv,"Viscous part of the normal force at the last step [N].")
+		.add_property("slidingSpring",&MesoPhys::getXiT,"Sliding spring $\\xi_t$ in the tangent plane [m]; the force on body 1 is ``-shearForce``.")
+		.add_property("rollingSpring",&MesoPhys::getXiR,"Rolling spring $\\xi_r$ [m].")
+		.add_property("twistSpring",&MesoPhys::getXiO,"Torsion spring $\\xi_o$ along the normal [m].")
+		.add_property("rollingForce",&MesoPhys::getFR,"Rolling quasi-force $f_r$ [N]: torque $-a'_{12}\\,n\\times f_r$ on body 1, opposite on body 2.")
+		.add_property("twistForce",&MesoPhys::getFO,"Torsion quasi-force $f_o$ [N]: torque $a'_{12} f_o n$ on body 1, opposite on body 2.")
+		.add_property("rollingTorque",&MesoPhys::getRollingTorque,"Rolling resistance torque on body 1 at the last step [N m].")
+		.add_property("twistTorque",&MesoPhys::getTwistTorque,"Torsion resistance torque on body 1 at the last step [N m].")
+		.add_property("leverArm",&MesoPhys::getLeverArm,"Lever arm $a'_{12}$ of rolling and torsion at the last step [m].")
+		.add_property("kt",&MesoPhys::getKt,"Mixed sliding stiffness [N/m].")
+		.add_property("kr",&MesoPhys::getKr,"Mixed rolling stiffness [N/m].")
+		.add_property("ko",&MesoPhys::getKo,"Mixed torsion stiffness [N/m].")
+		.add_property("muS",&MesoPhys::getMuS,"Static sliding coefficient of the pair [-].")
+		.add_property("muR",&MesoPhys::getMuR,"Static rolling coefficient of the pair [-].")
+		.add_property("muO",&MesoPhys::getMuO,"Static torsion coefficient of the pair [-].")
 	);
 	// clang-format on
 	Real        getDeltaMax() const { return history.deltaMax; }
@@ -90,6 +115,21 @@ public:
 	Real        getFh() const { return force.hysteretic; }
 	Real        getFadh() const { return force.adhesive; }
 	Real        getFv() const { return force.viscous; }
+	Vector3r    getXiT() const { return tangential.xiT; }
+	Vector3r    getXiR() const { return tangential.xiR; }
+	Real        getXiO() const { return tangential.xiO; }
+	Vector3r    getFR() const { return tangential.fR; }
+	Real        getFO() const { return tangential.fO; }
+	Vector3r    getRollingTorque() const { return -lastLever * tangential.nPrev.cross(tangential.fR); }
+	Vector3r    getTwistTorque() const { return lastLever * tangential.fO * tangential.nPrev; }
+	Real        getLeverArm() const { return lastLever; }
+	Real        getKt() const { return pair.sliding.k; }
+	Real        getKr() const { return pair.rolling.k; }
+	Real        getKo() const { return pair.twisting.k; }
+	Real        getMuS() const { return pair.sliding.muS; }
+	Real        getMuR() const { return pair.rolling.muS; }
+	Real        getMuO() const { return pair.twisting.muS; }
+	Real        lastLever = 0; // not saved: recomputed every step
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
 };
 REGISTER_SERIALIZABLE(MesoPhys);
@@ -97,8 +137,12 @@ REGISTER_SERIALIZABLE(MesoPhys);
 class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
+	void postLoad(Ip2_MesoMat_MesoMat_MesoPhys&);
 	// clang-format off
-	YADE_CLASS_BASE_DOC(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without adhesion switches it off); $\\phi_f$ by the arithmetic mean; the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it. The friction angle is the smaller one, as in :yref:`Ip2_FrictMat_FrictMat_FrictPhys`. $a_{12}=2a_1a_2/(a_1+a_2)$ from the sphere radii of the geometry.");
+	YADE_CLASS_BASE_DOC_ATTRS(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
+		((std::string,leverArm,"reduced",Attr::triggerPostLoad,"Lever arm $a'_{12}$ of rolling and torsion (open in [Luding2008]_): 'reduced' = $a'_1a'_2/(a'_1+a'_2)$ with $a'=a-\\delta/2$ ($a'$ of the sphere against a wall), or 'a12' = twice that. The factor 2 scales the torques of given $k_r$, $k_o$ by 4 and the limit torques by 2."))
+		((int,leverFactor,1,(Attr::hidden|Attr::noSave),"1 or 2, from leverArm"))
+	);
 	// clang-format on
 	FUNCTOR2D(MesoMat, MesoMat);
 };
@@ -108,11 +152,15 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation) [J].",
+	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTwisting' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ and dynamic limit $\\mu_d(f_n+k_c\\delta)$ with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
 		((int,plasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoPlastic' in O.energy"))
 		((int,adhesiveIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoAdhesive' in O.energy"))
 		((int,viscousIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoViscous' in O.energy"))
+		((int,springsIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSprings' in O.energy"))
+		((int,slidingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSliding' in O.energy"))
+		((int,rollingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoRolling' in O.energy"))
+		((int,twistingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoTwisting' in O.energy"))
 	);
 	// clang-format on
 	FUNCTOR2D(ScGeom, MesoPhys);
@@ -131,6 +179,9 @@ namespace boost { namespace serialization {
 		ar& make_nvp("adhesion", adhesion)& make_nvp("k2Interpolation", interp);
 		ar& make_nvp("a12", p.a12)& make_nvp("deltaMaxP", p.deltaMaxP)& make_nvp("invDeltaMaxP", p.invDeltaMaxP);
 		ar& make_nvp("delta0P", p.delta0P)& make_nvp("deltaA", p.deltaA);
+		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.twisting);
+		ar& make_nvp("radius1", p.radius1)& make_nvp("radius2", p.radius2)& make_nvp("leverFactor", p.leverFactor);
+		ar& make_nvp("rollTwist", p.rollTwist)& make_nvp("tangential", p.tangential);
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
 	}
@@ -145,5 +196,14 @@ namespace boost { namespace serialization {
 	template <class Ar> void serialize(Ar& ar, meso::NormalEnergyState& s, const unsigned int)
 	{
 		ar& make_nvp("prevDelta", s.prevDelta)& make_nvp("prevElastic", s.prevElastic);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::TangentialState& s, const unsigned int)
+	{
+		ar& make_nvp("xiT", s.xiT)& make_nvp("xiR", s.xiR)& make_nvp("xiO", s.xiO);
+		ar& make_nvp("fT", s.fT)& make_nvp("fR", s.fR)& make_nvp("fO", s.fO)& make_nvp("nPrev", s.nPrev);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::ElementParams& e, const unsigned int)
+	{
+		ar& make_nvp("k", e.k)& make_nvp("gamma", e.gamma)& make_nvp("muS", e.muS)& make_nvp("muD", e.muD);
 	}
 }} // namespace boost::serialization
