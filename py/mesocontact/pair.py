@@ -30,6 +30,7 @@ class PairScene:
     delta_a: float       # range of the non-contact force (<= 0) [m]
     contact_time: float  # pi sqrt(m_r/kp) [s]
     material: object = None
+    wall_top: float = None  # sphere-wall scenes: height of the wall's surface (the sphere moves along z) [m]
 
 
 @dataclass
@@ -105,14 +106,76 @@ def _hm(x, y):
     return 0.0 if x == 0 or y == 0 else 2.0 * x * y / (x + y)
 
 
+def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0, kind="box", six_d=False, dt=None,
+               steps_per_contact=2000, track_energy=False, spin=(0, 0, 0), tangential_velocity=(0, 0, 0), gap=None,
+               gravity=(0, 0, 0)):
+    """A sphere falling with speed v_inf (along -z) onto a fixed wall whose surface is z = 0.
+
+    kind: 'box' (Ig2_Box_Sphere_ScGeom[6D], detects at a gap, so reversible pull-in works), 'wall'
+    (Ig2_Wall_Sphere_ScGeom) or 'facet' (Ig2_Facet_Sphere_ScGeom[6D]); six_d selects the ScGeom6D
+    functors (rolling and torsion act). The wall's own material mixes with the sphere's; a12 = 2 a
+    and the reduced mass is the sphere's mass. spin and tangential_velocity set the sphere's
+    initial angular and tangential velocity.
+    """
+    _params._positive("radius", radius)
+    if not v_inf >= 0:
+        raise ValueError(f"v_inf = {v_inf!r} is invalid: must be >= 0")
+    if kind not in ("box", "wall", "facet"):
+        raise ValueError(f"kind = {kind!r} is invalid: must be 'box', 'wall' or 'facet'")
+    if six_d and kind == "wall":
+        raise ValueError("six_d = True needs kind 'box' or 'facet': YADE has no ScGeom6D functor for Wall")
+    O.reset()
+    m = _material(material, density)
+    w = m if wall_material is None else _material(wall_material, density)
+    O.materials.append(m)
+    if w is not m:
+        O.materials.append(w)
+    mass = _params.sphere_mass(radius, m.density)
+    fa = _hm(m.fa, w.fa) if "none" not in (m.adhesion, w.adhesion) else 0.0
+    delta_a = -fa / _hm(m.kca, w.kca) if fa > 0 else 0.0
+    t_c = _params.contact_time(_hm(m.kp, w.kp), mass)
+    O.dt = dt if dt is not None else t_c / steps_per_contact
+    start_gap = gap if gap is not None else -delta_a + 3.0 * max(v_inf, 1e-12) * O.dt
+    factor = 1.0 + 1.2 * start_gap / radius
+    size = 50 * radius
+    if kind == "box":
+        wall = _utils.box((0, 0, -size), (size, size, size), material=w, fixed=True)
+        ig2 = _w.Ig2_Box_Sphere_ScGeom6D(interactionDetectionFactor=factor) if six_d else \
+            _w.Ig2_Box_Sphere_ScGeom(interactionDetectionFactor=factor)
+        bo1 = _w.Bo1_Box_Aabb()
+    elif kind == "wall":
+        wall = _utils.wall(0, axis=2, material=w)
+        ig2, bo1 = _w.Ig2_Wall_Sphere_ScGeom(), _w.Bo1_Wall_Aabb()
+    else:
+        wall = _utils.facet([(-size, -size, 0), (size, -size, 0), (0, size, 0)], material=w, fixed=True)
+        ig2 = _w.Ig2_Facet_Sphere_ScGeom6D() if six_d else _w.Ig2_Facet_Sphere_ScGeom()
+        bo1 = _w.Bo1_Facet_Aabb()
+    ball = _utils.sphere((0, 0, radius + start_gap), radius, material=m)
+    ids = tuple(O.bodies.append([wall, ball]))
+    ball.state.vel = (tangential_velocity[0], tangential_velocity[1], -v_inf)
+    ball.state.angVel = spin
+    O.engines = [
+        _w.ForceResetter(),
+        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(aabbEnlargeFactor=factor), bo1], verletDist=0),
+        _w.InteractionLoop([ig2], [_w.Ip2_MesoMat_MesoMat_MesoPhys()], [_w.Law2_ScGeom_MesoPhys_Meso()]),
+        _w.NewtonIntegrator(damping=0.0, gravity=gravity),
+    ]
+    O.trackEnergy = track_energy
+    return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0)
+
+
 def overlap(s):
-    """Current overlap delta = a1 + a2 - distance [m]."""
+    """Current overlap delta = a1 + a2 - distance (sphere-wall: a - height above the wall) [m]."""
+    if s.wall_top is not None:
+        return s.radii[1] - (O.bodies[s.ids[1]].state.pos[2] - s.wall_top)
     p1, p2 = O.bodies[s.ids[0]].state.pos, O.bodies[s.ids[1]].state.pos
     return s.radii[0] + s.radii[1] - (p2 - p1).norm()
 
 
 def separation_speed(s):
-    """Relative normal speed, > 0 while the spheres recede [m/s]."""
+    """Relative normal speed, > 0 while the bodies recede [m/s]."""
+    if s.wall_top is not None:
+        return O.bodies[s.ids[1]].state.vel[2]
     b1, b2 = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
     n = (b2.pos - b1.pos).normalized()
     return (b2.vel - b1.vel).dot(n)

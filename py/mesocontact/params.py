@@ -50,3 +50,24 @@ def safe_time_step(kp, m_min, gamma=0.0, steps_per_contact=50):
     if gamma > 0:
         dt = min(dt, 0.1 * m_min / gamma)
     return dt
+
+
+def time_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
+    """A time step resolving every stiffness of the law for the smallest particle mass m_min [s].
+
+    Highest angular frequencies of a pair of equal spheres (the worst case; a sphere against a
+    wall is slower): normal kp/m_r with m_r = m/2; sliding 3.5 kt/m_r (the spring drags
+    translation and rotation, I = 2/5 m a^2); rolling and torsion about 2.5 k/m with the lever
+    a'12 = a/2 (10 k/m with lever 'a12'; pass 4 kr, 4 ko for that convention). The period of the
+    fastest one is resolved by 2 steps_per_contact steps; gamma: the largest dashpot [kg/s].
+    """
+    _positive("kp", kp)
+    _positive("m_min", m_min)
+    for name, v in (("kt", kt), ("kr", kr), ("ko", ko), ("gamma", gamma)):
+        _nonnegative(name, v)
+    m_r = 0.5 * m_min
+    omega2 = max(kp / m_r, 3.5 * kt / m_r, 2.5 * kr / m_min, 2.5 * ko / m_min)
+    dt = math.pi / math.sqrt(omega2) / steps_per_contact
+    if gamma > 0:
+        dt = min(dt, 0.1 * m_r / gamma)
+    return dt
