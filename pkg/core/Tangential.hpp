@@ -21,21 +21,27 @@ inline double magnitude(double v) { return std::abs(v); }
 
 // One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
 // The spring is advanced by v dt first (so the force belongs to this step's configuration, as
-// the normal law does), then the trial force -k xi - gamma v is limited by the static limit
-// muS * level; beyond it the force is the dynamic limit muD * level along the trial direction
-// and the spring is reset to -(f + gamma v)/k so that sticking resumes without a jump.
+// the normal law does), then the trial force -k xi - gamma v is compared with the Coulomb limit;
+// beyond it the force is the dynamic limit muD * level along the trial direction and the spring
+// is reset to -(f + gamma v)/k so that sticking resumes without a jump.
 // level = f_n + kc delta >= 0: the normal contact force measured from the adhesive branch.
-template <class V> inline ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level)
+// sliding: whether the element slipped at the previous step. A sticking element starts to slide
+// beyond the static limit muS level; a sliding one goes on sliding while the trial exceeds the
+// dynamic limit muD level (otherwise, with muD < muS, the reset spring would re-stick at once and
+// the element would chatter between the limits instead of sliding at muD).
+template <class V> inline ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level, bool& sliding)
 {
 	ElementStep<V> out;
 	xi += v * dt;
 	const V      trial = -p.k * xi - p.gamma * v;
 	const double t     = magnitude(trial);
-	const double fs    = p.muS * level;
-	if (t <= fs) {
+	const double limit = (sliding ? p.muD : p.muS) * level;
+	if (t <= limit) {
+		sliding   = false;
 		out.force = trial;
 		return out;
 	}
+	sliding     = true;
 	out.slipped = true;
 	out.force   = trial * (p.muD * level / t);
 	if (p.k > 0) xi = -(out.force + p.gamma * v) / p.k;
@@ -97,6 +103,7 @@ struct TangentialState {
 	Vec3   fR    = Vec3::Zero(); // rolling quasi-force [N]
 	double fO    = 0;            // torsion quasi-force, along n [N]
 	Vec3   nPrev = Vec3::Zero(); // normal of the previous step (zero: none yet)
+	bool   slidingT = false, slidingR = false, slidingO = false; // elements slipping at the last step
 	void   reset() { *this = TangentialState(); }
 };
 
@@ -127,9 +134,9 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 		uR0 = springEnergy(p.rolling, s.xiR);
 		uO0 = springEnergy(p.twisting, s.xiO);
 	}
-	if (p.sliding.active()) s.fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level).force;
-	if (rollTwist && p.rolling.active()) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level).force;
-	if (rollTwist && p.twisting.active()) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level).force;
+	if (p.sliding.active()) s.fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
+	if (rollTwist && p.rolling.active()) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
+	if (rollTwist && p.twisting.active()) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level, s.slidingO).force;
 	if (!energy) return;
 	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.twisting, s.xiO);
 	energy->sliding  = absorbedWork(prevT, s.fT, v.sliding, dt) - (uT - uT0);

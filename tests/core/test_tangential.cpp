@@ -19,9 +19,10 @@ TEST(Element, SticksBelowTheStaticLimit)
 {
 	const ElementParams p = element(100, 0.5, 1.0, 0.8);
 	Vec3 xi = Vec3::Zero();
+	bool sliding = false;
 	const Vec3 v(1e-3, 0, 0);
 	for (int i = 1; i <= 10; ++i) {
-		const auto s = elementStep(p, xi, v, 1e-3, 1.0);
+		const auto s = elementStep(p, xi, v, 1e-3, 1.0, sliding);
 		EXPECT_FALSE(s.slipped);
 		EXPECT_NEAR(s.force.x(), -100 * 1e-6 * i - 0.5e-3, 1e-15); // -k (i v dt) - gamma v
 	}
@@ -31,21 +32,36 @@ TEST(Element, SlipsAtTheDynamicLimitAndResumesWithoutJump)
 {
 	const ElementParams p = element(100, 0.0, 1.0, 0.8);
 	Vec3 xi(0.0, -0.02, 0); // trial |f| = 2 > muS level = 1
-	const auto s = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0);
+	bool sliding = false;
+	const auto s = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0, sliding);
 	EXPECT_TRUE(s.slipped);
 	EXPECT_NEAR(s.force.norm(), 0.8, 1e-15);       // muD level
 	EXPECT_NEAR(s.force.y(), 0.8, 1e-15);          // along the trial direction
 	EXPECT_NEAR((-p.k * xi - s.force).norm(), 0, 1e-15); // spring reset: next trial equals f
-	const auto again = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0);
-	EXPECT_FALSE(again.slipped);
+	const auto again = elementStep(p, xi, Vec3(Vec3::Zero()), 1e-3, 1.0, sliding);
+	EXPECT_FALSE(again.slipped); // at rest the trial equals the dynamic limit: it sticks
 	EXPECT_NEAR(again.force.y(), 0.8, 1e-15);
+}
+
+TEST(Element, KeepsSlidingAtTheDynamicLimit)
+{
+	const ElementParams p = element(100, 0.0, 1.0, 0.8);
+	Vec3 xi(0.0, -0.0101, 0); // just beyond the static limit
+	bool sliding = false;
+	const Vec3 v(0, -1e-3, 0);  // keeps moving against the force (+y)
+	for (int i = 0; i < 100; ++i) {
+		const auto s = elementStep(p, xi, v, 1e-3, 1.0, sliding);
+		EXPECT_TRUE(s.slipped) << i; // trial = 0.8 + k v dt > muD level: still sliding
+		EXPECT_NEAR(s.force.norm(), 0.8, 1e-15);
+	}
 }
 
 TEST(Element, ScalarTorsion)
 {
 	const ElementParams p = element(10, 0, 0.5, 0.5);
 	double xi = 0;
-	for (int i = 0; i < 1000; ++i) elementStep(p, xi, 1.0, 1e-3, 2.0);
+	bool sliding = false;
+	for (int i = 0; i < 1000; ++i) elementStep(p, xi, 1.0, 1e-3, 2.0, sliding);
 	EXPECT_NEAR(-p.k * xi, -1.0, 1e-12); // capped at mu level = 1
 }
 
@@ -53,7 +69,8 @@ TEST(Element, NoSpringNoDivision)
 {
 	const ElementParams p = element(0, 1.0, 0.1, 0.1);
 	Vec3 xi = Vec3::Zero();
-	const auto s = elementStep(p, xi, Vec3(1, 0, 0), 1e-3, 1.0);
+	bool sliding = false;
+	const auto s = elementStep(p, xi, Vec3(1, 0, 0), 1e-3, 1.0, sliding);
 	EXPECT_NEAR(s.force.x(), -0.1, 1e-15);
 	EXPECT_TRUE(xi.allFinite());
 }
