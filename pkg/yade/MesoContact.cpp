@@ -11,7 +11,7 @@ YADE_PLUGIN((MesoMat)(MesoPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPh
 
 /* MesoMat */
 
-meso::MaterialParams MesoMat::params() const
+meso::MaterialParams MesoMat::parse() const
 {
 	meso::MaterialParams m;
 	m.k1              = k1;
@@ -42,33 +42,39 @@ void MesoMat::postLoad(MesoMat&)
 {
 	if (deferChecks) return;
 	try {
-		meso::MaterialParams m = params();
+		meso::MaterialParams m = parse();
 		meso::validate(m);
-		lastValid           = m;
-		lastAdhesion        = adhesion;
-		lastK2Interpolation = k2Interpolation;
+		valid                = m;
+		validAdhesion        = adhesion;
+		validK2Interpolation = k2Interpolation;
 	} catch (const std::invalid_argument&) { // keep the material valid: undo the assignment, then report it
-		k1              = lastValid.k1;
-		kp              = lastValid.kp;
-		kc              = lastValid.kc;
-		phiF            = lastValid.phiF;
-		fa              = lastValid.fa;
-		kca             = lastValid.kca;
-		gammaN          = lastValid.gammaN;
-		frictionAngle   = math::atan(lastValid.muS);
-		phiD            = lastValid.phiD;
-		kt              = lastValid.kt;
-		gammaT          = lastValid.gammaT;
-		kr              = lastValid.kr;
-		gammaR          = lastValid.gammaR;
-		muR             = lastValid.muR;
-		ko              = lastValid.ko;
-		gammaO          = lastValid.gammaO;
-		muO             = lastValid.muO;
-		adhesion        = lastAdhesion;
-		k2Interpolation = lastK2Interpolation;
+		k1              = valid.k1;
+		kp              = valid.kp;
+		kc              = valid.kc;
+		phiF            = valid.phiF;
+		fa              = valid.fa;
+		kca             = valid.kca;
+		gammaN          = valid.gammaN;
+		frictionAngle   = math::atan(valid.muS);
+		phiD            = valid.phiD;
+		kt              = valid.kt;
+		gammaT          = valid.gammaT;
+		kr              = valid.kr;
+		gammaR          = valid.gammaR;
+		muR             = valid.muR;
+		ko              = valid.ko;
+		gammaO          = valid.gammaO;
+		muO             = valid.muO;
+		adhesion        = validAdhesion;
+		k2Interpolation = validK2Interpolation;
 		throw;
 	}
+}
+
+void MesoMat::setFrictionAngle(Real a)
+{
+	frictionAngle = a;
+	postLoad(*this);
 }
 
 void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)

@@ -12,17 +12,21 @@
 namespace yade {
 
 class MesoMat : public FrictMat {
-	meso::MaterialParams lastValid;                               // restored when an assignment is rejected
-	std::string          lastAdhesion = "none", lastK2Interpolation = "linear";
-	bool                 deferChecks  = false;                    // set while the constructor applies its keywords
+	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
+	std::string          validAdhesion = "none", validK2Interpolation = "linear";
+	bool                 deferChecks   = false; // set while the constructor applies its keywords
+	meso::MaterialParams parse() const;         // throws std::invalid_argument naming the parameter
 
 public:
 	virtual ~MesoMat() = default;
-	meso::MaterialParams params() const; // parsed; valid by construction
-	void                 postLoad(MesoMat&);
+	// Validated parameters; never throws (the Ip2 runs inside YADE's OpenMP loop).
+	const meso::MaterialParams& params() const { return valid; }
+	void                        postLoad(MesoMat&);
+	Real                        getFrictionAngle() const { return frictionAngle; }
+	void                        setFrictionAngle(Real a); // validated, like the attributes below
 	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
 		((Real,k1,1e2,Attr::triggerPostLoad,"Plastic (initial) loading stiffness $k_1$ [N/m], > 0."))
 		((Real,kp,5e2,Attr::triggerPostLoad,"Elastic limit stiffness $k_p\\geq k_1$ [N/m]; $k_p=k_1$ gives a linear elastic contact."))
 		((Real,kc,0,Attr::triggerPostLoad,"Adhesive stiffness $k_c\\geq 0$ of the tensile branch $f=-k_c\\delta$ [N/m]."))
@@ -41,7 +45,8 @@ public:
 		((Real,ko,0,Attr::triggerPostLoad,"Torsion spring stiffness $k_o$ [N/m]; torsion acts on :yref:`ScGeom6D` contacts only."))
 		((Real,gammaO,0,Attr::triggerPostLoad,"Torsion dashpot $\\gamma_o$ [kg/s]."))
 		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-].")),
-		createIndex();
+		createIndex(); valid = parse();,
+		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(MesoMat, FrictMat);

@@ -46,6 +46,38 @@ for label, mat, zeta, r2 in cases:
     print(("ok   " if ok else "FAIL ") + line, flush=True)
     if not ok:
         failures.append(label)
+# All mechanisms: oblique, spinning sphere-sphere (ScGeom6D) and sphere-box collisions with
+# sliding, rolling and torsion springs, dashpots and Coulomb limits, adhesion, viscosity and
+# viscous background damping.
+from yade import wrapper as wr
+
+full = dict(base, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=2e-3, kt=40.0, gammaT=1e-3, frictionAngle=0.3,
+            kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1, phiD=0.8)
+for label, wall in (("all mechanisms, sphere-sphere 6D", False), ("all mechanisms, sphere-box 6D", True)):
+    v = 0.08
+    if wall:
+        s = pair.build_wall(r, v, full, kind="box", six_d=True, tangential_velocity=(0.05, 0.02, 0), spin=(30, -50, 80),
+                            track_energy=True)
+    else:
+        s = pair.build(r, v, full, track_energy=True)
+        f = O.engines[2].geomDispatcher.functors[0]
+        O.engines[2].geomDispatcher.functors = [wr.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=f.interactionDetectionFactor)]
+        O.bodies[s.ids[0]].state.vel += (0, 0.04, 0.01)  # oblique
+        O.bodies[s.ids[0]].state.angVel = (40, 0, -60)
+        O.bodies[s.ids[1]].state.angVel = (0, 70, 20)
+    O.engines = O.engines[:-1] + [wr.MesoBackgroundDamping(gammaB=1e-4, gammaBR=1e-4)] + O.engines[-1:]
+    O.step()
+    e0 = O.energy.total()
+    worst = 0.0
+    for _ in range(int(12 * s.contact_time / O.dt)):
+        O.step()
+        worst = max(worst, abs(O.energy.total() - e0) / e0)
+    parts = {k: O.energy[k] / e0 for k in O.energy.keys()}
+    ok = worst <= 1e-4 and all(parts.get(k, 0) > 0 for k in ("mesoSliding", "mesoRolling", "mesoTwisting", "mesoBackground"))
+    print(("ok   " if ok else "FAIL ") + f"{label:32s} max |E_total - E_0|/E_0 = {worst:.2e}; final shares: " +
+          ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0), flush=True)
+    if not ok:
+        failures.append(label)
 if failures:
     print(f"{len(failures)} FAILED")
     sys.exit(1)

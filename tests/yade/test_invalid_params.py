@@ -24,6 +24,17 @@ cases = [
     (dict(gammaN=nan), "gammaN"),
     (dict(fa=nan, adhesion="reversible", kca=1), "fa"),
     (dict(gammaN=-1e-3), "gammaN"),
+    (dict(kt=-1), "kt"),
+    (dict(gammaT=nan), "gammaT"),
+    (dict(kr=float("inf")), "kr"),
+    (dict(muR=-0.1), "muR"),
+    (dict(ko=-5), "ko"),
+    (dict(gammaO=-1), "gammaO"),
+    (dict(muO=nan), "muO"),
+    (dict(phiD=0), "phiD"),
+    (dict(phiD=1.2), "phiD"),
+    (dict(frictionAngle=-0.1), "frictionAngle"),
+    (dict(frictionAngle=2.0), "frictionAngle"),
 ]
 failures = []
 for kw, name in cases:
@@ -46,6 +57,21 @@ for kw, name in cases:
     after = {a: getattr(m, a) for a in before}
     if after != before:
         failures.append(f"assignment {kw}: the material changed: {after}")
+
+# The lever-arm convention of the Ip2.
+try:
+    Ip2_MesoMat_MesoMat_MesoPhys(leverArm="diameter")
+    failures.append("leverArm: no exception")
+except ValueError as e:
+    if not str(e).startswith("leverArm"):
+        failures.append(f"leverArm: message does not name it: {e}")
+ip2 = Ip2_MesoMat_MesoMat_MesoPhys(leverArm="a12")
+try:
+    ip2.leverArm = "x"
+except ValueError:
+    pass
+if ip2.leverArm != "a12":
+    failures.append(f"leverArm: rejected value kept ({ip2.leverArm})")
 
 # Order of keywords does not matter in the constructor.
 MesoMat(kp=5000, k1=1000)

@@ -64,6 +64,40 @@ for moment in ("loading", "kc-branch", "tail"):
               f"identical after 3000 more steps: {direct == resumed}", flush=True)
         if not ok:
             failures.append(f"{moment} {ext}")
+# All three springs (sliding, rolling, torsion) of a spinning, sliding sphere on a box (ScGeom6D).
+full = dict(mat, kt=40.0, gammaT=1e-3, frictionAngle=0.3, kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1, phiD=0.8)
+
+
+def springs():
+    i = O.interactions[0, 1]
+    return (tuple(i.phys.slidingSpring), tuple(i.phys.rollingSpring), i.phys.twistSpring, tuple(i.phys.shearForce),
+            tuple(i.phys.rollingForce), i.phys.twistForce)
+
+
+for ext in (".yade.gz", ".xml"):
+    s = pair.build_wall(r, 0.08, full, kind="box", six_d=True, tangential_velocity=(0.05, 0.02, 0), spin=(30, -50, 80),
+                        track_energy=True)
+    steps = 0
+    while not (O.interactions.has(0, 1) and O.interactions[0, 1].isReal and O.interactions[0, 1].phys.slidingSpring.norm() > 0
+               and abs(O.interactions[0, 1].phys.twistSpring) > 0 and steps > 300):
+        O.step()
+        steps += 1
+    path = os.path.join(tmp, "springs" + ext)
+    before = springs()
+    O.save(path)
+    for _ in range(2000):
+        O.step()
+    direct = snapshot()
+    O.load(path)
+    after_load = springs()
+    for _ in range(2000):
+        O.step()
+    resumed = snapshot()
+    ok = direct == resumed and after_load == before
+    print(("ok   " if ok else "FAIL ") + f"springs    {ext:9s} saved at step {steps}, springs {before[:3]}; identical after 2000 more steps: {direct == resumed}",
+          flush=True)
+    if not ok:
+        failures.append(f"springs {ext}")
 if failures:
     print(f"{len(failures)} FAILED: {failures}")
     sys.exit(1)
