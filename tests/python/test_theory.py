@@ -97,6 +97,20 @@ class ReferenceValues(unittest.TestCase):
         self.assertGreater(theory.widened_kp(100, 500, 0.05, 0.5), 500)
 
 
+class TimeStep(unittest.TestCase):
+    def test_binding_stiffness(self):
+        m = params.sphere_mass(1e-3, 2000)
+        base = params.time_step(1e3, m, steps_per_contact=1)
+        self.assertAlmostEqual(base, params.contact_time(1e3, m / 2), places=15)  # normal: pi sqrt(m_r/kp)
+        self.assertAlmostEqual(params.time_step(1e3, m, kt=1e3 / 3.5 * 0.99, steps_per_contact=1), base, places=15)
+        self.assertLess(params.time_step(1e3, m, kt=1e3, steps_per_contact=1), base)   # sliding binds
+        self.assertLess(params.time_step(1e3, m, kr=1e3, steps_per_contact=1), base)   # rolling binds (2.5 kr/m > kp/m_r)
+        self.assertLess(params.time_step(1e3, m, ko=1e3, steps_per_contact=1), base)   # torsion binds
+        self.assertAlmostEqual(params.time_step(1e3, m, steps_per_contact=50), base / 50, places=15)
+        with self.assertRaisesRegex(ValueError, "^kt"):
+            params.time_step(1e3, m, kt=-1)
+
+
 class DimensionalForm(unittest.TestCase):
     r = 1.1e-3
     m_r = params.sphere_mass(1.1e-3, 2000) / 2
