@@ -52,20 +52,22 @@ double harmonicMean(double x, double y);
 
 // The parameters of one pair (MODEL.md §8) with the geometric constants derived from a12.
 struct PairParams {
-	double          k1 = 0, kp = 0, kc = 0, phiF = 0, fa = 0, kca = 0, gammaN = 0;
+	// Hot: what Law2::go() reads every step, flags first (one cache line for the normal law).
+	bool            tangential      = false; // any tangential mechanism acts
+	bool            rollTwist       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
-	double          a12          = 0; // reduced radius 2 a1 a2/(a1+a2); 2 a against a wall [m]
+	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
 	double          deltaMaxP    = 0; // limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]
 	double          invDeltaMaxP = 0; // 1/deltaMaxP (0 if kp == k1) [1/m]
 	double          delta0P      = 0; // plastic overlap on the limit branch phiF a12 (Eq. 11) [m]
 	double          deltaA       = 0; // range of the non-contact force -fa/kca (<= 0) [m]
 	ElementParams   sliding, rolling, twisting; // Luding 2008 tangential elements
-	// Geometry of the pair, fixed when the contact is created.
-	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
-	double leverFactor = 1;          // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
-	bool   rollTwist   = false;      // rolling and torsion act (ScGeom6D and a spring or dashpot set)
-	bool   tangential  = false;      // any tangential mechanism acts
+	double          radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
+	double          leverFactor = 1;          // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
+	// Cold: kept for the user.
+	double phiF = 0; // plasticity depth [-]
+	double a12  = 0; // reduced radius 2 a1 a2/(a1+a2); 2 a against a wall [m]
 };
 
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;

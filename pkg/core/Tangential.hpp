@@ -18,6 +18,8 @@ template <class V> struct ElementStep {
 
 inline double magnitude(const Vec3& v) { return v.norm(); }
 inline double magnitude(double v) { return std::abs(v); }
+inline double squared(const Vec3& v) { return v.squaredNorm(); }
+inline double squared(double v) { return v * v; }
 
 // One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
 // The spring is advanced by v dt first (so the force belongs to this step's configuration, as
@@ -34,33 +36,51 @@ template <class V> inline ElementStep<V> elementStep(const ElementParams& p, V& 
 	ElementStep<V> out;
 	xi += v * dt;
 	const V      trial = -p.k * xi - p.gamma * v;
-	const double t     = magnitude(trial);
 	const double limit = (sliding ? p.muD : p.muS) * level;
-	if (t <= limit) {
+	if (squared(trial) <= limit * limit) { // no square root while sticking
 		sliding   = false;
 		out.force = trial;
 		return out;
 	}
 	sliding     = true;
 	out.slipped = true;
-	out.force   = trial * (p.muD * level / t);
+	out.force   = trial * (p.muD * level / magnitude(trial));
 	if (p.k > 0) xi = -(out.force + p.gamma * v) / p.k;
 	else xi = xi * 0.0;
 	return out;
 }
 
-// Rotates a tangential spring with the contact: from the previous normal to the current one
-// (Rodrigues, exact) and about the normal by the mean spin of the pair; then removes any normal
-// component left by rounding. A rigid rotation of the pair thus leaves the spring unchanged in
-// the pair's frame.
-inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle)
-{
-	const Vec3   axis = nPrev.cross(n); // |axis| = sin(theta)
-	const double c    = nPrev.dot(n);
-	if (c > -0.5) xi = xi * c + axis.cross(xi) + axis * (axis.dot(xi) / (1 + c));
-	if (spinAngle != 0) xi = xi * std::cos(spinAngle) + n.cross(xi) * std::sin(spinAngle);
-	xi -= n * n.dot(xi);
-}
+// The rotation of the contact frame over one step: from the previous normal to the current one
+// (Rodrigues, exact) and about the normal by the mean spin of the pair. Computed once per step
+// and applied to every vector that lives in the tangent plane.
+struct ContactRotation {
+	Vec3   n, axis; // current normal; nPrev x n (|axis| = sin of the tilt)
+	double c = 1, inv1pc = 0.5, cosSpin = 1, sinSpin = 0;
+	bool   tilt = false, spin = false;
+	ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
+	        : n(nNow)
+	        , axis(nPrev.cross(nNow))
+	        , c(nPrev.dot(nNow))
+	{
+		tilt   = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
+		inv1pc = 1 / (1 + c);
+		spin   = spinAngle != 0;
+		if (spin) {
+			cosSpin = std::cos(spinAngle);
+			sinSpin = std::sin(spinAngle);
+		}
+	}
+	// Transports xi with the frame, then removes any normal component left by rounding. A rigid
+	// rotation of the pair thus leaves a spring unchanged in the pair's frame.
+	void apply(Vec3& xi) const
+	{
+		if (tilt) xi = xi * c + axis.cross(xi) + axis * (axis.dot(xi) * inv1pc);
+		if (spin) xi = xi * cosSpin + n.cross(xi) * sinSpin;
+		xi -= n * n.dot(xi);
+	}
+};
+
+inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
 // Relative velocities at a contact of body 1 with body 2; n points from 1 to 2 (YADE's normal).
 // arm1, arm2: centre-to-contact-point distances (a - delta/2 for spheres); leverArm: a'_ij.
@@ -120,10 +140,13 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 {
 	if (level < 0) level = 0;
 	if (s.nPrev.squaredNorm() > 0) {
-		rotateWithContact(s.xiT, s.nPrev, n, spinAngle);
-		rotateWithContact(s.xiR, s.nPrev, n, spinAngle);
-		rotateWithContact(s.fT, s.nPrev, n, spinAngle);
-		rotateWithContact(s.fR, s.nPrev, n, spinAngle);
+		const ContactRotation rot(s.nPrev, n, spinAngle);
+		if (p.sliding.active()) rot.apply(s.xiT);
+		if (rollTwist && p.rolling.active()) rot.apply(s.xiR);
+		if (energy) { // the previous forces serve only the energy bookkeeping
+			rot.apply(s.fT);
+			rot.apply(s.fR);
+		}
 	}
 	s.nPrev = n;
 	const Vec3   prevT = s.fT, prevR = s.fR;

@@ -1,4 +1,5 @@
 #include "MesoContact.hpp"
+#include <core/BodyContainer.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <core/State.hpp>
@@ -148,9 +149,10 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	const auto&  p     = phys->pair;
 	const Real   delta = geom->penetrationDepth;
 	const int    id1 = I->getId1(), id2 = I->getId2();
-	const State* s1 = Body::byId(id1, scene)->state.get();
-	const State* s2 = Body::byId(id2, scene)->state.get();
-	const Vector3r& n      = geom->normal; // from 1 to 2
+	const BodyContainer& bodies = *scene->bodies;
+	const State*         s1     = bodies[id1]->state.get();
+	const State*         s2     = bodies[id2]->state.get();
+	const Vector3r&      n      = geom->normal; // from 1 to 2
 	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
 	const Real vn = relVel.dot(n); // d(delta)/dt

@@ -98,6 +98,8 @@ public:
 		.add_property("muS",&MesoPhys::getMuS,"Static sliding coefficient of the pair [-].")
 		.add_property("muR",&MesoPhys::getMuR,"Static rolling coefficient of the pair [-].")
 		.add_property("muO",&MesoPhys::getMuO,"Static torsion coefficient of the pair [-].")
+		.add_property("byteSize",&MesoPhys::byteSize,"Memory of one MesoPhys object [bytes] (what each contact costs).")
+		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.")
 	);
 	// clang-format on
 	Real        getDeltaMax() const { return history.deltaMax; }
@@ -135,6 +137,8 @@ public:
 	Real        getMuR() const { return pair.rolling.muS; }
 	Real        getMuO() const { return pair.twisting.muS; }
 	Real        lastLever = 0; // not saved: recomputed every step
+	int         byteSize() const { return sizeof(MesoPhys); }
+	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
 };
 REGISTER_SERIALIZABLE(MesoPhys);
