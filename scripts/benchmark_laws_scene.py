@@ -79,22 +79,22 @@ def timed(name):
 names = ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
 if len(sys.argv) > 4:  # a subset, e.g. for profiling
     names = sys.argv[4].split(",")
-report = {"threads": O.numThreads, "steps": steps, "bodies": 0, "laws": {}}
-for name in names:
-    times, wall, contacts = timed(name)
-    O.step()  # forces of one more step, kept for the serial/parallel comparison
-    positions = [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies]
-    report["bodies"] = len(O.bodies)
-    step_ns = sum(times.values()) / steps
-    report["laws"][name] = {
-        "contacts": contacts,
-        "step_ns": step_ns,
-        "interaction_loop_ns": times["InteractionLoop"] / steps,
-        "wall_s": wall,
-        "positions": positions,
-    }
-    print(f"[{O.numThreads} thr] {name:16s} step {step_ns / 1e3:9.1f} us, interaction loop {times['InteractionLoop'] / steps / 1e3:8.1f} us, "
-          f"{contacts} contacts", flush=True)
+reps = int(sys.argv[5]) if len(sys.argv) > 5 else 3
+report = {"threads": O.numThreads, "steps": steps, "repetitions": reps, "bodies": 0, "laws": {}}
+# The laws take turns, several rounds; each keeps its best round (machine noise only slows down).
+for rep in range(reps):
+    for name in names:
+        times, wall, contacts = timed(name)
+        step_ns = sum(times.values()) / steps
+        L = report["laws"].setdefault(name, {"step_ns": math.inf})
+        if step_ns < L["step_ns"]:
+            L.update(contacts=contacts, step_ns=step_ns, interaction_loop_ns=times["InteractionLoop"] / steps, wall_s=wall)
+        if rep == reps - 1:
+            O.step()  # forces of one more step, kept for the serial/parallel comparison
+            L["positions"] = [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies]
+        report["bodies"] = len(O.bodies)
+        print(f"[{O.numThreads} thr, round {rep + 1}/{reps}] {name:16s} step {step_ns / 1e3:9.1f} us, interaction loop "
+              f"{times['InteractionLoop'] / steps / 1e3:8.1f} us, {contacts} contacts", flush=True)
 report["mesoPhys_bytes"] = w.MesoPhys().byteSize
 report["frictPhys_bytes"] = w.MesoPhys().frictPhysByteSize
 with open(out_path, "w") as f:

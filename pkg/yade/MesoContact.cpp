@@ -149,9 +149,9 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	const auto&  p     = phys->pair;
 	const Real   delta = geom->penetrationDepth;
 	const int    id1 = I->getId1(), id2 = I->getId2();
-	const BodyContainer& bodies = *scene->bodies;
-	const State*         s1     = bodies[id1]->state.get();
-	const State*         s2     = bodies[id2]->state.get();
+	const auto&     bodies = scene->bodies->body; // the vector itself: its operator[] inlines
+	const State*    s1     = bodies[id1]->state.get();
+	const State*    s2     = bodies[id2]->state.get();
 	const Vector3r&      n      = geom->normal; // from 1 to 2
 	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
@@ -183,10 +183,10 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		const Real     lever   = p.leverFactor * reduced;
 		phys->lastLever        = lever;
 		meso::ContactVelocities v;
-		const Vector3r vc = relVel + s1->angVel.cross(b1) - s2->angVel.cross(b2);
+		const Vector3r vc = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
 		v.sliding         = vc - n * n.dot(vc);
 		const Vector3r dw = s1->angVel - s2->angVel;
-		v.rolling         = lever * n.cross(dw);
+		v.rolling         = lever * meso::cross(n, dw);
 		v.twist           = lever * n.dot(dw);
 		meso::TangentialEnergy  e;
 		meso::TangentialEnergy* ePtr = scene->trackEnergy ? &e : nullptr;
@@ -209,9 +209,9 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		phys->shearForce = -t.fT; // YADE's convention: the force sustained by body 2
 		if (delta > 0) {
 			force1 += t.fT;
-			const Vector3r quasiTorque = -lever * n.cross(t.fR) + lever * t.fO * n; // rolling and torsion, on body 1
-			scene->forces.addTorque(id1, b1.cross(t.fT) + quasiTorque);
-			scene->forces.addTorque(id2, b2.cross(-t.fT) - quasiTorque);
+			const Vector3r quasiTorque = lever * (t.fO * n - meso::cross(n, t.fR)); // rolling and torsion, on body 1
+			scene->forces.addTorque(id1, meso::cross(b1, t.fT) + quasiTorque);
+			scene->forces.addTorque(id2, meso::cross(t.fT, b2) - quasiTorque);
 		}
 	}
 	if (force1 != Vector3r::Zero()) {

@@ -86,10 +86,14 @@ TEST(Rotation, SpringFollowsTheNormal)
 	EXPECT_NEAR(xi.x(), -2e-3 * std::sin(th), 1e-15); // rotated about z by th
 	EXPECT_NEAR(xi.y(), 2e-3 * std::cos(th), 1e-15);
 	EXPECT_NEAR(xi.z(), 5e-4, 1e-15);
-	Vec3 xi2(0, 0, 1); // perpendicular to n1
-	rotateWithContact(xi2, n1, n1, 0.5 * M_PI); // spin about n by 90 degrees
-	EXPECT_NEAR(xi2.norm(), 1, 1e-15);
-	EXPECT_NEAR(xi2.dot(n1.cross(Vec3(0, 0, 1))), 1, 1e-12);
+	for (double spin : {1e-3, 0.5 * M_PI}) { // a step's spin about n: exactly 2 atan(spin/2), length kept
+		Vec3 xi2(0, 0, 1);                  // perpendicular to n1
+		rotateWithContact(xi2, n1, n1, spin);
+		const double angle = 2 * std::atan(0.5 * spin);
+		EXPECT_NEAR(xi2.norm(), 1, 1e-15);
+		EXPECT_NEAR(xi2.dot(n1.cross(Vec3(0, 0, 1))), std::sin(angle), 1e-15);
+		EXPECT_NEAR(xi2.z(), std::cos(angle), 1e-15);
+	}
 }
 
 TEST(Kinematics, RigidRotationHasNoRelativeMotion)
