@@ -3,6 +3,13 @@
 #pragma once
 #include <string>
 
+// Small functions of the hot path (Law2::go()): GCC does not inline them on its own in -fPIC code.
+#if defined(__GNUC__)
+#define MESO_HOT inline __attribute__((always_inline))
+#else
+#define MESO_HOT inline
+#endif
+
 namespace meso {
 
 enum class Adhesion : int { None = 0, Reversible = 1, JumpIn = 2 };

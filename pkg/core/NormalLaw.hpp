@@ -23,7 +23,7 @@ struct NormalForce {
 };
 
 // k2 and delta0 of the un-/re-loading line that belongs to deltaMax (Eqs. 7, 9, 10, D.1).
-inline void setUnloadingLine(const PairParams& p, NormalHistory& h, double deltaMax)
+MESO_HOT void setUnloadingLine(const PairParams& p, NormalHistory& h, double deltaMax)
 {
 	h.deltaMax = deltaMax;
 	if (deltaMax >= p.deltaMaxP) {
@@ -61,7 +61,7 @@ inline double deltaMaxThrough(const PairParams& p, double delta)
 }
 
 // Hysteretic contact force at overlap delta; updates the history first (MODEL.md §3 order).
-inline double hystereticForce(const PairParams& p, NormalHistory& h, double delta)
+MESO_HOT double hystereticForce(const PairParams& p, NormalHistory& h, double delta)
 {
 	if (delta <= 0) { // mechanical contact over: the next one starts new
 		h.deltaMax = 0;
@@ -78,7 +78,7 @@ inline double hystereticForce(const PairParams& p, NormalHistory& h, double delt
 }
 
 // Non-contact adhesion superposed on the contact force (Eqs. 14, 15 and the jump-in tail).
-inline double adhesiveForce(const PairParams& p, NormalHistory& h, double delta)
+MESO_HOT double adhesiveForce(const PairParams& p, NormalHistory& h, double delta)
 {
 	if (p.adhesion == Adhesion::None) return 0;
 	if (p.adhesion == Adhesion::JumpIn && !h.touched) {
@@ -91,7 +91,7 @@ inline double adhesiveForce(const PairParams& p, NormalHistory& h, double delta)
 }
 
 // All parts of the normal force; vn = d(delta)/dt, > 0 while approaching [m/s].
-inline NormalForce normalForce(const PairParams& p, NormalHistory& h, double delta, double vn)
+MESO_HOT NormalForce normalForce(const PairParams& p, NormalHistory& h, double delta, double vn)
 {
 	NormalForce f;
 	f.hysteretic = hystereticForce(p, h, delta);
@@ -101,7 +101,7 @@ inline NormalForce normalForce(const PairParams& p, NormalHistory& h, double del
 }
 
 // Whether the pair still interacts: while the non-contact force can act (delta > deltaA), or in contact.
-inline bool keepsInteracting(const PairParams& p, double delta) { return delta > p.deltaA; }
+MESO_HOT bool keepsInteracting(const PairParams& p, double delta) { return delta > p.deltaA; }
 
 // Elastic energy stored on the current un-/re-loading line: 1/2 k2 (delta - delta0)^2 = f^2/(2 k2) [J].
 inline double storedElastic(const NormalHistory& h, double fHysteretic) { return h.k2 > 0 ? 0.5 * fHysteretic * fHysteretic / h.k2 : 0.0; }

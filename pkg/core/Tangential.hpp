@@ -12,7 +12,7 @@ using Vec3 = Eigen::Vector3d;
 
 // Cross product written out: Eigen's cross() is not always inlined, and then binds to another
 // library's instantiation through the PLT (measured: ~20 instructions per call in Law2::go()).
-inline Vec3 cross(const Vec3& a, const Vec3& b)
+MESO_HOT Vec3 cross(const Vec3& a, const Vec3& b)
 {
 	return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
 }
@@ -23,10 +23,10 @@ template <class V> struct ElementStep {
 	bool slipped = false;
 };
 
-inline double magnitude(const Vec3& v) { return v.norm(); }
-inline double magnitude(double v) { return std::abs(v); }
-inline double squared(const Vec3& v) { return v.squaredNorm(); }
-inline double squared(double v) { return v * v; }
+MESO_HOT double magnitude(const Vec3& v) { return v.norm(); }
+MESO_HOT double magnitude(double v) { return std::abs(v); }
+MESO_HOT double squared(const Vec3& v) { return v.squaredNorm(); }
+MESO_HOT double squared(double v) { return v * v; }
 
 // One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
 // The spring is advanced by v dt first (so the force belongs to this step's configuration, as
@@ -38,7 +38,7 @@ inline double squared(double v) { return v * v; }
 // beyond the static limit muS level; a sliding one goes on sliding while the trial exceeds the
 // dynamic limit muD level (otherwise, with muD < muS, the reset spring would re-stick at once and
 // the element would chatter between the limits instead of sliding at muD).
-template <class V> inline ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level, bool& sliding)
+template <class V> MESO_HOT ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level, bool& sliding)
 {
 	ElementStep<V> out;
 	xi += v * dt;
@@ -66,7 +66,7 @@ struct ContactRotation {
 	Vec3   n, axis; // current normal; nPrev x n (|axis| = sin of the tilt)
 	double c = 1, inv1pc = 0.5, cosSpin = 1, sinSpin = 0;
 	bool   tilt = false, spin = false;
-	ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
+	MESO_HOT ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
 	        : n(nNow)
 	        , axis(cross(nPrev, nNow))
 	        , c(nPrev.dot(nNow))
@@ -82,7 +82,7 @@ struct ContactRotation {
 	}
 	// Transports xi with the frame, then removes any normal component left by rounding. A rigid
 	// rotation of the pair thus leaves a spring unchanged in the pair's frame.
-	void apply(Vec3& xi) const
+	MESO_HOT void apply(Vec3& xi) const
 	{
 		if (tilt) xi = xi * c + cross(axis, xi) + axis * (axis.dot(xi) * inv1pc);
 		if (spin) xi = xi * cosSpin + cross(n, xi) * sinSpin;

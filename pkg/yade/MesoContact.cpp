@@ -171,34 +171,38 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	Vector3r force1   = -phys->normalForce; // on body 1
 
 	if (p.tangential) {
-		// Arms from the centres to the contact point: a - delta/2 for spheres; for a wall, box or
-		// facet the branch to YADE's contact point (its torque then follows from the force).
-		const Vector3r b1   = p.radius1 > 0 ? Vector3r((p.radius1 - 0.5 * delta) * n) : Vector3r(geom->contactPoint - s1->pos);
-		const Vector3r b2   = p.radius2 > 0 ? Vector3r(-(p.radius2 - 0.5 * delta) * n)
-		                                    : Vector3r(geom->contactPoint - s2->pos
-		                                               - (scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero()));
-		const Real     arm1 = p.radius1 > 0 ? p.radius1 - 0.5 * delta : 0;
-		const Real     arm2 = p.radius2 > 0 ? p.radius2 - 0.5 * delta : 0;
-		const Real     reduced = (arm1 > 0 && arm2 > 0) ? arm1 * arm2 / (arm1 + arm2) : math::max(arm1, arm2);
-		const Real     lever   = p.leverFactor * reduced;
-		phys->lastLever        = lever;
+		const Real dt   = scene->dt;
+		auto&      t    = phys->tangential;
+		const bool both = p.radius1 > 0 && p.radius2 > 0;
+		// Arms from the centres to the contact point: a - delta/2 for spheres (branch = +-arm n);
+		// for a wall, box or facet the branch to YADE's contact point.
+		const Real arm1 = p.radius1 > 0 ? p.radius1 - 0.5 * delta : 0;
+		const Real arm2 = p.radius2 > 0 ? p.radius2 - 0.5 * delta : 0;
+		const Real lever = p.leverFactor * (both ? arm1 * arm2 / (arm1 + arm2) : math::max(arm1, arm2));
+		phys->lastLever  = lever;
+		Vector3r b1, b2; // used off the sphere-sphere path only
 		meso::ContactVelocities v;
-		const Vector3r vc = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
+		Vector3r vc;
+		if (both) vc = relVel + meso::cross(arm1 * s1->angVel + arm2 * s2->angVel, n);
+		else {
+			const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
+			b1                    = p.radius1 > 0 ? Vector3r(arm1 * n) : Vector3r(geom->contactPoint - s1->pos);
+			b2                    = p.radius2 > 0 ? Vector3r(-arm2 * n) : Vector3r(geom->contactPoint - s2->pos - shift2);
+			vc                    = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
+		}
 		v.sliding         = vc - n * n.dot(vc);
 		const Vector3r dw = s1->angVel - s2->angVel;
 		v.rolling         = lever * meso::cross(n, dw);
 		v.twist           = lever * n.dot(dw);
 		meso::TangentialEnergy  e;
 		meso::TangentialEnergy* ePtr = scene->trackEnergy ? &e : nullptr;
-		auto& t = phys->tangential;
 		if (delta > 0) {
 			// The frame spins with the pair's mean spin about n; against a wall, with the wall's.
-			const Real spin = (p.radius1 > 0 && p.radius2 > 0) ? 0.5 * (s1->angVel + s2->angVel).dot(n)
-			                                                   : (p.radius1 > 0 ? s2->angVel : s1->angVel).dot(n);
+			const Real spin  = both ? 0.5 * (s1->angVel + s2->angVel).dot(n) : (p.radius1 > 0 ? s2->angVel : s1->angVel).dot(n);
 			const Real level = f.hysteretic + f.viscous + p.kc * delta;
-			meso::tangentialStep(p, p.rollTwist, t, v, n, spin * scene->dt, scene->dt, level, ePtr);
+			meso::tangentialStep(p, p.rollTwist, t, v, n, spin * dt, dt, level, ePtr);
 		} else if (t.nPrev.squaredNorm() > 0) {
-			meso::tangentialRelease(p, t, v, scene->dt, ePtr);
+			meso::tangentialRelease(p, t, v, dt, ePtr);
 		}
 		if (ePtr) {
 			scene->energy->add(e.stored, "mesoSprings", springsIx, true);
@@ -210,8 +214,14 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		if (delta > 0) {
 			force1 += t.fT;
 			const Vector3r quasiTorque = lever * (t.fO * n - meso::cross(n, t.fR)); // rolling and torsion, on body 1
-			scene->forces.addTorque(id1, meso::cross(b1, t.fT) + quasiTorque);
-			scene->forces.addTorque(id2, meso::cross(t.fT, b2) - quasiTorque);
+			if (both) {
+				const Vector3r nxf = meso::cross(n, t.fT); // sliding: torques arm1 n x fT and arm2 n x fT
+				scene->forces.addTorque(id1, arm1 * nxf + quasiTorque);
+				scene->forces.addTorque(id2, arm2 * nxf - quasiTorque);
+			} else {
+				scene->forces.addTorque(id1, meso::cross(b1, t.fT) + quasiTorque);
+				scene->forces.addTorque(id2, meso::cross(t.fT, b2) - quasiTorque);
+			}
 		}
 	}
 	if (force1 != Vector3r::Zero()) {
