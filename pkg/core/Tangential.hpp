@@ -58,35 +58,36 @@ template <class V> MESO_HOT ElementStep<V> elementStep(const ElementParams& p, V
 }
 
 // The rotation of the contact frame over one step: from the previous normal to the current one
-// (Rodrigues, exact) and about the normal by the mean spin of the pair. Computed once per step
-// and applied to every vector that lives in the tangent plane. The spin uses the Cayley form
-// (cos, sin) = ((1 - t^2), 2t)/(1 + t^2), t = angle/2: exactly orthogonal, no trigonometric call,
-// rotating by 2 atan(angle/2) = angle - angle^3/12 + ...
+// (the minimal rotation, exact) and about the normal by the mean spin of the pair. Computed once
+// per step and applied to every vector of the tangent plane. For xi perpendicular to nPrev the
+// minimal rotation reduces to xi - (xi.n)/(1 + c) (nPrev + n), c = nPrev.n, which is exactly
+// perpendicular to n. The spin uses the Cayley form (cos, sin) = ((1 - t^2), 2t)/(1 + t^2),
+// t = angle/2: exactly orthogonal, no trigonometric call, rotating by 2 atan(angle/2) =
+// angle - angle^3/12 + ...
 struct ContactRotation {
-	Vec3   n, axis; // current normal; nPrev x n (|axis| = sin of the tilt)
-	double c = 1, inv1pc = 0.5, cosSpin = 1, sinSpin = 0;
+	Vec3   n, w; // current normal; (nPrev + n)/(1 + c)
+	double cosSpin = 1, sinSpin = 0;
 	bool   tilt = false, spin = false;
 	MESO_HOT ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
 	        : n(nNow)
-	        , axis(cross(nPrev, nNow))
-	        , c(nPrev.dot(nNow))
 	{
-		tilt   = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
-		inv1pc = 1 / (1 + c);
-		spin   = spinAngle != 0;
+		const double c = nPrev.dot(nNow);
+		tilt           = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
+		if (tilt) w = (nPrev + nNow) * (1 / (1 + c));
+		spin = spinAngle != 0;
 		if (spin) {
 			const double t = 0.5 * spinAngle, d = 1 / (1 + t * t);
 			cosSpin        = (1 - t * t) * d;
 			sinSpin        = 2 * t * d;
 		}
 	}
-	// Transports xi with the frame, then removes any normal component left by rounding. A rigid
-	// rotation of the pair thus leaves a spring unchanged in the pair's frame.
+	// Transports xi (in the previous tangent plane) with the frame. A rigid rotation of the pair
+	// thus leaves a spring unchanged in the pair's frame.
 	MESO_HOT void apply(Vec3& xi) const
 	{
-		if (tilt) xi = xi * c + cross(axis, xi) + axis * (axis.dot(xi) * inv1pc);
+		if (tilt) xi -= w * xi.dot(n);
+		else xi -= n * n.dot(xi);
 		if (spin) xi = xi * cosSpin + cross(n, xi) * sinSpin;
-		xi -= n * n.dot(xi);
 	}
 };
 
