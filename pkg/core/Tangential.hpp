@@ -71,13 +71,17 @@ struct ContactRotation {
 	MESO_HOT ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
 	        : n(nNow)
 	{
-		const double c = nPrev.dot(nNow);
+		// The per-step angles are tiny: 1/(1 + c) and 1/(1 + t^2) then come from series that are
+		// exact to rounding (truncation below 1e-18 relative where used), sparing two
+		// divisions on go()'s dependency chain; larger angles divide.
+		const double c = nPrev.dot(nNow), u = 1 - c;
 		tilt           = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
-		if (tilt) w = (nPrev + nNow) * (1 / (1 + c));
+		if (tilt) w = (nPrev + nNow) * (u < 1e-6 ? 0.5 * (1 + 0.5 * u * (1 + 0.5 * u)) : 1 / (1 + c));
 		spin = spinAngle != 0;
 		if (spin) {
-			const double t = 0.5 * spinAngle, d = 1 / (1 + t * t);
-			cosSpin        = (1 - t * t) * d;
+			const double t = 0.5 * spinAngle, t2 = t * t;
+			const double d = t2 < 1e-6 ? 1 - t2 * (1 - t2) : 1 / (1 + t2);
+			cosSpin        = (1 - t2) * d;
 			sinSpin        = 2 * t * d;
 		}
 	}
