@@ -12,30 +12,33 @@ YADE_PLUGIN((MesoMat)(MesoPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPh
 
 /* MesoMat */
 
+namespace {
+	// The numeric attributes of MesoMat and the core parameters they are (frictionAngle and the
+	// mode names are converted, below).
+	struct Field {
+		Real MesoMat::*attr;
+		double meso::MaterialParams::*param;
+	};
+	const Field numericFields[] = { { &MesoMat::k1, &meso::MaterialParams::k1 },         { &MesoMat::kp, &meso::MaterialParams::kp },
+		                        { &MesoMat::kc, &meso::MaterialParams::kc },         { &MesoMat::phiF, &meso::MaterialParams::phiF },
+		                        { &MesoMat::fa, &meso::MaterialParams::fa },         { &MesoMat::kca, &meso::MaterialParams::kca },
+		                        { &MesoMat::gammaN, &meso::MaterialParams::gammaN }, { &MesoMat::phiD, &meso::MaterialParams::phiD },
+		                        { &MesoMat::kt, &meso::MaterialParams::kt },         { &MesoMat::gammaT, &meso::MaterialParams::gammaT },
+		                        { &MesoMat::kr, &meso::MaterialParams::kr },         { &MesoMat::gammaR, &meso::MaterialParams::gammaR },
+		                        { &MesoMat::muR, &meso::MaterialParams::muR },       { &MesoMat::ko, &meso::MaterialParams::ko },
+		                        { &MesoMat::gammaO, &meso::MaterialParams::gammaO }, { &MesoMat::muO, &meso::MaterialParams::muO } };
+}
+
 meso::MaterialParams MesoMat::parse() const
 {
 	meso::MaterialParams m;
-	m.k1              = k1;
-	m.kp              = kp;
-	m.kc              = kc;
-	m.phiF            = phiF;
-	m.fa              = fa;
-	m.kca             = kca;
-	m.gammaN          = gammaN;
+	for (const Field& f : numericFields)
+		m.*f.param = this->*f.attr;
 	m.adhesion        = meso::parseAdhesion(adhesion);
 	m.k2Interpolation = meso::parseK2Interpolation(k2Interpolation);
 	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
 		throw std::invalid_argument("frictionAngle = " + std::to_string(frictionAngle) + " is invalid: must lie in [0, pi/2)");
-	m.muS    = math::tan(frictionAngle);
-	m.phiD   = phiD;
-	m.kt     = kt;
-	m.gammaT = gammaT;
-	m.kr     = kr;
-	m.gammaR = gammaR;
-	m.muR    = muR;
-	m.ko     = ko;
-	m.gammaO = gammaO;
-	m.muO    = muO;
+	m.muS = math::tan(frictionAngle);
 	return m;
 }
 
@@ -49,23 +52,9 @@ void MesoMat::postLoad(MesoMat&)
 		validAdhesion        = adhesion;
 		validK2Interpolation = k2Interpolation;
 	} catch (const std::invalid_argument&) { // keep the material valid: undo the assignment, then report it
-		k1              = valid.k1;
-		kp              = valid.kp;
-		kc              = valid.kc;
-		phiF            = valid.phiF;
-		fa              = valid.fa;
-		kca             = valid.kca;
-		gammaN          = valid.gammaN;
+		for (const Field& f : numericFields)
+			this->*f.attr = valid.*f.param;
 		frictionAngle   = math::atan(valid.muS);
-		phiD            = valid.phiD;
-		kt              = valid.kt;
-		gammaT          = valid.gammaT;
-		kr              = valid.kr;
-		gammaR          = valid.gammaR;
-		muR             = valid.muR;
-		ko              = valid.ko;
-		gammaO          = valid.gammaO;
-		muO             = valid.muO;
 		adhesion        = validAdhesion;
 		k2Interpolation = validK2Interpolation;
 		throw;

@@ -43,6 +43,19 @@ class PairResult:
     trace: list = field(default_factory=list)  # (time, overlap, hysteretic force, total force) if recorded
 
 
+def _materials(material, material2, density):
+    """The MesoMat objects of the two bodies (registered in O.materials) and the range of the
+    non-contact force of the pair, mixed as the Ip2 does (harmonic means of fa and kca)."""
+    m1 = _material(material, density)
+    m2 = m1 if material2 is None else _material(material2, density)
+    O.materials.append(m1)
+    if m2 is not m1:
+        O.materials.append(m2)
+    fa = _hm(m1.fa, m2.fa) if "none" not in (m1.adhesion, m2.adhesion) else 0.0
+    delta_a = -fa / _hm(m1.kca, m2.kca) if fa > 0 else 0.0
+    return m1, m2, delta_a
+
+
 def _material(material, density):
     if isinstance(material, _w.MesoMat):
         return material
@@ -65,19 +78,10 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     radius2 = radius1 if radius2 is None else radius2
     _params._positive("radius2", radius2)
     O.reset()
-    m1 = _material(material, density)
-    m2 = m1 if material2 is None else _material(material2, density)
-    O.materials.append(m1)
-    if m2 is not m1:
-        O.materials.append(m2)
-
+    m1, m2, delta_a = _materials(material, material2, density)
     mass1, mass2 = _params.sphere_mass(radius1, m1.density), _params.sphere_mass(radius2, m2.density)
     m_r = _params.reduced_mass(mass1, mass2)
     a12 = _params.reduced_radius(radius1, radius2)
-    # Same mixing as Ip2 for the range: harmonic means of fa and kca.
-    fa = _hm(m1.fa, m2.fa) if "none" not in (m1.adhesion, m2.adhesion) else 0.0
-    kca = _hm(m1.kca, m2.kca)
-    delta_a = -fa / kca if fa > 0 else 0.0
     kp = _hm(m1.kp, m2.kp)
     t_c = _params.contact_time(kp, m_r)
     O.dt = dt if dt is not None else t_c / steps_per_contact
@@ -125,14 +129,8 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     if six_d and kind == "wall":
         raise ValueError("six_d = True needs kind 'box' or 'facet': YADE has no ScGeom6D functor for Wall")
     O.reset()
-    m = _material(material, density)
-    w = m if wall_material is None else _material(wall_material, density)
-    O.materials.append(m)
-    if w is not m:
-        O.materials.append(w)
+    m, w, delta_a = _materials(material, wall_material, density)
     mass = _params.sphere_mass(radius, m.density)
-    fa = _hm(m.fa, w.fa) if "none" not in (m.adhesion, w.adhesion) else 0.0
-    delta_a = -fa / _hm(m.kca, w.kca) if fa > 0 else 0.0
     t_c = _params.contact_time(_hm(m.kp, w.kp), mass)
     O.dt = dt if dt is not None else t_c / steps_per_contact
     start_gap = gap if gap is not None else -delta_a + 3.0 * max(v_inf, 1e-12) * O.dt
