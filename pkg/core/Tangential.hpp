@@ -98,22 +98,27 @@ struct ContactRotation {
 inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
 // Relative velocities at a contact of body 1 with body 2; n points from 1 to 2 (YADE's normal).
-// arm1, arm2: centre-to-contact-point distances (a - delta/2 for spheres); leverArm: a'_ij.
 struct ContactVelocities {
 	Vec3   sliding; // v_t: tangential velocity of 1 relative to 2 at the contact point [m/s]
 	Vec3   rolling; // v_r = a'_ij n x (w1 - w2) [m/s]
 	double twist;   // v_o = a'_ij n.(w1 - w2) [m/s], along n
 };
 
-inline ContactVelocities contactVelocities(const Vec3& n, const Vec3& relVel, const Vec3& w1, const Vec3& w2, double arm1, double arm2,
-                                           double leverArm)
+// Velocity of the contact point of sphere 1 relative to sphere 2: the branches are +-arm n
+// (arm = a - delta/2), so v1 - v2 + arm1 w1 x n + arm2 w2 x n takes one cross product.
+MESO_HOT Vec3 sphereContactVelocity(const Vec3& n, const Vec3& relVel, const Vec3& w1, const Vec3& w2, double arm1, double arm2)
+{
+	return relVel + cross(arm1 * w1 + arm2 * w2, n);
+}
+
+// Sliding, rolling and torsion velocities from the contact-point velocity vc, the relative
+// angular velocity dw = w1 - w2 and the lever arm a'_ij.
+MESO_HOT ContactVelocities contactVelocities(const Vec3& n, const Vec3& vc, const Vec3& dw, double leverArm)
 {
 	ContactVelocities c;
-	const Vec3 vc = relVel + arm1 * cross(w1, n) + arm2 * cross(w2, n);
-	c.sliding     = vc - n * n.dot(vc);
-	const Vec3 dw = w1 - w2;
-	c.rolling     = leverArm * cross(n, dw);
-	c.twist       = leverArm * n.dot(dw);
+	c.sliding = vc - n * n.dot(vc);
+	c.rolling = leverArm * cross(n, dw);
+	c.twist   = leverArm * n.dot(dw);
 	return c;
 }
 

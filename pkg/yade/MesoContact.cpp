@@ -170,19 +170,15 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		const Real lever = p.leverFactor * (both ? arm1 * arm2 / (arm1 + arm2) : math::max(arm1, arm2));
 		phys->lastLever  = lever;
 		Vector3r b1, b2; // used off the sphere-sphere path only
-		meso::ContactVelocities v;
 		Vector3r vc;
-		if (both) vc = relVel + meso::cross(arm1 * s1->angVel + arm2 * s2->angVel, n);
+		if (both) vc = meso::sphereContactVelocity(n, relVel, s1->angVel, s2->angVel, arm1, arm2);
 		else {
 			const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
 			b1                    = p.radius1 > 0 ? Vector3r(arm1 * n) : Vector3r(geom->contactPoint - s1->pos);
 			b2                    = p.radius2 > 0 ? Vector3r(-arm2 * n) : Vector3r(geom->contactPoint - s2->pos - shift2);
 			vc                    = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
 		}
-		v.sliding         = vc - n * n.dot(vc);
-		const Vector3r dw = s1->angVel - s2->angVel;
-		v.rolling         = lever * meso::cross(n, dw);
-		v.twist           = lever * n.dot(dw);
+		const meso::ContactVelocities v = meso::contactVelocities(n, vc, s1->angVel - s2->angVel, lever);
 		meso::TangentialEnergy  e;
 		meso::TangentialEnergy* ePtr = scene->trackEnergy ? &e : nullptr;
 		if (delta > 0) {

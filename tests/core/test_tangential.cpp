@@ -103,7 +103,8 @@ TEST(Kinematics, RigidRotationHasNoRelativeMotion)
 	const double a1 = 1, a2 = 2, delta = 0.1, d = a1 + a2 - delta;
 	const Vec3 n = Vec3(1, 2, 2).normalized(), x2 = x1 + d * n;
 	const Vec3 v1 = w.cross(x1), v2 = w.cross(x2);
-	const ContactVelocities c = contactVelocities(n, v1 - v2, w, w, a1 - delta / 2, a2 - delta / 2, 0.6);
+	const Vec3 vc = sphereContactVelocity(n, v1 - v2, w, w, a1 - delta / 2, a2 - delta / 2);
+	const ContactVelocities c = contactVelocities(n, vc, w - w, 0.6);
 	EXPECT_NEAR(c.sliding.norm(), 0, 1e-15);
 	EXPECT_NEAR(c.rolling.norm(), 0, 1e-15);
 	EXPECT_NEAR(c.twist, 0, 1e-15);
@@ -112,7 +113,9 @@ TEST(Kinematics, RigidRotationHasNoRelativeMotion)
 TEST(Kinematics, RollingAndTwistOpposeRelativeRotation)
 {
 	const Vec3 n(0, 0, 1);
-	const ContactVelocities c = contactVelocities(n, Vec3(Vec3::Zero()), Vec3(0, 2, 3), Vec3(Vec3::Zero()), 1, 1, 0.5);
+	const Vec3 vc = sphereContactVelocity(n, Vec3(Vec3::Zero()), Vec3(0, 2, 3), Vec3(Vec3::Zero()), 1, 1);
+	const ContactVelocities c = contactVelocities(n, vc, Vec3(0, 2, 3), 0.5);
+	EXPECT_NEAR((vc - Vec3(2, 0, 0)).norm(), 0, 1e-15); // w x (arm n) = (0, 2, 3) x (0, 0, 1)
 	EXPECT_NEAR(c.rolling.x(), -1.0, 1e-15); // 0.5 n x (0, 2, 3) = (-1, 0, 0)
 	EXPECT_NEAR(c.twist, 1.5, 1e-15);
 }

@@ -56,7 +56,7 @@ O.run(100, True)  # the torsion spring reaches its limit
 lv, arm = level_of(i), r - 0.5 * i.geom.penetrationDepth
 ts, ys = record(lambda: b.angVel[2], 3000)
 alpha = -fit_slope(ts, ys)
-alpha_th = arm * 0.9 * 0.08 * lv / I
+alpha_th = arm * mat["phiD"] * mat["muO"] * lv / I
 err = abs(alpha - alpha_th) / alpha_th
 ok = err <= 1e-3 and b.angVel[2] > 0
 print(("ok   " if ok else "FAIL ") + f"spin: deceleration {alpha:.6e} rad/s2, a' mu_o,d level / I = {alpha_th:.6e}, rel. error {err:.1e}", flush=True)
@@ -73,7 +73,7 @@ O.run(300, True)
 lv, arm = level_of(i), r - 0.5 * i.geom.penetrationDepth
 ts, ys = record(lambda: b.vel[0], 3000)
 acc = -fit_slope(ts, ys)
-acc_th = arm * (arm * 0.9 * 0.05 * lv) / (I + m * arm * arm)
+acc_th = arm * (arm * mat["phiD"] * mat["muR"] * lv) / (I + m * arm * arm)
 err = abs(acc - acc_th) / acc_th
 slip = abs(b.vel[0] - arm * b.angVel[1]) / b.vel[0]
 ok = err <= 1e-3 and slip < 1e-3
@@ -83,7 +83,7 @@ if not ok:
     failures.append("rolling")
 
 # (c) spring torques at small angles
-for label, axis, k_spring, mu in (("rolling", 1, 200.0, 0.05), ("torsion", 2, 200.0, 0.08)):
+for label, axis, k_spring, mu in (("rolling", 1, mat["kr"], mat["muR"]), ("torsion", 2, mat["ko"], mat["muO"])):
     s, i, b = settled()
     arm, lv = r - 0.5 * i.geom.penetrationDepth, level_of(i)
     T = 0.3 * arm * mu * lv  # 30 % of the limit torque
