@@ -96,9 +96,12 @@ void deriveGeometry(PairParams& p, double a12)
 	p.deltaA = (p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0;
 }
 
-PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12)
+PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2, double a12)
 {
-	PairParams p;
+	const bool            one = mat1.dominant && !mat2.dominant, two = mat2.dominant && !mat1.dominant;
+	const MaterialParams& m1  = two ? mat2 : mat1;
+	const MaterialParams& m2  = one ? mat1 : mat2;
+	PairParams            p;
 	p.k1     = harmonicMean(m1.k1, m2.k1);
 	p.kp     = std::max(harmonicMean(m1.kp, m2.kp), p.k1); // monotone mean keeps kp >= k1; max() guards rounding
 	p.kc     = harmonicMean(m1.kc, m2.kc);

@@ -49,6 +49,9 @@ struct MaterialParams {
 	double ko     = 0; // torsion spring [N/m]
 	double gammaO = 0; // torsion dashpot [kg/s]
 	double muO    = 0; // torsion coefficient [-]
+	// A dominant material imposes its own parameters on its pairs with non-dominant materials
+	// (no mixing): walls whose law is prescribed, like Luding's adhesive loading walls.
+	bool dominant = false;
 };
 
 // Throws std::invalid_argument whose message starts with the offending parameter's name.
@@ -80,7 +83,8 @@ struct PairParams {
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;
 // friction coefficients by the smaller one (as YADE's Ip2_FrictMat_FrictMat_FrictPhys); phiD by the smaller;
 // adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation
-// only when both ask for it. Equal materials give their own values.
+// only when both ask for it. Equal materials give their own values. When exactly one of the two is
+// dominant, the pair takes that material's parameters unmixed.
 PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12);
 
 // Fills the derived constants of p from its parameters and a12.

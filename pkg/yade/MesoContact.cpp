@@ -38,7 +38,8 @@ meso::MaterialParams MesoMat::parse() const
 	m.k2Interpolation = meso::parseK2Interpolation(k2Interpolation);
 	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
 		throw std::invalid_argument("frictionAngle = " + std::to_string(frictionAngle) + " is invalid: must lie in [0, pi/2)");
-	m.muS = math::tan(frictionAngle);
+	m.muS      = math::tan(frictionAngle);
+	m.dominant = dominant;
 	return m;
 }
 
@@ -55,6 +56,7 @@ void MesoMat::postLoad(MesoMat&)
 		for (const Field& f : numericFields)
 			this->*f.attr = valid.*f.param;
 		frictionAngle   = math::atan(valid.muS);
+		dominant        = valid.dominant;
 		adhesion        = validAdhesion;
 		k2Interpolation = validK2Interpolation;
 		throw;

@@ -44,7 +44,8 @@ public:
 		((Real,muR,0,Attr::triggerPostLoad,"Rolling Coulomb coefficient $\\mu_r$ [-]."))
 		((Real,ko,0,Attr::triggerPostLoad,"Torsion spring stiffness $k_o$ [N/m]; torsion acts on :yref:`ScGeom6D` contacts only."))
 		((Real,gammaO,0,Attr::triggerPostLoad,"Torsion dashpot $\\gamma_o$ [kg/s]."))
-		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-].")),
+		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-]."))
+		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
 		createIndex(); valid = parse();,
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 	);

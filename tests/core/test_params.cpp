@@ -77,3 +77,18 @@ TEST(Mixing, UnlikeMaterials)
 	EXPECT_EQ(p.adhesion, Adhesion::None); // b has none
 	EXPECT_EQ(p.fa, 0.0); EXPECT_EQ(p.deltaA, 0.0);
 }
+
+TEST(Mixing, DominantMaterialImposesItsParameters)
+{
+	MaterialParams particle, wall;
+	particle.k1 = 2.5; particle.kp = 5; particle.kc = 1; particle.muS = 1;
+	wall.k1 = 2.5; wall.kp = 5; wall.kc = 100; wall.muS = 10; wall.dominant = true;
+	for (const PairParams& p : { mixPair(particle, wall, 1e-2), mixPair(wall, particle, 1e-2) }) {
+		EXPECT_DOUBLE_EQ(p.kc, 100); // the harmonic mean would give 2*1*100/101
+		EXPECT_DOUBLE_EQ(p.sliding.muS, 10);
+		EXPECT_DOUBLE_EQ(p.kp, 5);
+	}
+	particle.dominant = true; // both dominant: mixed as usual
+	EXPECT_DOUBLE_EQ(mixPair(particle, wall, 1e-2).kc, 200.0 / 101.0);
+	EXPECT_DOUBLE_EQ(mixPair(particle, wall, 1e-2).sliding.muS, 1);
+}

@@ -1,0 +1,156 @@
+"""Unconfined uni-axial tension and compression of the released tablet (Appendix F; inside ``yade``).
+
+The test starts from the saved released state (``tablet.released``). The four lateral walls are
+erased with their contacts (unconfined: no lateral stress at all) and the stress controller is
+removed; the two x walls, which carry the adhesive wall material, are moved symmetrically:
+
+- ``cycles``: cosine strain cycles to an amplitude Dx and back, L(t) = L0 -+ Dx d0 (1 - cos wt)/2,
+  driven by YADE's ``HarmonicMotionEngine`` (one per wall); a cycle is a whole number of steps,
+  so the walls return to L0 to rounding;
+- ``pull``: a monotonic pull at constant wall speed (YADE's ``TranslationEngine``).
+
+Recorded: Dx = (L - L0)/d0 (> 0 in tension) and the force on the loading walls,
+F = (f_right - f_left)/2 along x, > 0 when the sample pushes the walls (compression).
+"""
+import math
+import time
+
+try:
+    from yade import O
+    from yade import wrapper as _w
+    from yade import Vector3
+except ImportError as _exc:  # pragma: no cover - outside yade
+    raise ImportError("mesocontact.uniaxial needs YADE: run it inside `yade`") from _exc
+
+from . import tablet as _tablet
+
+MODES = ("tension", "compression")
+
+
+def _check_mode(mode):
+    if mode not in MODES:
+        raise ValueError(f"mode = {mode!r} is invalid: must be 'tension' or 'compression'")
+    return 1.0 if mode == "tension" else -1.0
+
+
+def crossing_time():
+    """Time an elastic wave needs to cross the sample along x: L0/c with c = d0 sqrt(kp/m) of
+    the mean particle (a linear chain of springs kp and masses m at spacing d0) [us]."""
+    ids = _tablet.sphere_ids()
+    m = sum(O.bodies[i].state.mass for i in ids) / len(ids)
+    lo, hi = _tablet.inner_box()
+    return (hi[0] - lo[0]) / (_tablet.D0 * math.sqrt(_tablet.KP / m))
+
+
+class Test:
+    """The released tablet set up for an unconfined uni-axial test (loads ``path``)."""
+
+    def __init__(self, path, progress=True):
+        self.info = _tablet.released(path, progress=progress)
+        self.progress = progress
+        walls = _tablet.wall_ids()
+        for name in ("bottom", "top", "back", "front"):
+            if name in walls:
+                O.bodies.erase(walls[name])
+        self.left, self.right = walls["left"], walls["right"]
+        O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
+        for i in (self.left, self.right):
+            O.bodies[i].state.vel = Vector3(0, 0, 0)
+        self.L0 = self.length()
+        self.t_cross = crossing_time()
+        self.rows = []  # (iter, Dx, F/(kp d0))
+        self._motion = []
+
+    def length(self):
+        lo, hi = _tablet.inner_box()
+        return hi[0] - lo[0]
+
+    def dx(self):
+        return (self.length() - self.L0) / _tablet.D0
+
+    def force(self):
+        """Force on the loading walls, > 0 in compression, over kp d0."""
+        f = 0.5 * (O.forces.f(self.right)[0] - O.forces.f(self.left)[0])
+        return f / (_tablet.KP * _tablet.D0)
+
+    def _install(self, motion, every, on_record):
+        for e in self._motion:
+            O.engines = [x for x in O.engines if x is not e]
+        self._motion = motion
+        self._on_record = on_record
+        recorder = _w.PyRunner(iterPeriod=every, command="_mesocontact_uniaxial_record()", label="recorder")
+        import builtins
+        builtins._mesocontact_uniaxial_record = self._record
+        O.engines = [e for e in O.engines if e.label != "recorder"][:-1] + motion + [recorder] + O.engines[-1:]
+
+    def _record(self):
+        row = (O.iter, self.dx(), self.force())
+        self.rows.append(row)
+        if self._on_record is not None:
+            self._on_record(self, row)
+
+    def cycles(self, mode, amplitude, n_cycles=4, steps_per_cycle=None, period=40.0, every=None,
+               on_record=None):
+        """n_cycles cosine cycles of amplitude Dx = amplitude (in d0) in tension or compression.
+        The period is ``steps_per_cycle`` steps, or ``period`` elastic crossing times. Returns
+        the rows (iter, Dx, F/(kp d0)) recorded every ``every`` steps (default: 400 per cycle)."""
+        sign = _check_mode(mode)
+        if not amplitude > 0:
+            raise ValueError(f"amplitude = {amplitude} is invalid: must be > 0 (in units of d0)")
+        if int(n_cycles) != n_cycles or n_cycles < 1:
+            raise ValueError(f"n_cycles = {n_cycles} is invalid: a positive integer")
+        if steps_per_cycle is None:
+            if not period > 0:
+                raise ValueError(f"period = {period} is invalid: must be > 0 (crossing times)")
+            steps_per_cycle = int(round(period * self.t_cross / O.dt))
+        steps_per_cycle = max(8, 8 * (int(steps_per_cycle) // 8))
+        every = every or max(1, steps_per_cycle // 400)
+        w = 0.5 * amplitude * _tablet.D0  # each wall moves by w at the peak
+        freq = 1.0 / (steps_per_cycle * O.dt)
+        phase = -2 * math.pi * freq * O.time  # the cosine starts now
+        motion = [_w.HarmonicMotionEngine(ids=[wid], A=Vector3(a, 0, 0), f=Vector3(freq, 0, 0),
+                                          fi=Vector3(phase, 0, 0), label=f"cycle_{wid}")
+                  for wid, a in ((self.right, -0.5 * sign * w), (self.left, 0.5 * sign * w))]
+        self.steps_per_cycle = steps_per_cycle
+        self._install(motion, every, on_record)
+        self._record()
+        t0, total = time.time(), int(n_cycles) * steps_per_cycle
+        chunk = max(every, steps_per_cycle // 4 // every * every)
+        start = O.iter
+        while O.iter - start < total:
+            O.run(min(chunk, total - (O.iter - start)), True)
+            if self.progress:
+                print(f"  {mode} Dx={amplitude:g}: cycle {(O.iter - start) / steps_per_cycle:5.2f}/{n_cycles}"
+                      f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
+        for e in motion:
+            e.dead = True
+        for i in (self.left, self.right):
+            O.bodies[i].state.vel = Vector3(0, 0, 0)
+        self._record()
+        return self.rows
+
+    def pull(self, speed, until=9.0, every=100, on_record=None, stop=None):
+        """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until, or until
+        stop(test) is true. Returns the recorded rows."""
+        if not speed > 0:
+            raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
+        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed,
+                                       label=f"pull_{wid}")
+                  for wid, s in ((self.right, 1.0), (self.left, -1.0))]
+        self._install(motion, every, on_record)
+        self._record()
+        t0 = time.time()
+        chunk = 50 * every
+        while self.dx() < until and not (stop and stop(self)):
+            O.run(chunk, True)
+            if self.progress:
+                print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
+                      flush=True)
+        return self.rows
+
+
+def write_csv(path, rows, header="iter,Dx,F_over_kp_d0"):
+    with open(path, "w") as f:
+        f.write(header + "\n")
+        for r in rows:
+            f.write(",".join(repr(x) for x in r) + "\n")

@@ -1,0 +1,7 @@
+# Appendix F of the long paper (fig17): see py/mesocontact/campaign.py.
+#   yade -n -x scripts/tablet_fig17.py [--quick] [--out DIR] ...
+import sys
+
+from mesocontact import campaign
+
+campaign.main("fig17", sys.argv[1:])

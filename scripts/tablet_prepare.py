@@ -1,0 +1,7 @@
+# Appendix F of the long paper (prepare): see py/mesocontact/campaign.py.
+#   yade -n -x scripts/tablet_prepare.py [--quick] [--out DIR] ...
+import sys
+
+from mesocontact import campaign
+
+campaign.main("prepare", sys.argv[1:])
