@@ -27,11 +27,14 @@ def released_path(outdir, quick):
 
 
 def prepare(outdir, quick=False, progress=True):
-    """The released state of the campaign (reused when it exists)."""
+    """The released state of the campaign and the unconfined start of the tests (both reused
+    when they exist)."""
     os.makedirs(outdir, exist_ok=True)
     cfg = QUICK if quick else FULL
     path = released_path(outdir, quick)
     info = _tablet.released(path, progress=progress, n=cfg["n"])
+    if not os.path.exists(_uni.unconfined_path(path)):
+        info["unconfined"] = _uni.make_unconfined(path, progress=progress)["unconfined"]
     return path, info
 
 
@@ -201,7 +204,7 @@ def main(figure, argv):
     t0 = time.time()
     if figure == "prepare":
         path, info = prepare(a.out, a.quick)
-        out = {k: info[k] for k in ("packed", "sintered", "released")}
+        out = {k: info[k] for k in ("packed", "sintered", "released", "unconfined") if k in info}
     elif figure == "fig16":
         out = cyclic("tension", a.out, amps, a.quick, a.period)
     elif figure == "fig18":

@@ -172,11 +172,17 @@ def kinetic_energy():
 
 
 def stats():
-    """Solid fraction (sphere volume over the walls' inner box; overlaps counted twice), mean
+    """Solid fraction (sphere volume over the walls' inner box, or the particles' extent where
+    the walls are gone; overlaps counted twice), mean
     coordination number (particle contacts per particle, walls excluded, and with walls), wall
     stresses (compressive > 0), kinetic energy."""
     ids = set(sphere_ids())
     lo, hi = inner_box()
+    for k in range(3):  # without walls on an axis: the particles' extent
+        if lo[k] is None:
+            lo[k] = min(O.bodies[i].state.pos[k] - O.bodies[i].shape.radius for i in ids)
+        if hi[k] is None:
+            hi[k] = max(O.bodies[i].state.pos[k] + O.bodies[i].shape.radius for i in ids)
     vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
     vs = sum(4.0 / 3.0 * math.pi * O.bodies[i].shape.radius ** 3 for i in ids)
     pp = pw = 0

@@ -1,8 +1,9 @@
 """Unconfined uni-axial tension and compression of the released tablet (Appendix F; inside ``yade``).
 
-The test starts from the saved released state (``tablet.released``). The four lateral walls are
-erased with their contacts (unconfined: no lateral stress at all) and the stress controller is
-removed; the two x walls, which carry the adhesive wall material, are moved symmetrically:
+The test starts from the saved released state (``tablet.released``): the four lateral walls are
+erased with their contacts (unconfined: no lateral stress at all), the stress controller is
+removed and the sample relaxed again with the x walls held at p_r (``make_unconfined``, saved
+once). From there the two x walls, which carry the adhesive wall material, move symmetrically:
 
 - ``cycles``: cosine strain cycles to an amplitude Dx and back, L(t) = L0 -+ Dx d0 (1 - cos wt)/2,
   driven by YADE's ``HarmonicMotionEngine`` (one per wall); a cycle is a whole number of steps,
@@ -12,7 +13,9 @@ removed; the two x walls, which carry the adhesive wall material, are moved symm
 Recorded: Dx = (L - L0)/d0 (> 0 in tension) and the force on the loading walls,
 F = (f_right - f_left)/2 along x, > 0 when the sample pushes the walls (compression).
 """
+import json
 import math
+import os
 import time
 
 try:
@@ -42,20 +45,93 @@ def crossing_time():
     return (hi[0] - lo[0]) / (_tablet.D0 * math.sqrt(_tablet.KP / m))
 
 
+def unconfined_path(released_path):
+    return released_path.replace(".yade.gz", "") + "-unconfined.yade.gz"
+
+
+def _wall_stiffness(wid):
+    return sum(I.phys.kn for I in O.interactions if I.isReal and wid in (I.id1, I.id2) and I.geom.penetrationDepth > 0)
+
+
+class _Servo:
+    """Holds the two x walls at the force target: each step a wall moves by a fraction of
+    (force error)/(stiffness of its contacts), as YADE's TriaxialStressController does."""
+
+    def __init__(self, left, right, target, gain=0.5, v_max=0.01):
+        self.left, self.right, self.target, self.gain, self.v_max = left, right, target, gain, v_max
+        self.k = {}
+
+    def __call__(self):
+        if O.iter % 100 == 0 or not self.k:
+            self.k = {w: max(_wall_stiffness(w), _tablet.KP) for w in (self.left, self.right)}
+        for wid, outward in ((self.right, 1.0), (self.left, -1.0)):
+            push = outward * O.forces.f(wid)[0]  # > 0: the sample pushes the wall out
+            v = self.gain * (push - self.target) / (self.k[wid] * O.dt)
+            O.bodies[wid].state.vel = Vector3(outward * max(-self.v_max, min(self.v_max, v)), 0, 0)
+
+
+def make_unconfined(released_path, progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000):
+    """The common start of the uni-axial tests, saved next to the released state: the four
+    lateral walls erased with their contacts (no lateral stress), the stress controller
+    removed, and the sample relaxed again with the two x walls held at the release stress p_r
+    (the lateral walls' adhesive contacts had held it), until the wall force is within
+    tol_force kp d0 of p_r L_y L_z and the kinetic energy below tol_ke of the energy scale."""
+    info = _tablet.released(released_path, progress=progress)
+    walls = _tablet.wall_ids()
+    lo, hi = _tablet.inner_box()
+    area = (hi[1] - lo[1]) * (hi[2] - lo[2])
+    for name in ("bottom", "top", "back", "front"):
+        if name in walls:
+            O.bodies.erase(walls[name])
+    O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
+    target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
+    servo = _Servo(walls["left"], walls["right"], target)
+    import builtins
+    builtins._mesocontact_servo = servo
+    O.engines = O.engines[:-1] + [_w.PyRunner(iterPeriod=1, command="_mesocontact_servo()", label="servo")] + O.engines[-1:]
+    e_ref = _tablet.energy_scale(len(_tablet.sphere_ids()))
+    scale = _tablet.KP * _tablet.D0
+    t0, start, ok = time.time(), O.iter, 0
+    while True:
+        O.run(2000, True)
+        err = max(abs(s * O.forces.f(w)[0] - target) for w, s in ((walls["right"], 1), (walls["left"], -1))) / scale
+        ke = _tablet.kinetic_energy() / e_ref
+        if progress:
+            print(f"  unconfined relaxation: step {O.iter - start:6d}  |F - p_r A|/(kp d0) = {err:.2e}  "
+                  f"E_kin/E_ref = {ke:.2e}  ({time.time() - t0:.0f} s)", flush=True)
+        ok = ok + 1 if (err < tol_force and ke < tol_ke) else 0
+        if ok == 2:
+            break
+        if O.iter - start > max_steps:
+            raise RuntimeError(f"unconfined relaxation: not static after {max_steps} steps")
+    O.engines = [e for e in O.engines if e.label != "servo"]
+    for w in (walls["left"], walls["right"]):
+        O.bodies[w].state.vel = Vector3(0, 0, 0)
+    info["unconfined"] = {"steps": O.iter - start, "force_error": err, "kinetic_energy_ratio": ke,
+                          "target_force": target, "stats": _tablet.stats()}
+    path = unconfined_path(released_path)
+    O.save(path)
+    with open(path + ".json", "w") as f:
+        json.dump(info, f, indent=1)
+    return info
+
+
 class Test:
-    """The released tablet set up for an unconfined uni-axial test (loads ``path``)."""
+    """The released tablet set up for an unconfined uni-axial test: loads the unconfined start
+    made from the released state at ``path`` (made and saved once by make_unconfined)."""
 
     def __init__(self, path, progress=True):
-        self.info = _tablet.released(path, progress=progress)
+        start = unconfined_path(path)
+        if os.path.exists(start) and os.path.exists(start + ".json"):
+            O.load(start)
+            with open(start + ".json") as f:
+                self.info = json.load(f)
+        else:
+            self.info = make_unconfined(path, progress=progress)
         self.progress = progress
         walls = _tablet.wall_ids()
-        for name in ("bottom", "top", "back", "front"):
-            if name in walls:
-                O.bodies.erase(walls[name])
         self.left, self.right = walls["left"], walls["right"]
-        O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
-        for i in (self.left, self.right):
-            O.bodies[i].state.vel = Vector3(0, 0, 0)
+        O.step()  # forces are not saved: one step with the walls at rest restores them
         self.L0 = self.length()
         self.t_cross = crossing_time()
         self.rows = []  # (iter, Dx, F/(kp d0))

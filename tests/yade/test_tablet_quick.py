@@ -47,9 +47,13 @@ for stage, goal in (("sintered", tablet.SINTER_STRESS), ("released", tablet.RELE
 print(f"     sintered: solid fraction {info['sintered']['solid_fraction']:.3f}, Z {info['sintered']['coordination']:.2f}; "
       f"released: {info['released']['solid_fraction']:.3f}, Z {info['released']['coordination']:.2f}")
 check(abs(info["released"]["wall_stress"]["left"] - 0.01) < 1e-3, "release goal is d0 p_r/kp = 2e-5")
+u = info["unconfined"]
+check(u["force_error"] < 1e-4 and u["kinetic_energy_ratio"] < 1e-4,
+      f"unconfined start: wall force at p_r A to {u['force_error']:.1e} kp d0, at rest ({u['kinetic_energy_ratio']:.1e})")
 
 # 3. The unconfined test: two walls left, with the adhesive wall law imposed on their contacts.
 test = uniaxial.Test(path, progress=False)
+check(abs(test.force() - u["target_force"] / (tablet.KP * tablet.D0)) < 1e-4, f"test starts at rest: F/(kp d0) = {test.force():.2e}")
 check(len(tablet.wall_ids()) == 2 and set(tablet.wall_ids()) == {"left", "right"}, "lateral walls removed")
 wall_contacts = [I for I in O.interactions if I.isReal and test.left in (I.id1, I.id2)]
 check(len(wall_contacts) > 0 and all(abs(I.phys.kc - 20 * tablet.KP) < 1e-12 and abs(I.phys.muS - 10) < 1e-12
