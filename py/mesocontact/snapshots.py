@@ -47,11 +47,16 @@ def png(path, title="", xlim=None, zlim=None):
     depth = (y - y.min()) / max(y.max() - y.min(), 1e-300)
     order = np.argsort(-y)  # far first, near drawn on top
     fig, ax = plt.subplots(figsize=(6, 4.5))
+    from matplotlib.patches import Rectangle
+    for i in _tablet.wall_ids().values():  # the walls' faces, grey, behind the particles
+        b = O.bodies[i]
+        c, e = b.state.pos, b.shape.extents
+        ax.add_patch(Rectangle((c[0] - e[0], c[2] - e[2]), 2 * e[0], 2 * e[2], color="0.8", zorder=0))
     circles = [Circle((pos[i, 0], pos[i, 2]), rad[i]) for i in order]
     col = PatchCollection(circles, facecolors=depth_colours(depth[order]), edgecolors="k", linewidths=0.15)
     ax.add_collection(col)
     ax.set_aspect("equal")
-    ax.set_xlim(xlim or (pos[:, 0].min() - _tablet.D0, pos[:, 0].max() + _tablet.D0))
+    ax.set_xlim(xlim or (pos[:, 0].min() - 2 * _tablet.D0, pos[:, 0].max() + 2 * _tablet.D0))
     ax.set_ylim(zlim or (pos[:, 2].min() - _tablet.D0, pos[:, 2].max() + _tablet.D0))
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("z [mm]")
