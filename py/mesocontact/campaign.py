@@ -43,10 +43,11 @@ def _run_name(mode, amplitude, slow):
 
 
 def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, progress=True,
-           snapshot_amplitude=None):
+           snapshot_amplitude=None, figure=None):
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude, fast and slow.
     With snapshot_amplitude, the fast run of that amplitude also writes PNG and VTK snapshots
-    at the start, at every peak and at every return (Fig. 19)."""
+    at the start, at every peak and at every return (Fig. 19). figure: the name of the JSON
+    and PNG written (default fig16 for tension, fig18 for compression)."""
     _uni._check_mode(mode)
     cfg = QUICK if quick else FULL
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
@@ -73,7 +74,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
             if progress:
                 print(f"{name}: {time.time() - t0:.0f} s", flush=True)
     summary["wall_clock_s"] = time.time() - t_all
-    fig = "fig16" if mode == "tension" else "fig18"
+    fig = figure or ("fig16" if mode == "tension" else "fig18")
     if quick:
         fig += "-quick"
     with open(os.path.join(outdir, fig + ".json"), "w") as f:
@@ -211,7 +212,7 @@ def main(figure, argv):
         out = cyclic("compression", a.out, amps, a.quick, a.period)
     elif figure == "fig19":
         amp = (amps or (0.3,))[-1]
-        out = cyclic("compression", a.out, (amp,), a.quick, a.period, slow=1.0, snapshot_amplitude=amp)
+        out = cyclic("compression", a.out, (amp,), a.quick, a.period, slow=1.0, snapshot_amplitude=amp, figure="fig19")
     elif figure == "fig17":
         out = pull(a.out, a.quick, speed=a.speed)
     else:
