@@ -38,8 +38,8 @@ def prepare(outdir, quick=False, progress=True):
     return path, info
 
 
-def _run_name(mode, amplitude, slow):
-    return f"{mode}-Dx{amplitude:g}-{'slow' if slow else 'fast'}"
+def _run_name(mode, amplitude, slow, prefix=""):
+    return f"{prefix}{mode}-Dx{amplitude:g}-{'slow' if slow else 'fast'}"
 
 
 def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, progress=True,
@@ -47,7 +47,9 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude, fast and slow.
     With snapshot_amplitude, the fast run of that amplitude also writes PNG and VTK snapshots
     at the start, at every peak and at every return (Fig. 19). figure: the name of the JSON
-    and PNG written (default fig16 for tension, fig18 for compression)."""
+    and PNG written (default fig16 for tension, fig18 for compression), and the prefix of its
+    CSV files when given. slow = 1 or None: the fast runs only."""
+    prefix = f"{figure}-" if figure else ""
     _uni._check_mode(mode)
     cfg = QUICK if quick else FULL
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
@@ -56,8 +58,8 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
                "cycles": cfg["cycles"], "runs": {}}
     t_all = time.time()
     for amplitude in amplitudes:
-        for is_slow in ((False,) if quick else (False, True)):
-            name = _run_name(mode, amplitude, is_slow)
+        for is_slow in ((False,) if quick or not slow or slow == 1 else (False, True)):
+            name = _run_name(mode, amplitude, is_slow, prefix)
             t0 = time.time()
             test = _uni.Test(path, progress=progress)
             hook = None
@@ -77,9 +79,18 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
     fig = figure or ("fig16" if mode == "tension" else "fig18")
     if quick:
         fig += "-quick"
-    with open(os.path.join(outdir, fig + ".json"), "w") as f:
+    # A figure re-run for some amplitudes keeps the runs of the others.
+    js = os.path.join(outdir, fig + ".json")
+    if os.path.exists(js):
+        with open(js) as f:
+            old = json.load(f)
+        if old.get("period_crossings") == period and old.get("cycles") == cfg["cycles"]:
+            summary["runs"] = dict(old.get("runs", {}), **summary["runs"])
+            summary["wall_clock_s"] += old.get("wall_clock_s", 0)
+    with open(js, "w") as f:
         json.dump(summary, f, indent=1)
-    plot_cycles(outdir, mode, amplitudes, os.path.join(outdir, fig + ".png"), quick)
+    shown = sorted({r["amplitude"] for r in summary["runs"].values()})
+    plot_cycles(outdir, mode, shown, os.path.join(outdir, fig + ".png"), quick, prefix)
     return summary
 
 
@@ -107,7 +118,7 @@ def _cycle_snapshots(outdir, mode, amplitude, test):
     return hook
 
 
-def plot_cycles(outdir, mode, amplitudes, png, quick=False):
+def plot_cycles(outdir, mode, amplitudes, png, quick=False, prefix=""):
     """Force-displacement cycles, compressive displacement (L0 - L)/d0 and force > 0 (tension
     on the negative axes); thin: fast, thick: four times slower."""
     import matplotlib
@@ -118,7 +129,7 @@ def plot_cycles(outdir, mode, amplitudes, png, quick=False):
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for k, amplitude in enumerate(amplitudes):
         for is_slow in (False, True):
-            f = os.path.join(outdir, _run_name(mode, amplitude, is_slow) + ".csv")
+            f = os.path.join(outdir, _run_name(mode, amplitude, is_slow, prefix) + ".csv")
             if not os.path.exists(f):
                 continue
             d = np.loadtxt(f, delimiter=",", skiprows=1, ndmin=2)
