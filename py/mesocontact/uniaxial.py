@@ -155,7 +155,7 @@ class Test:
         self._motion = motion
         self._on_record = on_record
         recorder = _w.PyRunner(iterPeriod=every, command="_mesocontact_uniaxial_record()", label="recorder")
-        import builtins
+        import builtins  # PyRunner runs its command in yade's __main__: builtins reach it from any namespace
         builtins._mesocontact_uniaxial_record = self._record
         O.engines = [e for e in O.engines if e.label != "recorder"][:-1] + motion + [recorder] + O.engines[-1:]
 
