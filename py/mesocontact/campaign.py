@@ -11,6 +11,8 @@ import json
 import os
 import time
 
+from yade import O
+
 from . import snapshots as _snap
 from . import tablet as _tablet
 from . import uniaxial as _uni
@@ -20,6 +22,7 @@ QUICK = dict(n=216, cycles=1)
 TENSION_AMPLITUDES = (0.025, 0.05, 0.1, 0.2, 0.3)
 COMPRESSION_AMPLITUDES = (0.05, 0.1, 0.2, 0.3)
 FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
+GAP_AREA = 0.5  # a see-through hole this large [d0^2] counts as the first visible gap
 
 
 def released_path(outdir, quick):
@@ -70,7 +73,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
             _uni.write_csv(os.path.join(outdir, name + ".csv"), rows)
             summary["runs"][name] = {
                 "amplitude": amplitude, "slow": is_slow, "steps_per_cycle": test.steps_per_cycle,
-                "dt": _dt(), "t_cross": test.t_cross, "L0": test.L0, "final_Dx": rows[-1][1],
+                "dt": O.dt, "t_cross": test.t_cross, "L0": test.L0, "final_Dx": rows[-1][1],
                 "max_abs_Dx": max(abs(r[1]) for r in rows), "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
                 "wall_clock_s": time.time() - t0}
             if progress:
@@ -92,11 +95,6 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
     shown = sorted({r["amplitude"] for r in summary["runs"].values()})
     plot_cycles(outdir, mode, shown, os.path.join(outdir, fig + ".png"), quick, prefix)
     return summary
-
-
-def _dt():
-    from yade import O
-    return O.dt
 
 
 def _cycle_snapshots(outdir, mode, amplitude, test):
@@ -166,7 +164,7 @@ def pull(outdir, quick=False, speed=0.0075, until=9.0, progress=True, dx_marks=F
             _snap.vtk(os.path.join(outdir, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         if len(t.rows) % check_every == 0:
-            if events["first_gap_Dx"] is None and _snap.see_through_holes() > 0.5:
+            if events["first_gap_Dx"] is None and _snap.see_through_holes() > GAP_AREA:
                 events["first_gap_Dx"] = dx
             if events["last_contact_Dx"] is None and not _snap.walls_connected(t.left, t.right):
                 events["last_contact_Dx"] = dx

@@ -41,13 +41,12 @@ def png(path, title="", xlim=None, zlim=None):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.collections import PatchCollection
-    from matplotlib.patches import Circle
+    from matplotlib.patches import Circle, Rectangle
     _, pos, rad = _spheres()
     y = pos[:, 1]
     depth = (y - y.min()) / max(y.max() - y.min(), 1e-300)
     order = np.argsort(-y)  # far first, near drawn on top
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    from matplotlib.patches import Rectangle
     for i in _tablet.wall_ids().values():  # the walls' faces, grey, behind the particles
         b = O.bodies[i]
         c, e = b.state.pos, b.shape.extents

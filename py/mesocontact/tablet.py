@@ -258,7 +258,7 @@ def _set_packing_law(packing):
         I.phys = None
 
 
-def prepare(path, n=1728, rel_std=0.05, seed=1, threads=None, tol_stress=0.01, tol_ke=1e-4,
+def prepare(path, n=1728, rel_std=0.05, seed=1, tol_stress=0.01, tol_ke=1e-4,
             max_steps=400000, progress=True):
     """Builds, pressure-sinters at d0 p_s/kp = 0.02 and releases to p_r/p_s = 1e-3 a tablet of n
     particles, saves the released state to ``path`` (O.save) and its description to

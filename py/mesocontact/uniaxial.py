@@ -49,6 +49,20 @@ def unconfined_path(released_path):
     return released_path.replace(".yade.gz", "") + "-unconfined.yade.gz"
 
 
+def _py_runner(fn, period, label):
+    """A PyRunner calling fn every ``period`` steps. PyRunner runs its command in yade's
+    __main__; the callable is reached there through builtins."""
+    import builtins
+    name = f"_mesocontact_{label}"
+    setattr(builtins, name, fn)
+    return _w.PyRunner(iterPeriod=period, command=f"{name}()", label=label)
+
+
+def _before_newton(extra):
+    """O.engines with ``extra`` inserted before NewtonIntegrator (the last engine)."""
+    O.engines = O.engines[:-1] + list(extra) + O.engines[-1:]
+
+
 def _wall_stiffness(wid):
     return sum(I.phys.kn for I in O.interactions if I.isReal and wid in (I.id1, I.id2) and I.geom.penetrationDepth > 0)
 
@@ -85,10 +99,7 @@ def make_unconfined(released_path, progress=True, tol_force=1e-4, tol_ke=1e-4, m
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
-    servo = _Servo(walls["left"], walls["right"], target)
-    import builtins
-    builtins._mesocontact_servo = servo
-    O.engines = O.engines[:-1] + [_w.PyRunner(iterPeriod=1, command="_mesocontact_servo()", label="servo")] + O.engines[-1:]
+    _before_newton([_py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
     e_ref = _tablet.energy_scale(len(_tablet.sphere_ids()))
     scale = _tablet.KP * _tablet.D0
     t0, start, ok = time.time(), O.iter, 0
@@ -150,14 +161,12 @@ class Test:
         return f / (_tablet.KP * _tablet.D0)
 
     def _install(self, motion, every, on_record):
-        for e in self._motion:
-            O.engines = [x for x in O.engines if x is not e]
+        """Replaces the previous motion engines and recorder by these."""
+        old = {id(e) for e in self._motion}
+        O.engines = [e for e in O.engines if id(e) not in old and e.label != "recorder"]
         self._motion = motion
         self._on_record = on_record
-        recorder = _w.PyRunner(iterPeriod=every, command="_mesocontact_uniaxial_record()", label="recorder")
-        import builtins  # PyRunner runs its command in yade's __main__: builtins reach it from any namespace
-        builtins._mesocontact_uniaxial_record = self._record
-        O.engines = [e for e in O.engines if e.label != "recorder"][:-1] + motion + [recorder] + O.engines[-1:]
+        _before_newton(motion + [_py_runner(self._record, every, "recorder")])
 
     def _record(self):
         row = (O.iter, self.dx(), self.force())
@@ -205,9 +214,9 @@ class Test:
         self._record()
         return self.rows
 
-    def pull(self, speed, until=9.0, every=100, on_record=None, stop=None):
-        """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until, or until
-        stop(test) is true. Returns the recorded rows."""
+    def pull(self, speed, until=9.0, every=100, on_record=None):
+        """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until. Returns
+        the recorded rows."""
         if not speed > 0:
             raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
         motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed,
@@ -217,7 +226,7 @@ class Test:
         self._record()
         t0 = time.time()
         chunk = 50 * every
-        while self.dx() < until and not (stop and stop(self)):
+        while self.dx() < until:
             O.run(chunk, True)
             if self.progress:
                 print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
