@@ -82,21 +82,22 @@ void validate(const MaterialParams& m)
 
 double harmonicMean(double x, double y) { return (x == 0 || y == 0) ? 0.0 : 2 * x * y / (x + y); }
 
-void deriveGeometry(PairParams& p, double a12)
+PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)
 {
-	p.a12     = a12;
-	p.delta0P = p.phiF * a12;
+	PairGeometry g;
+	g.radius1 = radius1;
+	g.radius2 = radius2;
 	if (p.kp > p.k1) {
-		p.deltaMaxP    = p.kp / (p.kp - p.k1) * p.delta0P;
-		p.invDeltaMaxP = 1.0 / p.deltaMaxP;
+		g.deltaMaxP    = p.kp / (p.kp - p.k1) * p.phiF * g.a12();
+		g.invDeltaMaxP = 1.0 / g.deltaMaxP;
 	} else { // purely elastic: the limit branch is never reached
-		p.deltaMaxP    = std::numeric_limits<double>::infinity();
-		p.invDeltaMaxP = 0;
+		g.deltaMaxP    = std::numeric_limits<double>::infinity();
+		g.invDeltaMaxP = 0;
 	}
-	p.deltaA = (p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0;
+	return g;
 }
 
-PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2, double a12)
+PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)
 {
 	const bool            one = mat1.dominant && !mat2.dominant, two = mat2.dominant && !mat1.dominant;
 	const MaterialParams& m1  = two ? mat2 : mat1;
@@ -127,7 +128,8 @@ PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2, doubl
 	p.sliding  = element(m1.kt, m2.kt, m1.gammaT, m2.gammaT, m1.muS, m2.muS);
 	p.rolling  = element(m1.kr, m2.kr, m1.gammaR, m2.gammaR, m1.muR, m2.muR);
 	p.twisting = element(m1.ko, m2.ko, m1.gammaO, m2.gammaO, m1.muO, m2.muO);
-	deriveGeometry(p, a12);
+	p.deltaA        = (p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0;
+	p.delta0PerMaxP = p.kp > p.k1 ? 1 - p.k1 / p.kp : 0.0;
 	return p;
 }
 

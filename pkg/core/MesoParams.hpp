@@ -60,34 +60,44 @@ void validate(const MaterialParams& m);
 // Harmonic mean 2xy/(x+y) (0 if either is 0): reduces to x for equal materials.
 double harmonicMean(double x, double y);
 
-// The parameters of one pair (MODEL.md §8) with the geometric constants derived from a12.
+// The parameters of one material pair (MODEL.md §8): the same for every contact of that pair,
+// so YADE contacts share one copy (a contact's memory is what bulk runs pay for, per step).
 struct PairParams {
-	// Hot: what Law2::go() reads every step, flags first (one cache line for the normal law).
+	// Hot: what Law2::go() reads every step, flags first.
 	bool            tangential      = false; // any tangential mechanism acts
 	bool            rollTwist       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
 	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
-	double          deltaMaxP    = 0; // limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]
-	double          invDeltaMaxP = 0; // 1/deltaMaxP (0 if kp == k1) [1/m]
-	double          delta0P      = 0; // plastic overlap on the limit branch phiF a12 (Eq. 11) [m]
-	double          deltaA       = 0; // range of the non-contact force -fa/kca (<= 0) [m]
+	double          deltaA          = 0; // range of the non-contact force -fa/kca (<= 0) [m]
+	double          delta0PerMaxP   = 0; // delta0P/deltaMaxP = 1 - k1/kp (Eqs. 10, 11) [-]
 	ElementParams   sliding, rolling, twisting; // Luding 2008 tangential elements
-	double          radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
-	double          leverFactor = 1;          // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
-	// Cold: kept for the user.
+	double          leverFactor = 1; // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
+	// Cold: kept for the user and to derive the geometry.
 	double phiF = 0; // plasticity depth [-]
-	double a12  = 0; // reduced radius 2 a1 a2/(a1+a2); 2 a against a wall [m]
+};
+
+// What one contact adds to its pair's parameters: the radii and the limit overlap, which scales with a12.
+struct PairGeometry {
+	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
+	double deltaMaxP    = 0;         // limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]
+	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]
+	double a12() const { return reducedRadius(radius1, radius2); }
+	// Plastic overlap on the limit branch phiF a12 (Eq. 11) [m].
+	double delta0P(const PairParams& p) const { return p.phiF * a12(); }
+	// Reduced radius 2 a1 a2/(a1+a2) of two spheres; against a wall, box or facet (radius 0) 2 a.
+	static double reducedRadius(double r1, double r2) { return (r1 > 0 && r2 > 0) ? 2 * r1 * r2 / (r1 + r2) : 2 * (r1 > 0 ? r1 : r2); }
 };
 
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;
 // friction coefficients by the smaller one (as YADE's Ip2_FrictMat_FrictMat_FrictPhys); phiD by the smaller;
 // adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation
 // only when both ask for it. Equal materials give their own values. When exactly one of the two is
-// dominant, the pair takes that material's parameters unmixed.
-PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2, double a12);
+// dominant, the pair takes that material's parameters unmixed. The flags tangential and rollTwist
+// and the leverFactor are left to the caller.
+PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2);
 
-// Fills the derived constants of p from its parameters and a12.
-void deriveGeometry(PairParams& p, double a12);
+// The geometry of one contact of pair p between spheres of radii r1 and r2 (0: wall, box or facet).
+PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2);
 
 } // namespace meso

@@ -23,28 +23,28 @@ struct NormalForce {
 };
 
 // k2 and delta0 of the un-/re-loading line that belongs to deltaMax (Eqs. 7, 9, 10, D.1).
-MESO_HOT void setUnloadingLine(const PairParams& p, NormalHistory& h, double deltaMax)
+MESO_HOT void setUnloadingLine(const PairParams& p, const PairGeometry& g, NormalHistory& h, double deltaMax)
 {
 	h.deltaMax = deltaMax;
-	if (deltaMax >= p.deltaMaxP) {
+	if (deltaMax >= g.deltaMaxP) {
 		h.k2     = p.kp;
-		h.delta0 = p.delta0P;
+		h.delta0 = p.delta0PerMaxP * g.deltaMaxP; // phiF a12 (Eq. 11), continuous with the line below at deltaMaxP
 		return;
 	}
-	const double x = deltaMax * p.invDeltaMaxP; // in [0, 1)
+	const double x = deltaMax * g.invDeltaMaxP; // in [0, 1)
 	h.k2           = p.k1 + (p.kp - p.k1) * (p.k2Interpolation == K2Interpolation::Sqrt ? std::sqrt(x) : x);
 	h.delta0       = (1 - p.k1 / h.k2) * deltaMax;
 }
 
 // The deltaMax whose k2 line passes through (delta, -kc delta) on the tensile branch: the root of
 // (k2(dm) - k1) dm = (k2(dm) + kc) delta, solved in closed form (no lagged k2).
-inline double deltaMaxThrough(const PairParams& p, double delta)
+inline double deltaMaxThrough(const PairParams& p, const PairGeometry& g, double delta)
 {
-	const double x = delta * p.invDeltaMaxP;
+	const double x = delta * g.invDeltaMaxP;
 	const double q = (p.k1 + p.kc) / (p.kp - p.k1); // (1 + beta)/eta
 	if (p.k2Interpolation == K2Interpolation::Linear) {
 		// c dm^2 - c delta dm - (k1 + kc) delta = 0 with c = (kp - k1)/deltaMaxP, in units of deltaMaxP
-		return p.deltaMaxP * (0.5 * x + std::sqrt(0.25 * x * x + q * x));
+		return g.deltaMaxP * (0.5 * x + std::sqrt(0.25 * x * x + q * x));
 	}
 	// k2 = k1 (1 + eta s), dm = deltaMaxP s^2:  s^3 - x s - q x = 0, one positive root
 	const double P = -x, Q = -q * x;
@@ -57,11 +57,11 @@ inline double deltaMaxThrough(const PairParams& p, double delta)
 		s = 2 * std::sqrt(-P / 3) * std::cos(std::acos(1.5 * Q / P * std::sqrt(-3 / P)) / 3);
 	}
 	s -= (s * s * s + P * s + Q) / (3 * s * s + P); // one Newton step polishes rounding
-	return p.deltaMaxP * s * s;
+	return g.deltaMaxP * s * s;
 }
 
 // Hysteretic contact force at overlap delta; updates the history first (MODEL.md §3 order).
-MESO_HOT double hystereticForce(const PairParams& p, NormalHistory& h, double delta)
+MESO_HOT double hystereticForce(const PairParams& p, const PairGeometry& g, NormalHistory& h, double delta)
 {
 	if (delta <= 0) { // mechanical contact over: the next one starts new
 		h.deltaMax = 0;
@@ -69,11 +69,11 @@ MESO_HOT double hystereticForce(const PairParams& p, NormalHistory& h, double de
 		h.delta0   = 0;
 		return 0;
 	}
-	if (delta > h.deltaMax) setUnloadingLine(p, h, delta); // the k2 line meets k1 delta (or the kp branch) here
+	if (delta > h.deltaMax) setUnloadingLine(p, g, h, delta); // the k2 line meets k1 delta (or the kp branch) here
 	const double f    = h.k2 * (delta - h.delta0);
 	const double fMin = -p.kc * delta;
 	if (f >= fMin) return f;
-	setUnloadingLine(p, h, deltaMaxThrough(p, delta)); // moving along -kc changes the history
+	setUnloadingLine(p, g, h, deltaMaxThrough(p, g, delta)); // moving along -kc changes the history
 	return fMin;
 }
 
@@ -91,10 +91,10 @@ MESO_HOT double adhesiveForce(const PairParams& p, NormalHistory& h, double delt
 }
 
 // All parts of the normal force; vn = d(delta)/dt, > 0 while approaching [m/s].
-MESO_HOT NormalForce normalForce(const PairParams& p, NormalHistory& h, double delta, double vn)
+MESO_HOT NormalForce normalForce(const PairParams& p, const PairGeometry& g, NormalHistory& h, double delta, double vn)
 {
 	NormalForce f;
-	f.hysteretic = hystereticForce(p, h, delta);
+	f.hysteretic = hystereticForce(p, g, h, delta);
 	f.adhesive   = adhesiveForce(p, h, delta);
 	f.viscous    = delta > 0 ? p.gammaN * vn : 0.0;
 	return f;
@@ -109,11 +109,6 @@ inline double storedElastic(const NormalHistory& h, double fHysteretic) { return
 // Energy bookkeeping of one contact consistent with YADE's leapfrog integrator, whose kinetic
 // energy at step n uses the velocity of step n-1/2: the work absorbed by the contact up to that
 // time is the trapezoidal sum up to step n minus f_n (delta_n - delta_{n-1})/2.
-struct NormalEnergyState {
-	double prevDelta   = 0; // overlap of the previous step [m]
-	double prevElastic = 0; // stored elastic energy of the previous step [J]
-};
-
 struct NormalEnergyStep {
 	double elastic = 0;    // stored elastic energy, half-step consistent (reset every step) [J]
 	double plastic = 0;    // increment of hysteretic dissipation [J]
@@ -121,18 +116,20 @@ struct NormalEnergyStep {
 	double viscous = 0;    // increment of viscous dissipation [J]
 };
 
-// prev: the force parts of the previous step (zero before the first one); f: this step's.
-inline NormalEnergyStep energyStep(NormalEnergyState& s, const NormalHistory& h, const NormalForce& prev, const NormalForce& f, double delta)
+// prev, prevDelta, prevElastic: the force parts, overlap and storedElastic() of the previous step
+// (zero force before the first one); f, delta: this step's, h after this step's update. The previous
+// stored energy is not kept: it is storedElastic() of the previous force and history, which the
+// caller evaluates before the update.
+inline NormalEnergyStep energyStep(double prevDelta, double prevElastic, const NormalHistory& h, const NormalForce& prev, const NormalForce& f,
+                                   double delta)
 {
-	const double     dd      = delta - s.prevDelta;
+	const double     dd      = delta - prevDelta;
 	const double     elastic = storedElastic(h, f.hysteretic);
 	NormalEnergyStep e;
-	e.plastic       = 0.5 * (prev.hysteretic + f.hysteretic) * dd - (elastic - s.prevElastic);
-	e.adhesive      = 0.5 * (prev.adhesive + f.adhesive) * dd;
-	e.viscous       = 0.5 * (prev.viscous + f.viscous) * dd;
-	e.elastic       = elastic - 0.5 * f.total() * dd;
-	s.prevDelta     = delta;
-	s.prevElastic   = elastic;
+	e.plastic  = 0.5 * (prev.hysteretic + f.hysteretic) * dd - (elastic - prevElastic);
+	e.adhesive = 0.5 * (prev.adhesive + f.adhesive) * dd;
+	e.viscous  = 0.5 * (prev.viscous + f.viscous) * dd;
+	e.elastic  = elastic - 0.5 * f.total() * dd;
 	return e;
 }
 

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include "MesoParams.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace meso {
@@ -97,6 +98,20 @@ struct ContactRotation {
 
 inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
+// Arms from the centres to the contact point (a - delta/2 for a sphere, 0 for a wall, box or
+// facet) and the lever arm a'_12 of rolling and torsion (LUDING2008.md).
+struct ContactArms {
+	double arm1 = 0, arm2 = 0, lever = 0;
+};
+MESO_HOT ContactArms contactArms(const PairParams& p, const PairGeometry& g, double delta)
+{
+	ContactArms c;
+	c.arm1  = g.radius1 > 0 ? g.radius1 - 0.5 * delta : 0;
+	c.arm2  = g.radius2 > 0 ? g.radius2 - 0.5 * delta : 0;
+	c.lever = p.leverFactor * (g.radius1 > 0 && g.radius2 > 0 ? c.arm1 * c.arm2 / (c.arm1 + c.arm2) : std::max(c.arm1, c.arm2));
+	return c;
+}
+
 // Relative velocities at a contact of body 1 with body 2; n points from 1 to 2 (YADE's normal).
 struct ContactVelocities {
 	Vec3   sliding; // v_t: tangential velocity of 1 relative to 2 at the contact point [m/s]
@@ -134,12 +149,12 @@ inline double springEnergy(const ElementParams& p, const Vec3& xi) { return 0.5 
 inline double springEnergy(const ElementParams& p, double xi) { return 0.5 * p.k * xi * xi; }
 
 // What a contact remembers of its tangential mechanisms; forces are those of the last step,
-// acting on body 1 (body 2 gets the opposite).
+// acting on body 1 (body 2 gets the opposite). The sliding force is not here: YADE keeps it as
+// the IPhys's shearForce, and a copy would only cost memory.
 struct TangentialState {
 	Vec3   xiT   = Vec3::Zero(); // sliding spring [m]
 	Vec3   xiR   = Vec3::Zero(); // rolling spring [m]
 	double xiO   = 0;            // torsion spring, along n [m]
-	Vec3   fT    = Vec3::Zero(); // sliding force on body 1 [N]
 	Vec3   fR    = Vec3::Zero(); // rolling quasi-force [N]
 	double fO    = 0;            // torsion quasi-force, along n [N]
 	Vec3   nPrev = Vec3::Zero(); // normal of the previous step (zero: none yet)
@@ -155,8 +170,9 @@ struct TangentialEnergy {
 
 // One step of all tangential mechanisms of a contact in mechanical contact. rollTwist: rolling
 // and torsion act (ScGeom6D). level: f_n + kc delta (clamped at 0 here). energy may be null.
-inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState& s, const ContactVelocities& v, const Vec3& n, double spinAngle,
-                           double dt, double level, TangentialEnergy* energy)
+// fT: the sliding force on body 1, the last step's on entry, this step's on return.
+inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState& s, Vec3& fT, const ContactVelocities& v, const Vec3& n,
+                           double spinAngle, double dt, double level, TangentialEnergy* energy)
 {
 	if (level < 0) level = 0;
 	if (s.nPrev.squaredNorm() > 0) {
@@ -164,12 +180,12 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 		if (p.sliding.active()) rot.apply(s.xiT);
 		if (rollTwist && p.rolling.active()) rot.apply(s.xiR);
 		if (energy) { // the previous forces serve only the energy bookkeeping
-			rot.apply(s.fT);
+			rot.apply(fT);
 			rot.apply(s.fR);
 		}
 	}
 	s.nPrev = n;
-	const Vec3   prevT = s.fT, prevR = s.fR;
+	const Vec3   prevT = fT, prevR = s.fR;
 	const double prevO = s.fO;
 	double       uT0 = 0, uR0 = 0, uO0 = 0;
 	if (energy) {
@@ -177,27 +193,28 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 		uR0 = springEnergy(p.rolling, s.xiR);
 		uO0 = springEnergy(p.twisting, s.xiO);
 	}
-	if (p.sliding.active()) s.fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
+	if (p.sliding.active()) fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
 	if (rollTwist && p.rolling.active()) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
 	if (rollTwist && p.twisting.active()) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level, s.slidingO).force;
 	if (!energy) return;
 	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.twisting, s.xiO);
-	energy->sliding  = absorbedWork(prevT, s.fT, v.sliding, dt) - (uT - uT0);
+	energy->sliding  = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
 	energy->rolling  = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
 	energy->twisting = absorbedWork(prevO, s.fO, v.twist, dt) - (uO - uO0);
-	energy->stored   = uT + uR + uO + 0.5 * dt * (s.fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.twist);
+	energy->stored   = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.twist);
 }
 
 // The step at which the contact ends (delta <= 0): forces vanish; what the springs held is lost.
-inline void tangentialRelease(const PairParams& p, TangentialState& s, const ContactVelocities& v, double dt, TangentialEnergy* energy)
+inline void tangentialRelease(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, double dt, TangentialEnergy* energy)
 {
 	if (energy) {
-		energy->sliding  = absorbedWork(s.fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
+		energy->sliding  = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
 		energy->rolling  = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
 		energy->twisting = absorbedWork(s.fO, 0.0, v.twist, dt) + springEnergy(p.twisting, s.xiO);
 		energy->stored   = 0;
 	}
 	s.reset();
+	fT = Vec3::Zero();
 }
 
 } // namespace meso

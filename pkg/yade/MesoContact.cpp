@@ -8,7 +8,7 @@
 
 namespace yade {
 
-YADE_PLUGIN((MesoMat)(MesoPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPhys_Meso));
+YADE_PLUGIN((MesoMat)(MesoPairParams)(MesoPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPhys_Meso));
 
 /* MesoMat */
 
@@ -50,6 +50,7 @@ void MesoMat::postLoad(MesoMat&)
 		meso::MaterialParams m = parse();
 		meso::validate(m);
 		valid                = m;
+		++revisionCount;
 		validAdhesion        = adhesion;
 		validK2Interpolation = k2Interpolation;
 	} catch (const std::invalid_argument&) { // keep the material valid: undo the assignment, then report it
@@ -88,6 +89,10 @@ void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict&
 
 void Ip2_MesoMat_MesoMat_MesoPhys::postLoad(Ip2_MesoMat_MesoMat_MesoPhys&)
 {
+	{ // new contacts take the new lever arm
+		const std::lock_guard<std::mutex> lock(sharedMutex);
+		sharedParams.clear();
+	}
 	if (leverArm == "reduced") leverFactor = 1;
 	else if (leverArm == "a12") leverFactor = 2;
 	else {
@@ -105,25 +110,36 @@ namespace {
 	}
 }
 
+shared_ptr<MesoPairParams>
+Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D)
+{
+	const auto* mat1 = static_cast<const MesoMat*>(m1.get());
+	const auto* mat2 = static_cast<const MesoMat*>(m2.get());
+	const std::lock_guard<std::mutex> lock(sharedMutex);
+	Shared& s = sharedParams[std::make_tuple(mat1, mat2, geom6D)];
+	if (s.params && s.revision1 == mat1->revision() && s.revision2 == mat2->revision()) return s.params;
+	s.m1        = m1;
+	s.m2        = m2;
+	s.revision1 = mat1->revision();
+	s.revision2 = mat2->revision();
+	s.params    = shared_ptr<MesoPairParams>(new MesoPairParams());
+	meso::PairParams& p = s.params->params;
+	p                   = meso::mixPair(mat1->params(), mat2->params());
+	p.leverFactor       = leverFactor;
+	p.tangential        = p.sliding.active() || p.rolling.active() || p.twisting.active();
+	p.rollTwist         = (p.rolling.active() || p.twisting.active()) && geom6D;
+	return s.params;
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return;
-	const auto* mat1 = static_cast<const MesoMat*>(m1.get());
-	const auto* mat2 = static_cast<const MesoMat*>(m2.get());
-	const Real  r1   = sphereRadius(I->getId1(), scene);
-	const Real  r2   = sphereRadius(I->getId2(), scene);
+	auto phys        = shared_ptr<MesoPhys>(new MesoPhys());
+	phys->pairParams = pairParams(m1, m2, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
+	const meso::PairParams& p = phys->pairParams->params;
 	// Against a wall, box or facet a12 is the limit 2 a of the formula (MODEL.md §1); the radii
 	// those geometries report are not used, they differ between YADE's Ig2 functors.
-	const Real a12 = (r1 > 0 && r2 > 0) ? 2 * r1 * r2 / (r1 + r2) : 2 * (r1 > 0 ? r1 : r2);
-
-	auto phys                    = shared_ptr<MesoPhys>(new MesoPhys());
-	meso::PairParams& p          = phys->pair;
-	p                            = meso::mixPair(mat1->params(), mat2->params(), a12);
-	p.radius1                    = r1;
-	p.radius2                    = r2;
-	p.leverFactor                = leverFactor;
-	p.tangential                 = p.sliding.active() || p.rolling.active() || p.twisting.active();
-	p.rollTwist                  = (p.rolling.active() || p.twisting.active()) && dynamic_cast<const ScGeom6D*>(I->geom.get());
+	phys->geometry               = meso::pairGeometry(p, sphereRadius(I->getId1(), scene), sphereRadius(I->getId2(), scene));
 	phys->history.k2             = p.k1;
 	phys->kn                     = p.kp;
 	phys->ks                     = p.sliding.k;
@@ -135,61 +151,65 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	const auto*  geom  = static_cast<const ScGeom*>(ig.get());
-	auto*        phys  = static_cast<MesoPhys*>(ip.get());
-	const auto&  p     = phys->pair;
-	const Real   delta = geom->penetrationDepth;
-	const int    id1 = I->getId1(), id2 = I->getId2();
+	const auto*     geom   = static_cast<const ScGeom*>(ig.get());
+	auto*           phys   = static_cast<MesoPhys*>(ip.get());
+	const auto&     p      = phys->pairParams->params;
+	const auto&     g      = phys->geometry;
+	const Real      delta  = geom->penetrationDepth;
+	const int       id1 = I->getId1(), id2 = I->getId2();
 	const auto&     bodies = scene->bodies->body; // the vector itself: its operator[] inlines
 	const State*    s1     = bodies[id1]->state.get();
 	const State*    s2     = bodies[id2]->state.get();
-	const Vector3r&      n      = geom->normal; // from 1 to 2
+	const Vector3r& n      = geom->normal; // from 1 to 2
 	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
 	const Real vn = relVel.dot(n); // d(delta)/dt
 
-	const meso::NormalForce f = meso::normalForce(p, phys->history, delta, vn);
 	if (scene->trackEnergy) {
-		if (std::isnan(phys->energy.prevDelta)) phys->energy.prevDelta = delta - vn * scene->dt; // no force before
-		const meso::NormalEnergyStep e = meso::energyStep(phys->energy, phys->history, phys->force, f, delta);
+		// The previous step's stored energy, from its force and history (before this step's update).
+		const Real prevElastic = meso::storedElastic(phys->history, phys->force.hysteretic);
+		const Real prevDelta   = std::isnan(phys->lastDelta) ? delta - vn * scene->dt : phys->lastDelta; // no force before
+		const meso::NormalForce      f = meso::normalForce(p, g, phys->history, delta, vn);
+		const meso::NormalEnergyStep e = meso::energyStep(prevDelta, prevElastic, phys->history, phys->force, f, delta);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
 		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
 		scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
+		phys->force = f;
+	} else {
+		phys->force = meso::normalForce(p, g, phys->history, delta, vn);
 	}
-	phys->force       = f;
-	phys->normalForce = f.total() * n;
-	Vector3r force1   = -phys->normalForce; // on body 1
+	const meso::NormalForce& f = phys->force;
+	phys->lastDelta            = delta;
+	phys->normalForce          = f.total() * n;
+	Vector3r force1            = -phys->normalForce; // on body 1
 
 	if (p.tangential) {
-		const Real dt   = scene->dt;
-		auto&      t    = phys->tangential;
-		const bool both = p.radius1 > 0 && p.radius2 > 0;
-		// Arms from the centres to the contact point: a - delta/2 for spheres (branch = +-arm n);
-		// for a wall, box or facet the branch to YADE's contact point.
-		const Real arm1 = p.radius1 > 0 ? p.radius1 - 0.5 * delta : 0;
-		const Real arm2 = p.radius2 > 0 ? p.radius2 - 0.5 * delta : 0;
-		const Real lever = p.leverFactor * (both ? arm1 * arm2 / (arm1 + arm2) : math::max(arm1, arm2));
-		phys->lastLever  = lever;
-		Vector3r b1, b2; // used off the sphere-sphere path only
-		Vector3r vc;
-		if (both) vc = meso::sphereContactVelocity(n, relVel, s1->angVel, s2->angVel, arm1, arm2);
+		const Real              dt   = scene->dt;
+		auto&                   t    = phys->tangential;
+		const bool              both = g.radius1 > 0 && g.radius2 > 0;
+		const meso::ContactArms arms = meso::contactArms(p, g, delta);
+		Vector3r                b1, b2; // used off the sphere-sphere path only
+		Vector3r                vc;
+		if (both) vc = meso::sphereContactVelocity(n, relVel, s1->angVel, s2->angVel, arms.arm1, arms.arm2);
 		else {
+			// For a wall, box or facet the branch to YADE's contact point.
 			const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
-			b1                    = p.radius1 > 0 ? Vector3r(arm1 * n) : Vector3r(geom->contactPoint - s1->pos);
-			b2                    = p.radius2 > 0 ? Vector3r(-arm2 * n) : Vector3r(geom->contactPoint - s2->pos - shift2);
+			b1                    = g.radius1 > 0 ? Vector3r(arms.arm1 * n) : Vector3r(geom->contactPoint - s1->pos);
+			b2                    = g.radius2 > 0 ? Vector3r(-arms.arm2 * n) : Vector3r(geom->contactPoint - s2->pos - shift2);
 			vc                    = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
 		}
-		const meso::ContactVelocities v = meso::contactVelocities(n, vc, s1->angVel - s2->angVel, lever);
+		const meso::ContactVelocities v = meso::contactVelocities(n, vc, s1->angVel - s2->angVel, arms.lever);
 		meso::TangentialEnergy  e;
 		meso::TangentialEnergy* ePtr = scene->trackEnergy ? &e : nullptr;
+		Vector3r                fT   = -phys->shearForce; // YADE keeps the force sustained by body 2
 		if (delta > 0) {
 			// The frame spins with the pair's mean spin about n; against a wall, with the wall's.
-			const Real spin  = both ? 0.5 * (s1->angVel + s2->angVel).dot(n) : (p.radius1 > 0 ? s2->angVel : s1->angVel).dot(n);
+			const Real spin  = both ? 0.5 * (s1->angVel + s2->angVel).dot(n) : (g.radius1 > 0 ? s2->angVel : s1->angVel).dot(n);
 			const Real level = f.hysteretic + f.viscous + p.kc * delta;
-			meso::tangentialStep(p, p.rollTwist, t, v, n, spin * dt, dt, level, ePtr);
+			meso::tangentialStep(p, p.rollTwist, t, fT, v, n, spin * dt, dt, level, ePtr);
 		} else if (t.nPrev.squaredNorm() > 0) {
-			meso::tangentialRelease(p, t, v, dt, ePtr);
+			meso::tangentialRelease(p, t, fT, v, dt, ePtr);
 		}
 		if (ePtr) {
 			scene->energy->add(e.stored, "mesoSprings", springsIx, true);
@@ -197,17 +217,17 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 			scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
 			scene->energy->add(e.twisting, "mesoTwisting", twistingIx, false);
 		}
-		phys->shearForce = -t.fT; // YADE's convention: the force sustained by body 2
+		phys->shearForce = -fT;
 		if (delta > 0) {
-			force1 += t.fT;
-			const Vector3r quasiTorque = lever * (t.fO * n - meso::cross(n, t.fR)); // rolling and torsion, on body 1
+			force1 += fT;
+			const Vector3r quasiTorque = arms.lever * (t.fO * n - meso::cross(n, t.fR)); // rolling and torsion, on body 1
 			if (both) {
-				const Vector3r nxf = meso::cross(n, t.fT); // sliding: torques arm1 n x fT and arm2 n x fT
-				scene->forces.addTorque(id1, arm1 * nxf + quasiTorque);
-				scene->forces.addTorque(id2, arm2 * nxf - quasiTorque);
+				const Vector3r nxf = meso::cross(n, fT); // sliding: torques arm1 n x fT and arm2 n x fT
+				scene->forces.addTorque(id1, arms.arm1 * nxf + quasiTorque);
+				scene->forces.addTorque(id2, arms.arm2 * nxf - quasiTorque);
 			} else {
-				scene->forces.addTorque(id1, meso::cross(b1, t.fT) + quasiTorque);
-				scene->forces.addTorque(id2, meso::cross(t.fT, b2) - quasiTorque);
+				scene->forces.addTorque(id1, meso::cross(b1, fT) + quasiTorque);
+				scene->forces.addTorque(id2, meso::cross(fT, b2) - quasiTorque);
 			}
 		}
 	}

@@ -9,6 +9,10 @@
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
+#include <map>
+#include <mutex>
+#include <tuple>
+
 namespace yade {
 
 class MesoMat : public FrictMat {
@@ -16,11 +20,13 @@ class MesoMat : public FrictMat {
 	std::string          validAdhesion = "none", validK2Interpolation = "linear";
 	bool                 deferChecks   = false; // set while the constructor applies its keywords
 	meso::MaterialParams parse() const;         // throws std::invalid_argument naming the parameter
+	unsigned long        revisionCount = 0;     // counts accepted changes: contacts made before keep the parameters they had
 
 public:
 	virtual ~MesoMat() = default;
 	// Validated parameters; never throws (the Ip2 runs inside YADE's OpenMP loop).
 	const meso::MaterialParams& params() const { return valid; }
+	unsigned long               revision() const { return revisionCount; }
 	void                        postLoad(MesoMat&);
 	Real                        getFrictionAngle() const { return frictionAngle; }
 	void                        setFrictionAngle(Real a); // validated, like the attributes below
@@ -54,17 +60,31 @@ public:
 };
 REGISTER_SERIALIZABLE(MesoMat);
 
+// The parameters of one material pair, shared by all its contacts (Ip2_MesoMat_MesoMat_MesoPhys
+// makes one per pair of materials and geometry kind); saved once per file, shared again on load.
+class MesoPairParams : public Serializable {
+public:
+	virtual ~MesoPairParams() = default;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`).",
+		((meso::PairParams,params,,Attr::hidden,"The mixed parameters."))
+	);
+	// clang-format on
+};
+REGISTER_SERIALIZABLE(MesoPairParams);
+
 class MesoPhys : public FrictPhys {
 public:
 	virtual ~MesoPhys() = default;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoPhys,FrictPhys,"Physics of one meso-particle contact, created by :yref:`Ip2_MesoMat_MesoMat_MesoPhys`: the mixed pair parameters, the contact history and the energy bookkeeping of :yref:`Law2_ScGeom_MesoPhys_Meso`. All are read-only from Python and are saved with the simulation. ``kn`` is the stiffest branch $k_p$ (for YADE's time-step tools).",
-		((meso::PairParams,pair,,Attr::hidden,"Mixed pair parameters (see the read-only properties)."))
+		((shared_ptr<MesoPairParams>,pairParams,,Attr::hidden,"Mixed parameters of the material pair, shared by its contacts (see the read-only properties)."))
+		((meso::PairGeometry,geometry,,Attr::hidden,"Radii and limit overlap of this contact (see the read-only properties)."))
 		((meso::NormalHistory,history,,Attr::hidden,"Contact history (see the read-only properties)."))
 		((meso::NormalForce,force,,Attr::hidden,"Parts of the normal force at the last step (see the read-only properties)."))
-		((meso::NormalEnergyState,energy,,Attr::hidden,"Previous step, for the energy bookkeeping."))
-		((meso::TangentialState,tangential,,Attr::hidden,"Springs and forces of sliding, rolling and torsion (see the read-only properties).")),
-		createIndex(); energy.prevDelta = NaN;,
+		((Real,lastDelta,NaN,Attr::hidden,"Overlap at the last step (NaN before the first) [m], for the energy bookkeeping and the lever arm."))
+		((meso::TangentialState,tangential,,Attr::hidden,"Springs and quasi-forces of rolling and torsion (see the read-only properties); the sliding force is ``-shearForce``.")),
+		createIndex();,
 		.add_property("deltaMax",&MesoPhys::getDeltaMax,"Largest overlap $\\delta_{max}$ of the current mechanical contact, after resets along the $-k_c$ branch [m].")
 		.add_property("delta0",&MesoPhys::getDelta0,"Force-free overlap $\\delta_0$ of the current un-/re-loading line [m].")
 		.add_property("k2",&MesoPhys::getK2,"Current un-/re-loading stiffness $k_2(\\delta_{max})$ [N/m].")
@@ -103,23 +123,29 @@ public:
 		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.")
 	);
 	// clang-format on
+	// The pair's parameters; defaults for a MesoPhys not made by the Ip2 (so that reading it cannot crash).
+	const meso::PairParams& pair() const
+	{
+		static const meso::PairParams none;
+		return pairParams ? pairParams->params : none;
+	}
 	Real        getDeltaMax() const { return history.deltaMax; }
 	Real        getDelta0() const { return history.delta0; }
 	Real        getK2() const { return history.k2; }
 	bool        getTouched() const { return history.touched; }
-	Real        getDeltaMaxP() const { return pair.deltaMaxP; }
-	Real        getDelta0P() const { return pair.delta0P; }
-	Real        getDeltaA() const { return pair.deltaA; }
-	Real        getA12() const { return pair.a12; }
-	Real        getK1() const { return pair.k1; }
-	Real        getKp() const { return pair.kp; }
-	Real        getKc() const { return pair.kc; }
-	Real        getPhiF() const { return pair.phiF; }
-	Real        getFa() const { return pair.fa; }
-	Real        getKca() const { return pair.kca; }
-	Real        getGammaN() const { return pair.gammaN; }
-	std::string getAdhesion() const { return meso::adhesionName(pair.adhesion); }
-	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair.k2Interpolation); }
+	Real        getDeltaMaxP() const { return geometry.deltaMaxP; }
+	Real        getDelta0P() const { return geometry.delta0P(pair()); }
+	Real        getDeltaA() const { return pair().deltaA; }
+	Real        getA12() const { return geometry.a12(); }
+	Real        getK1() const { return pair().k1; }
+	Real        getKp() const { return pair().kp; }
+	Real        getKc() const { return pair().kc; }
+	Real        getPhiF() const { return pair().phiF; }
+	Real        getFa() const { return pair().fa; }
+	Real        getKca() const { return pair().kca; }
+	Real        getGammaN() const { return pair().gammaN; }
+	std::string getAdhesion() const { return meso::adhesionName(pair().adhesion); }
+	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair().k2Interpolation); }
 	Real        getFh() const { return force.hysteretic; }
 	Real        getFadh() const { return force.adhesive; }
 	Real        getFv() const { return force.viscous; }
@@ -128,16 +154,16 @@ public:
 	Real        getXiO() const { return tangential.xiO; }
 	Vector3r    getFR() const { return tangential.fR; }
 	Real        getFO() const { return tangential.fO; }
-	Vector3r    getRollingTorque() const { return -lastLever * tangential.nPrev.cross(tangential.fR); }
-	Vector3r    getTwistTorque() const { return lastLever * tangential.fO * tangential.nPrev; }
-	Real        getLeverArm() const { return lastLever; }
-	Real        getKt() const { return pair.sliding.k; }
-	Real        getKr() const { return pair.rolling.k; }
-	Real        getKo() const { return pair.twisting.k; }
-	Real        getMuS() const { return pair.sliding.muS; }
-	Real        getMuR() const { return pair.rolling.muS; }
-	Real        getMuO() const { return pair.twisting.muS; }
-	Real        lastLever = 0; // not saved: recomputed every step
+	Vector3r    getRollingTorque() const { return -getLeverArm() * tangential.nPrev.cross(tangential.fR); }
+	Vector3r    getTwistTorque() const { return getLeverArm() * tangential.fO * tangential.nPrev; }
+	// The lever arm is a function of the overlap: recomputed here, not stored per contact.
+	Real getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
+	Real        getKt() const { return pair().sliding.k; }
+	Real        getKr() const { return pair().rolling.k; }
+	Real        getKo() const { return pair().twisting.k; }
+	Real        getMuS() const { return pair().sliding.muS; }
+	Real        getMuR() const { return pair().rolling.muS; }
+	Real        getMuO() const { return pair().twisting.muS; }
 	int         byteSize() const { return sizeof(MesoPhys); }
 	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
@@ -145,6 +171,17 @@ public:
 REGISTER_SERIALIZABLE(MesoPhys);
 
 class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
+	// One MesoPairParams per (material, material, ScGeom6D or not), made on first use; the Ip2 runs
+	// inside YADE's OpenMP loop, hence the mutex (taken once per new contact, not per step).
+	struct Shared {
+		shared_ptr<Material>       m1, m2; // held, so that the addresses in the key stay theirs
+		unsigned long              revision1 = 0, revision2 = 0;
+		shared_ptr<MesoPairParams> params;
+	};
+	std::map<std::tuple<const Material*, const Material*, bool>, Shared> sharedParams;
+	std::mutex                                                         sharedMutex;
+	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
+
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
 	void postLoad(Ip2_MesoMat_MesoMat_MesoPhys&);
@@ -187,13 +224,15 @@ namespace boost { namespace serialization {
 		ar& make_nvp("k1", p.k1)& make_nvp("kp", p.kp)& make_nvp("kc", p.kc)& make_nvp("phiF", p.phiF);
 		ar& make_nvp("fa", p.fa)& make_nvp("kca", p.kca)& make_nvp("gammaN", p.gammaN);
 		ar& make_nvp("adhesion", adhesion)& make_nvp("k2Interpolation", interp);
-		ar& make_nvp("a12", p.a12)& make_nvp("deltaMaxP", p.deltaMaxP)& make_nvp("invDeltaMaxP", p.invDeltaMaxP);
-		ar& make_nvp("delta0P", p.delta0P)& make_nvp("deltaA", p.deltaA);
+		ar& make_nvp("deltaA", p.deltaA)& make_nvp("delta0PerMaxP", p.delta0PerMaxP);
 		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.twisting);
-		ar& make_nvp("radius1", p.radius1)& make_nvp("radius2", p.radius2)& make_nvp("leverFactor", p.leverFactor);
-		ar& make_nvp("rollTwist", p.rollTwist)& make_nvp("tangential", p.tangential);
+		ar& make_nvp("leverFactor", p.leverFactor)& make_nvp("rollTwist", p.rollTwist)& make_nvp("tangential", p.tangential);
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
+	}
+	template <class Ar> void serialize(Ar& ar, meso::PairGeometry& g, const unsigned int)
+	{
+		ar& make_nvp("radius1", g.radius1)& make_nvp("radius2", g.radius2)& make_nvp("deltaMaxP", g.deltaMaxP)& make_nvp("invDeltaMaxP", g.invDeltaMaxP);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{
@@ -203,14 +242,10 @@ namespace boost { namespace serialization {
 	{
 		ar& make_nvp("hysteretic", f.hysteretic)& make_nvp("adhesive", f.adhesive)& make_nvp("viscous", f.viscous);
 	}
-	template <class Ar> void serialize(Ar& ar, meso::NormalEnergyState& s, const unsigned int)
-	{
-		ar& make_nvp("prevDelta", s.prevDelta)& make_nvp("prevElastic", s.prevElastic);
-	}
 	template <class Ar> void serialize(Ar& ar, meso::TangentialState& s, const unsigned int)
 	{
 		ar& make_nvp("xiT", s.xiT)& make_nvp("xiR", s.xiR)& make_nvp("xiO", s.xiO);
-		ar& make_nvp("fT", s.fT)& make_nvp("fR", s.fR)& make_nvp("fO", s.fO)& make_nvp("nPrev", s.nPrev);
+		ar& make_nvp("fR", s.fR)& make_nvp("fO", s.fO)& make_nvp("nPrev", s.nPrev);
 		ar& make_nvp("slidingT", s.slidingT)& make_nvp("slidingR", s.slidingR)& make_nvp("slidingO", s.slidingO);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::ElementParams& e, const unsigned int)

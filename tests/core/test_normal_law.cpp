@@ -7,125 +7,135 @@
 using namespace meso;
 
 namespace {
-PairParams pair(double k1 = 100, double kp = 500, double kc = 100, double phiF = 0.1, double a12 = 1e-3,
-                K2Interpolation interp = K2Interpolation::Linear)
+// A pair of equal spheres of radius a12 (so that their reduced radius is a12).
+struct Pair {
+	PairParams   p;
+	PairGeometry g;
+};
+Pair pairOf(const MaterialParams& m, double a12 = 1e-3)
+{
+	const PairParams p = mixPair(m, m);
+	return { p, pairGeometry(p, a12, a12) };
+}
+Pair pair(double k1 = 100, double kp = 500, double kc = 100, double phiF = 0.1, double a12 = 1e-3,
+          K2Interpolation interp = K2Interpolation::Linear)
 {
 	MaterialParams m;
 	m.k1 = k1; m.kp = kp; m.kc = kc; m.phiF = phiF; m.k2Interpolation = interp;
-	return mixPair(m, m, a12);
+	return pairOf(m, a12);
 }
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 }
 
 TEST(Geometry, LimitOverlapAndPlasticDepth)
 {
-	const PairParams p = pair();
-	EXPECT_NEAR(p.delta0P, 1e-4, 1e-18);
-	EXPECT_NEAR(p.deltaMaxP, 500.0 / 400.0 * 1e-4, 1e-18); // Eq. 10
+	const auto [p, g] = pair();
+	EXPECT_NEAR(g.delta0P(p), 1e-4, 1e-18);
+	EXPECT_NEAR(g.deltaMaxP, 500.0 / 400.0 * 1e-4, 1e-18); // Eq. 10
 }
 
 TEST(Hysteresis, VirginLoadingFollowsK1)
 {
-	PairParams p = pair(); NormalHistory h;
-	for (double d = 1e-6; d < p.deltaMaxP; d += 1e-6) {
-		EXPECT_NEAR(hystereticForce(p, h, d), 100 * d, 1e-12);
+	const auto [p, g] = pair(); NormalHistory h;
+	for (double d = 1e-6; d < g.deltaMaxP; d += 1e-6) {
+		EXPECT_NEAR(hystereticForce(p, g, h, d), 100 * d, 1e-12);
 		EXPECT_DOUBLE_EQ(h.deltaMax, d);
 	}
 }
 
 TEST(Hysteresis, UnloadingAndReloadingFollowK2Line)
 {
-	PairParams p = pair(); NormalHistory h;
-	const double dm = 0.5 * p.deltaMaxP;
-	hystereticForce(p, h, dm);
+	const auto [p, g] = pair(); NormalHistory h;
+	const double dm = 0.5 * g.deltaMaxP;
+	hystereticForce(p, g, h, dm);
 	const double k2 = 100 + 400 * 0.5, d0 = (1 - 100 / k2) * dm; // Eqs. 9, 7
 	EXPECT_NEAR(h.k2, k2, 1e-12);
 	EXPECT_NEAR(h.delta0, d0, 1e-18);
 	for (double d : {0.9 * dm, 0.7 * dm, 0.8 * dm, 0.95 * dm})
-		EXPECT_NEAR(hystereticForce(p, h, d), k2 * (d - d0), 1e-12) << d;
+		EXPECT_NEAR(hystereticForce(p, g, h, d), k2 * (d - d0), 1e-12) << d;
 	EXPECT_DOUBLE_EQ(h.deltaMax, dm); // re-loading below deltaMax keeps the history
-	EXPECT_NEAR(hystereticForce(p, h, 1.1 * dm), 100 * 1.1 * dm, 1e-12); // past deltaMax: back on k1
+	EXPECT_NEAR(hystereticForce(p, g, h, 1.1 * dm), 100 * 1.1 * dm, 1e-12); // past deltaMax: back on k1
 }
 
 TEST(Hysteresis, LimitBranchBeyondDeltaMaxP)
 {
-	PairParams p = pair(); NormalHistory h;
-	EXPECT_NEAR(hystereticForce(p, h, p.deltaMaxP), 100 * p.deltaMaxP, 1e-12); // continuous at the transition
-	for (double d : {1.2 * p.deltaMaxP, 2 * p.deltaMaxP, 1.5 * p.deltaMaxP}) // loading, then unloading on kp
-		EXPECT_NEAR(hystereticForce(p, h, d), 500 * (d - p.delta0P), 1e-12);
+	const auto [p, g] = pair(); NormalHistory h;
+	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP), 100 * g.deltaMaxP, 1e-12); // continuous at the transition
+	for (double d : {1.2 * g.deltaMaxP, 2 * g.deltaMaxP, 1.5 * g.deltaMaxP}) // loading, then unloading on kp
+		EXPECT_NEAR(hystereticForce(p, g, h, d), 500 * (d - g.delta0P(p)), 1e-12);
 	EXPECT_DOUBLE_EQ(h.k2, 500);
-	EXPECT_DOUBLE_EQ(h.delta0, p.delta0P);
+	EXPECT_DOUBLE_EQ(h.delta0, g.delta0P(p));
 }
 
 TEST(Hysteresis, TensileLimitReachedAtDeltaMin)
 {
-	PairParams p = pair(); NormalHistory h;
-	const double dm = 0.6 * p.deltaMaxP;
-	hystereticForce(p, h, dm);
+	const auto [p, g] = pair(); NormalHistory h;
+	const double dm = 0.6 * g.deltaMaxP;
+	hystereticForce(p, g, h, dm);
 	const double k2 = h.k2, dmin = (k2 - 100) / (k2 + 100) * dm; // Eq. 8
-	EXPECT_NEAR(hystereticForce(p, h, dmin * 1.001), k2 * (dmin * 1.001 - h.delta0), 1e-12); // still on k2
+	EXPECT_NEAR(hystereticForce(p, g, h, dmin * 1.001), k2 * (dmin * 1.001 - h.delta0), 1e-12); // still on k2
 	EXPECT_DOUBLE_EQ(h.deltaMax, dm);
 	const double d = 0.5 * dmin;
-	EXPECT_NEAR(hystereticForce(p, h, d), -100 * d, 1e-15); // on -kc
+	EXPECT_NEAR(hystereticForce(p, g, h, d), -100 * d, 1e-15); // on -kc
 	EXPECT_LT(h.deltaMax, dm);                               // history reset
 }
 
 TEST(Hysteresis, KcResetIsExactLinear)
 {
-	PairParams p = pair(); NormalHistory h;
-	hystereticForce(p, h, 0.8 * p.deltaMaxP);
-	const double d = 0.05 * p.deltaMaxP;
-	hystereticForce(p, h, d);
+	const auto [p, g] = pair(); NormalHistory h;
+	hystereticForce(p, g, h, 0.8 * g.deltaMaxP);
+	const double d = 0.05 * g.deltaMaxP;
+	hystereticForce(p, g, h, d);
 	// The new line passes through (d, -kc d): k2'(d - d0') = -kc d, with k2', d0' from Eqs. 9, 7 of the new deltaMax.
-	const double dm = h.deltaMax, k2 = 100 + 400 * dm / p.deltaMaxP, d0 = (1 - 100 / k2) * dm;
+	const double dm = h.deltaMax, k2 = 100 + 400 * dm / g.deltaMaxP, d0 = (1 - 100 / k2) * dm;
 	EXPECT_LT(rel(k2 * (d - d0), -100 * d), 1e-12);
 	// Re-loading from there follows that line, not the old one.
 	const double d2 = 1.5 * d;
-	EXPECT_LT(rel(hystereticForce(p, h, d2), k2 * (d2 - d0)), 1e-12);
+	EXPECT_LT(rel(hystereticForce(p, g, h, d2), k2 * (d2 - d0)), 1e-12);
 }
 
 TEST(Hysteresis, KcResetContinuousWithLimitBranch)
 {
-	PairParams p = pair(); NormalHistory h;
-	const double dStar = 500 * p.delta0P / (500 + 100); // kp delta0P/(kp + kc)
-	EXPECT_LT(rel(deltaMaxThrough(p, dStar), p.deltaMaxP), 1e-12);
+	const auto [p, g] = pair(); NormalHistory h;
+	const double dStar = 500 * g.delta0P(p) / (500 + 100); // kp delta0P/(kp + kc)
+	EXPECT_LT(rel(deltaMaxThrough(p, g, dStar), g.deltaMaxP), 1e-12);
 }
 
 TEST(Hysteresis, SqrtInterpolationAndItsReset)
 {
-	PairParams p = pair(100, 500, 100, 0.1, 1e-3, K2Interpolation::Sqrt); NormalHistory h;
-	const double dm = 0.3 * p.deltaMaxP;
-	hystereticForce(p, h, dm);
+	const auto [p, g] = pair(100, 500, 100, 0.1, 1e-3, K2Interpolation::Sqrt); NormalHistory h;
+	const double dm = 0.3 * g.deltaMaxP;
+	hystereticForce(p, g, h, dm);
 	EXPECT_NEAR(h.k2, 100 * (1 + 4 * std::sqrt(0.3)), 1e-10); // Eq. D.1
 	// Reset along -kc at several overlaps: the root must satisfy (k2 - k1) dm' = (k2 + kc) d.
 	for (double x : {1e-6, 1e-3, 0.01, 0.1, 0.3, 0.5, 0.8333333}) {
-		const double d = x * p.deltaMaxP, dm2 = deltaMaxThrough(p, d);
-		const double k2 = 100 * (1 + 4 * std::sqrt(dm2 / p.deltaMaxP));
+		const double d = x * g.deltaMaxP, dm2 = deltaMaxThrough(p, g, d);
+		const double k2 = 100 * (1 + 4 * std::sqrt(dm2 / g.deltaMaxP));
 		EXPECT_LT(rel((k2 - 100) * dm2, (k2 + 100) * d), 1e-12) << x;
 	}
-	EXPECT_NEAR(hystereticForce(p, h, p.deltaMaxP * 1.2), 500 * (1.2 * p.deltaMaxP - p.delta0P), 1e-12);
+	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP * 1.2), 500 * (1.2 * g.deltaMaxP - g.delta0P(p)), 1e-12);
 }
 
 TEST(Hysteresis, SeparationResetsHistory)
 {
-	PairParams p = pair(); NormalHistory h;
-	hystereticForce(p, h, 0.5 * p.deltaMaxP);
-	EXPECT_EQ(hystereticForce(p, h, -1e-9), 0.0);
+	const auto [p, g] = pair(); NormalHistory h;
+	hystereticForce(p, g, h, 0.5 * g.deltaMaxP);
+	EXPECT_EQ(hystereticForce(p, g, h, -1e-9), 0.0);
 	EXPECT_EQ(h.deltaMax, 0.0);
-	EXPECT_NEAR(hystereticForce(p, h, 1e-6), 100 * 1e-6, 1e-15); // a new contact starts on k1
+	EXPECT_NEAR(hystereticForce(p, g, h, 1e-6), 100 * 1e-6, 1e-15); // a new contact starts on k1
 }
 
 TEST(Hysteresis, LinearSpringWhenKpEqualsK1)
 {
-	PairParams p = pair(100, 100, 0); NormalHistory h;
-	EXPECT_TRUE(std::isinf(p.deltaMaxP));
-	for (double d : {1e-5, 3e-4, 1e-4, 2e-3, 1e-6}) EXPECT_DOUBLE_EQ(hystereticForce(p, h, d), 100 * d);
+	const auto [p, g] = pair(100, 100, 0); NormalHistory h;
+	EXPECT_TRUE(std::isinf(g.deltaMaxP));
+	for (double d : {1e-5, 3e-4, 1e-4, 2e-3, 1e-6}) EXPECT_DOUBLE_EQ(hystereticForce(p, g, h, d), 100 * d);
 }
 
 TEST(Adhesion, ReversibleProfile)
 {
 	MaterialParams m; m.fa = 1e-3; m.kca = 10; m.adhesion = Adhesion::Reversible;
-	PairParams p = mixPair(m, m, 1e-3); NormalHistory h;
+	[[maybe_unused]] const auto [p, g] = pairOf(m); NormalHistory h;
 	EXPECT_DOUBLE_EQ(p.deltaA, -1e-4);
 	EXPECT_EQ(adhesiveForce(p, h, -2e-4), 0.0);
 	EXPECT_NEAR(adhesiveForce(p, h, -0.5e-4), -10 * -0.5e-4 - 1e-3, 1e-18); // pull-in acts before touch
@@ -137,7 +147,7 @@ TEST(Adhesion, ReversibleProfile)
 TEST(Adhesion, JumpInActsOnlyAfterFirstTouch)
 {
 	MaterialParams m; m.fa = 1e-3; m.kca = 10; m.adhesion = Adhesion::JumpIn;
-	PairParams p = mixPair(m, m, 1e-3); NormalHistory h;
+	[[maybe_unused]] const auto [p, g] = pairOf(m); NormalHistory h;
 	EXPECT_EQ(adhesiveForce(p, h, -0.5e-4), 0.0);
 	EXPECT_FALSE(h.touched);
 	EXPECT_DOUBLE_EQ(adhesiveForce(p, h, 1e-6), -1e-3); // jump to -fa at contact
@@ -148,27 +158,27 @@ TEST(Adhesion, JumpInActsOnlyAfterFirstTouch)
 TEST(Viscous, OnlyInMechanicalContact)
 {
 	MaterialParams m; m.gammaN = 2e-3;
-	PairParams p = mixPair(m, m, 1e-3); NormalHistory h;
-	EXPECT_DOUBLE_EQ(normalForce(p, h, 1e-6, 0.5).viscous, 1e-3);
-	EXPECT_EQ(normalForce(p, h, -1e-6, 0.5).viscous, 0.0);
+	[[maybe_unused]] const auto [p, g] = pairOf(m); NormalHistory h;
+	EXPECT_DOUBLE_EQ(normalForce(p, g, h, 1e-6, 0.5).viscous, 1e-3);
+	EXPECT_EQ(normalForce(p, g, h, -1e-6, 0.5).viscous, 0.0);
 }
 
 TEST(Energy, LoopDissipationEqualsEnclosedArea)
 {
 	// Load on k1 to dm, unload on k2 to delta0: dissipated = 1/2 k1 dm^2 - 1/2 k2 (dm - d0)^2.
-	PairParams p = pair(100, 500, 0); NormalHistory h; NormalEnergyState s; NormalForce prev;
-	const double dm = 0.7 * p.deltaMaxP; const int n = 2000;
-	double plastic = 0;
+	const auto [p, g] = pair(100, 500, 0); NormalHistory h; NormalForce prev;
+	const double dm = 0.7 * g.deltaMaxP; const int n = 2000;
+	double plastic = 0, prevDelta = 0, prevElastic = 0;
 	for (int i = 1; i <= n; ++i) { // fine steps: the trapezoid is exact on each linear piece
 		const double d = dm * i / n;
-		NormalForce f = normalForce(p, h, d, 0);
-		plastic += energyStep(s, h, prev, f, d).plastic; prev = f;
+		NormalForce f = normalForce(p, g, h, d, 0);
+		plastic += energyStep(prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(h, f.hysteretic);
 	}
 	const double k2 = h.k2, d0 = h.delta0;
 	for (int i = 1; i <= n; ++i) {
 		const double d = dm - (dm - d0) * i / n;
-		NormalForce f = normalForce(p, h, d, 0);
-		plastic += energyStep(s, h, prev, f, d).plastic; prev = f;
+		NormalForce f = normalForce(p, g, h, d, 0);
+		plastic += energyStep(prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(h, f.hysteretic);
 	}
 	const double expected = 0.5 * 100 * dm * dm - 0.5 * k2 * (dm - d0) * (dm - d0);
 	EXPECT_LT(rel(plastic, expected), 1e-9);

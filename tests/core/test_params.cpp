@@ -60,7 +60,7 @@ TEST(Mixing, EqualMaterialsKeepTheirValues)
 {
 	MaterialParams m; m.k1 = 3; m.kp = 7; m.kc = 2; m.phiF = 0.3; m.fa = 1e-3; m.kca = 5; m.gammaN = 1e-2;
 	m.adhesion = Adhesion::JumpIn; m.k2Interpolation = K2Interpolation::Sqrt;
-	const PairParams p = mixPair(m, m, 1e-3);
+	const PairParams p = mixPair(m, m);
 	EXPECT_DOUBLE_EQ(p.k1, 3); EXPECT_DOUBLE_EQ(p.kp, 7); EXPECT_DOUBLE_EQ(p.kc, 2);
 	EXPECT_DOUBLE_EQ(p.phiF, 0.3); EXPECT_DOUBLE_EQ(p.fa, 1e-3); EXPECT_DOUBLE_EQ(p.kca, 5);
 	EXPECT_DOUBLE_EQ(p.gammaN, 1e-2);
@@ -71,11 +71,25 @@ TEST(Mixing, UnlikeMaterials)
 {
 	MaterialParams a, b; a.k1 = 100; a.kp = 500; b.k1 = 300; b.kp = 300;
 	a.adhesion = Adhesion::Reversible; a.fa = 1e-3; a.kca = 1;
-	const PairParams p = mixPair(a, b, 1e-3);
+	const PairParams p = mixPair(a, b);
 	EXPECT_DOUBLE_EQ(p.k1, 150); EXPECT_DOUBLE_EQ(p.kp, 375);
 	EXPECT_GE(p.kp, p.k1);
 	EXPECT_EQ(p.adhesion, Adhesion::None); // b has none
 	EXPECT_EQ(p.fa, 0.0); EXPECT_EQ(p.deltaA, 0.0);
+}
+
+TEST(Geometry, ReducedRadiusAndLimitOverlapPerContact)
+{
+	MaterialParams m; m.k1 = 100; m.kp = 500; m.phiF = 0.1;
+	const PairParams p = mixPair(m, m);
+	EXPECT_DOUBLE_EQ(pairGeometry(p, 1e-3, 3e-3).a12(), 1.5e-3); // 2 a1 a2/(a1 + a2)
+	EXPECT_DOUBLE_EQ(pairGeometry(p, 1e-3, 0).a12(), 2e-3);      // against a wall: 2 a
+	EXPECT_DOUBLE_EQ(pairGeometry(p, 0, 1e-3).a12(), 2e-3);
+	const PairGeometry g = pairGeometry(p, 1e-3, 0);
+	EXPECT_DOUBLE_EQ(g.deltaMaxP, 500.0 / 400.0 * 0.1 * 2e-3); // Eq. 10
+	EXPECT_DOUBLE_EQ(g.invDeltaMaxP * g.deltaMaxP, 1);
+	EXPECT_DOUBLE_EQ(g.delta0P(p), 0.1 * 2e-3); // Eq. 11
+	EXPECT_NEAR(p.delta0PerMaxP * g.deltaMaxP, g.delta0P(p), 1e-19);
 }
 
 TEST(Mixing, DominantMaterialImposesItsParameters)
@@ -83,12 +97,12 @@ TEST(Mixing, DominantMaterialImposesItsParameters)
 	MaterialParams particle, wall;
 	particle.k1 = 2.5; particle.kp = 5; particle.kc = 1; particle.muS = 1;
 	wall.k1 = 2.5; wall.kp = 5; wall.kc = 100; wall.muS = 10; wall.dominant = true;
-	for (const PairParams& p : { mixPair(particle, wall, 1e-2), mixPair(wall, particle, 1e-2) }) {
+	for (const PairParams& p : { mixPair(particle, wall), mixPair(wall, particle) }) {
 		EXPECT_DOUBLE_EQ(p.kc, 100); // the harmonic mean would give 2*1*100/101
 		EXPECT_DOUBLE_EQ(p.sliding.muS, 10);
 		EXPECT_DOUBLE_EQ(p.kp, 5);
 	}
 	particle.dominant = true; // both dominant: mixed as usual
-	EXPECT_DOUBLE_EQ(mixPair(particle, wall, 1e-2).kc, 200.0 / 101.0);
-	EXPECT_DOUBLE_EQ(mixPair(particle, wall, 1e-2).sliding.muS, 1);
+	EXPECT_DOUBLE_EQ(mixPair(particle, wall).kc, 200.0 / 101.0);
+	EXPECT_DOUBLE_EQ(mixPair(particle, wall).sliding.muS, 1);
 }
