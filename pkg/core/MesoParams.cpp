@@ -87,13 +87,8 @@ PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)
 	PairGeometry g;
 	g.radius1 = radius1;
 	g.radius2 = radius2;
-	if (p.kp > p.k1) {
-		g.deltaMaxP    = p.kp / (p.kp - p.k1) * p.phiF * g.a12();
-		g.invDeltaMaxP = 1.0 / g.deltaMaxP;
-	} else { // purely elastic: the limit branch is never reached
-		g.deltaMaxP    = std::numeric_limits<double>::infinity();
-		g.invDeltaMaxP = 0;
-	}
+	// 0 when purely elastic (kp == k1): the limit branch is never reached.
+	g.invDeltaMaxP = p.kp > p.k1 ? (p.kp - p.k1) / (p.kp * p.phiF * g.a12()) : 0.0;
 	return g;
 }
 

@@ -80,9 +80,10 @@ struct PairParams {
 // What one contact adds to its pair's parameters: the radii and the limit overlap, which scales with a12.
 struct PairGeometry {
 	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
-	double deltaMaxP    = 0;         // limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]
 	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]
 	double a12() const { return reducedRadius(radius1, radius2); }
+	// Limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]; kept as its inverse, which the hot path uses.
+	double deltaMaxP() const { return 1 / invDeltaMaxP; }
 	// Plastic overlap on the limit branch phiF a12 (Eq. 11) [m].
 	double delta0P(const PairParams& p) const { return p.phiF * a12(); }
 	// Reduced radius 2 a1 a2/(a1+a2) of two spheres; against a wall, box or facet (radius 0) 2 a.

@@ -7,11 +7,11 @@
 
 namespace meso {
 
-// What one contact remembers. deltaMax is the only true state of the hysteresis; k2 and delta0
-// are cached functions of it (they change only when deltaMax does).
+// What one contact remembers. deltaMax is the only true state of the hysteresis; delta0 is a
+// cached function of it (it changes only when deltaMax does, and takes a division). k2 is not
+// kept: unloadingStiffness() is cheaper than the memory a contact would carry for it.
 struct NormalHistory {
 	double deltaMax = 0; // largest overlap of the current contact (after -kc resets) [m]
-	double k2       = 0; // un-/re-loading stiffness k2(deltaMax) [N/m]
 	double delta0   = 0; // force-free overlap of the current k2 line [m]
 	bool   touched  = false; // the pair has been in mechanical contact (jump-in adhesion)
 };
@@ -22,18 +22,23 @@ struct NormalForce {
 	double total() const { return hysteretic + adhesive + viscous; }
 };
 
-// k2 and delta0 of the un-/re-loading line that belongs to deltaMax (Eqs. 7, 9, 10, D.1).
-MESO_HOT void setUnloadingLine(const PairParams& p, const PairGeometry& g, NormalHistory& h, double deltaMax)
+// The un-/re-loading stiffness k2(deltaMax) (Eqs. 9, 10, D.1): k1 on a fresh contact, kp beyond deltaMaxP.
+MESO_HOT double unloadingStiffness(const PairParams& p, const PairGeometry& g, double deltaMax)
 {
-	h.deltaMax = deltaMax;
-	if (deltaMax >= g.deltaMaxP) {
-		h.k2     = p.kp;
-		h.delta0 = p.delta0PerMaxP * g.deltaMaxP; // phiF a12 (Eq. 11), continuous with the line below at deltaMaxP
-		return;
-	}
-	const double x = deltaMax * g.invDeltaMaxP; // in [0, 1)
-	h.k2           = p.k1 + (p.kp - p.k1) * (p.k2Interpolation == K2Interpolation::Sqrt ? std::sqrt(x) : x);
-	h.delta0       = (1 - p.k1 / h.k2) * deltaMax;
+	const double x = deltaMax * g.invDeltaMaxP;
+	if (x >= 1) return p.kp;
+	return p.k1 + (p.kp - p.k1) * (p.k2Interpolation == K2Interpolation::Sqrt ? std::sqrt(x) : x);
+}
+MESO_HOT double unloadingStiffness(const PairParams& p, const PairGeometry& g, const NormalHistory& h) { return unloadingStiffness(p, g, h.deltaMax); }
+
+// Moves the history to the un-/re-loading line of deltaMax (delta0 from Eqs. 7, 11); returns its k2.
+MESO_HOT double setUnloadingLine(const PairParams& p, const PairGeometry& g, NormalHistory& h, double deltaMax)
+{
+	h.deltaMax      = deltaMax;
+	const double k2 = unloadingStiffness(p, g, deltaMax);
+	// On the limit branch phiF a12 (Eq. 11), continuous with the k2 lines at deltaMaxP.
+	h.delta0 = deltaMax * g.invDeltaMaxP >= 1 ? p.delta0PerMaxP * g.deltaMaxP() : (1 - p.k1 / k2) * deltaMax;
+	return k2;
 }
 
 // The deltaMax whose k2 line passes through (delta, -kc delta) on the tensile branch: the root of
@@ -44,7 +49,7 @@ inline double deltaMaxThrough(const PairParams& p, const PairGeometry& g, double
 	const double q = (p.k1 + p.kc) / (p.kp - p.k1); // (1 + beta)/eta
 	if (p.k2Interpolation == K2Interpolation::Linear) {
 		// c dm^2 - c delta dm - (k1 + kc) delta = 0 with c = (kp - k1)/deltaMaxP, in units of deltaMaxP
-		return g.deltaMaxP * (0.5 * x + std::sqrt(0.25 * x * x + q * x));
+		return g.deltaMaxP() * (0.5 * x + std::sqrt(0.25 * x * x + q * x));
 	}
 	// k2 = k1 (1 + eta s), dm = deltaMaxP s^2:  s^3 - x s - q x = 0, one positive root
 	const double P = -x, Q = -q * x;
@@ -57,7 +62,7 @@ inline double deltaMaxThrough(const PairParams& p, const PairGeometry& g, double
 		s = 2 * std::sqrt(-P / 3) * std::cos(std::acos(1.5 * Q / P * std::sqrt(-3 / P)) / 3);
 	}
 	s -= (s * s * s + P * s + Q) / (3 * s * s + P); // one Newton step polishes rounding
-	return g.deltaMaxP * s * s;
+	return g.deltaMaxP() * s * s;
 }
 
 // Hysteretic contact force at overlap delta; updates the history first (MODEL.md §3 order).
@@ -65,12 +70,12 @@ MESO_HOT double hystereticForce(const PairParams& p, const PairGeometry& g, Norm
 {
 	if (delta <= 0) { // mechanical contact over: the next one starts new
 		h.deltaMax = 0;
-		h.k2       = p.k1;
 		h.delta0   = 0;
 		return 0;
 	}
-	if (delta > h.deltaMax) setUnloadingLine(p, g, h, delta); // the k2 line meets k1 delta (or the kp branch) here
-	const double f    = h.k2 * (delta - h.delta0);
+	// Beyond deltaMax the k2 line of delta meets k1 delta (or the kp branch) here.
+	const double k2   = delta > h.deltaMax ? setUnloadingLine(p, g, h, delta) : unloadingStiffness(p, g, h);
+	const double f    = k2 * (delta - h.delta0);
 	const double fMin = -p.kc * delta;
 	if (f >= fMin) return f;
 	setUnloadingLine(p, g, h, deltaMaxThrough(p, g, delta)); // moving along -kc changes the history
@@ -104,7 +109,11 @@ MESO_HOT NormalForce normalForce(const PairParams& p, const PairGeometry& g, Nor
 MESO_HOT bool keepsInteracting(const PairParams& p, double delta) { return delta > p.deltaA; }
 
 // Elastic energy stored on the current un-/re-loading line: 1/2 k2 (delta - delta0)^2 = f^2/(2 k2) [J].
-inline double storedElastic(const NormalHistory& h, double fHysteretic) { return h.k2 > 0 ? 0.5 * fHysteretic * fHysteretic / h.k2 : 0.0; }
+inline double storedElastic(const PairParams& p, const PairGeometry& g, const NormalHistory& h, double fHysteretic)
+{
+	const double k2 = unloadingStiffness(p, g, h);
+	return k2 > 0 ? 0.5 * fHysteretic * fHysteretic / k2 : 0.0;
+}
 
 // Energy bookkeeping of one contact consistent with YADE's leapfrog integrator, whose kinetic
 // energy at step n uses the velocity of step n-1/2: the work absorbed by the contact up to that
@@ -120,11 +129,11 @@ struct NormalEnergyStep {
 // (zero force before the first one); f, delta: this step's, h after this step's update. The previous
 // stored energy is not kept: it is storedElastic() of the previous force and history, which the
 // caller evaluates before the update.
-inline NormalEnergyStep energyStep(double prevDelta, double prevElastic, const NormalHistory& h, const NormalForce& prev, const NormalForce& f,
-                                   double delta)
+inline NormalEnergyStep energyStep(const PairParams& p, const PairGeometry& g, double prevDelta, double prevElastic, const NormalHistory& h,
+                                   const NormalForce& prev, const NormalForce& f, double delta)
 {
 	const double     dd      = delta - prevDelta;
-	const double     elastic = storedElastic(h, f.hysteretic);
+	const double     elastic = storedElastic(p, g, h, f.hysteretic);
 	NormalEnergyStep e;
 	e.plastic  = 0.5 * (prev.hysteretic + f.hysteretic) * dd - (elastic - prevElastic);
 	e.adhesive = 0.5 * (prev.adhesive + f.adhesive) * dd;

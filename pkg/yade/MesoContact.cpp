@@ -140,7 +140,6 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	// Against a wall, box or facet a12 is the limit 2 a of the formula (MODEL.md §1); the radii
 	// those geometries report are not used, they differ between YADE's Ig2 functors.
 	phys->geometry               = meso::pairGeometry(p, sphereRadius(I->getId1(), scene), sphereRadius(I->getId2(), scene));
-	phys->history.k2             = p.k1;
 	phys->kn                     = p.kp;
 	phys->ks                     = p.sliding.k;
 	phys->tangensOfFrictionAngle = p.sliding.muS;
@@ -167,10 +166,10 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 
 	if (scene->trackEnergy) {
 		// The previous step's stored energy, from its force and history (before this step's update).
-		const Real prevElastic = meso::storedElastic(phys->history, phys->force.hysteretic);
+		const Real prevElastic = meso::storedElastic(p, g, phys->history, phys->force.hysteretic);
 		const Real prevDelta   = std::isnan(phys->lastDelta) ? delta - vn * scene->dt : phys->lastDelta; // no force before
 		const meso::NormalForce      f = meso::normalForce(p, g, phys->history, delta, vn);
-		const meso::NormalEnergyStep e = meso::energyStep(prevDelta, prevElastic, phys->history, phys->force, f, delta);
+		const meso::NormalEnergyStep e = meso::energyStep(p, g, prevDelta, prevElastic, phys->history, phys->force, f, delta);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
 		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);

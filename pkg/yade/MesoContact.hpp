@@ -131,9 +131,9 @@ public:
 	}
 	Real        getDeltaMax() const { return history.deltaMax; }
 	Real        getDelta0() const { return history.delta0; }
-	Real        getK2() const { return history.k2; }
+	Real        getK2() const { return meso::unloadingStiffness(pair(), geometry, history); }
 	bool        getTouched() const { return history.touched; }
-	Real        getDeltaMaxP() const { return geometry.deltaMaxP; }
+	Real        getDeltaMaxP() const { return geometry.deltaMaxP(); }
 	Real        getDelta0P() const { return geometry.delta0P(pair()); }
 	Real        getDeltaA() const { return pair().deltaA; }
 	Real        getA12() const { return geometry.a12(); }
@@ -232,11 +232,11 @@ namespace boost { namespace serialization {
 	}
 	template <class Ar> void serialize(Ar& ar, meso::PairGeometry& g, const unsigned int)
 	{
-		ar& make_nvp("radius1", g.radius1)& make_nvp("radius2", g.radius2)& make_nvp("deltaMaxP", g.deltaMaxP)& make_nvp("invDeltaMaxP", g.invDeltaMaxP);
+		ar& make_nvp("radius1", g.radius1)& make_nvp("radius2", g.radius2)& make_nvp("invDeltaMaxP", g.invDeltaMaxP);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{
-		ar& make_nvp("deltaMax", h.deltaMax)& make_nvp("k2", h.k2)& make_nvp("delta0", h.delta0)& make_nvp("touched", h.touched);
+		ar& make_nvp("deltaMax", h.deltaMax)& make_nvp("delta0", h.delta0)& make_nvp("touched", h.touched);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalForce& f, const unsigned int)
 	{

@@ -31,13 +31,13 @@ TEST(Geometry, LimitOverlapAndPlasticDepth)
 {
 	const auto [p, g] = pair();
 	EXPECT_NEAR(g.delta0P(p), 1e-4, 1e-18);
-	EXPECT_NEAR(g.deltaMaxP, 500.0 / 400.0 * 1e-4, 1e-18); // Eq. 10
+	EXPECT_NEAR(g.deltaMaxP(), 500.0 / 400.0 * 1e-4, 1e-18); // Eq. 10
 }
 
 TEST(Hysteresis, VirginLoadingFollowsK1)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	for (double d = 1e-6; d < g.deltaMaxP; d += 1e-6) {
+	for (double d = 1e-6; d < g.deltaMaxP(); d += 1e-6) {
 		EXPECT_NEAR(hystereticForce(p, g, h, d), 100 * d, 1e-12);
 		EXPECT_DOUBLE_EQ(h.deltaMax, d);
 	}
@@ -46,10 +46,10 @@ TEST(Hysteresis, VirginLoadingFollowsK1)
 TEST(Hysteresis, UnloadingAndReloadingFollowK2Line)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	const double dm = 0.5 * g.deltaMaxP;
+	const double dm = 0.5 * g.deltaMaxP();
 	hystereticForce(p, g, h, dm);
 	const double k2 = 100 + 400 * 0.5, d0 = (1 - 100 / k2) * dm; // Eqs. 9, 7
-	EXPECT_NEAR(h.k2, k2, 1e-12);
+	EXPECT_NEAR(unloadingStiffness(p, g, h), k2, 1e-12);
 	EXPECT_NEAR(h.delta0, d0, 1e-18);
 	for (double d : {0.9 * dm, 0.7 * dm, 0.8 * dm, 0.95 * dm})
 		EXPECT_NEAR(hystereticForce(p, g, h, d), k2 * (d - d0), 1e-12) << d;
@@ -60,19 +60,19 @@ TEST(Hysteresis, UnloadingAndReloadingFollowK2Line)
 TEST(Hysteresis, LimitBranchBeyondDeltaMaxP)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP), 100 * g.deltaMaxP, 1e-12); // continuous at the transition
-	for (double d : {1.2 * g.deltaMaxP, 2 * g.deltaMaxP, 1.5 * g.deltaMaxP}) // loading, then unloading on kp
+	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP()), 100 * g.deltaMaxP(), 1e-12); // continuous at the transition
+	for (double d : {1.2 * g.deltaMaxP(), 2 * g.deltaMaxP(), 1.5 * g.deltaMaxP()}) // loading, then unloading on kp
 		EXPECT_NEAR(hystereticForce(p, g, h, d), 500 * (d - g.delta0P(p)), 1e-12);
-	EXPECT_DOUBLE_EQ(h.k2, 500);
+	EXPECT_DOUBLE_EQ(unloadingStiffness(p, g, h), 500);
 	EXPECT_DOUBLE_EQ(h.delta0, g.delta0P(p));
 }
 
 TEST(Hysteresis, TensileLimitReachedAtDeltaMin)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	const double dm = 0.6 * g.deltaMaxP;
+	const double dm = 0.6 * g.deltaMaxP();
 	hystereticForce(p, g, h, dm);
-	const double k2 = h.k2, dmin = (k2 - 100) / (k2 + 100) * dm; // Eq. 8
+	const double k2 = unloadingStiffness(p, g, h), dmin = (k2 - 100) / (k2 + 100) * dm; // Eq. 8
 	EXPECT_NEAR(hystereticForce(p, g, h, dmin * 1.001), k2 * (dmin * 1.001 - h.delta0), 1e-12); // still on k2
 	EXPECT_DOUBLE_EQ(h.deltaMax, dm);
 	const double d = 0.5 * dmin;
@@ -83,11 +83,11 @@ TEST(Hysteresis, TensileLimitReachedAtDeltaMin)
 TEST(Hysteresis, KcResetIsExactLinear)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	hystereticForce(p, g, h, 0.8 * g.deltaMaxP);
-	const double d = 0.05 * g.deltaMaxP;
+	hystereticForce(p, g, h, 0.8 * g.deltaMaxP());
+	const double d = 0.05 * g.deltaMaxP();
 	hystereticForce(p, g, h, d);
 	// The new line passes through (d, -kc d): k2'(d - d0') = -kc d, with k2', d0' from Eqs. 9, 7 of the new deltaMax.
-	const double dm = h.deltaMax, k2 = 100 + 400 * dm / g.deltaMaxP, d0 = (1 - 100 / k2) * dm;
+	const double dm = h.deltaMax, k2 = 100 + 400 * dm / g.deltaMaxP(), d0 = (1 - 100 / k2) * dm;
 	EXPECT_LT(rel(k2 * (d - d0), -100 * d), 1e-12);
 	// Re-loading from there follows that line, not the old one.
 	const double d2 = 1.5 * d;
@@ -98,28 +98,28 @@ TEST(Hysteresis, KcResetContinuousWithLimitBranch)
 {
 	const auto [p, g] = pair(); NormalHistory h;
 	const double dStar = 500 * g.delta0P(p) / (500 + 100); // kp delta0P/(kp + kc)
-	EXPECT_LT(rel(deltaMaxThrough(p, g, dStar), g.deltaMaxP), 1e-12);
+	EXPECT_LT(rel(deltaMaxThrough(p, g, dStar), g.deltaMaxP()), 1e-12);
 }
 
 TEST(Hysteresis, SqrtInterpolationAndItsReset)
 {
 	const auto [p, g] = pair(100, 500, 100, 0.1, 1e-3, K2Interpolation::Sqrt); NormalHistory h;
-	const double dm = 0.3 * g.deltaMaxP;
+	const double dm = 0.3 * g.deltaMaxP();
 	hystereticForce(p, g, h, dm);
-	EXPECT_NEAR(h.k2, 100 * (1 + 4 * std::sqrt(0.3)), 1e-10); // Eq. D.1
+	EXPECT_NEAR(unloadingStiffness(p, g, h), 100 * (1 + 4 * std::sqrt(0.3)), 1e-10); // Eq. D.1
 	// Reset along -kc at several overlaps: the root must satisfy (k2 - k1) dm' = (k2 + kc) d.
 	for (double x : {1e-6, 1e-3, 0.01, 0.1, 0.3, 0.5, 0.8333333}) {
-		const double d = x * g.deltaMaxP, dm2 = deltaMaxThrough(p, g, d);
-		const double k2 = 100 * (1 + 4 * std::sqrt(dm2 / g.deltaMaxP));
+		const double d = x * g.deltaMaxP(), dm2 = deltaMaxThrough(p, g, d);
+		const double k2 = 100 * (1 + 4 * std::sqrt(dm2 / g.deltaMaxP()));
 		EXPECT_LT(rel((k2 - 100) * dm2, (k2 + 100) * d), 1e-12) << x;
 	}
-	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP * 1.2), 500 * (1.2 * g.deltaMaxP - g.delta0P(p)), 1e-12);
+	EXPECT_NEAR(hystereticForce(p, g, h, g.deltaMaxP() * 1.2), 500 * (1.2 * g.deltaMaxP() - g.delta0P(p)), 1e-12);
 }
 
 TEST(Hysteresis, SeparationResetsHistory)
 {
 	const auto [p, g] = pair(); NormalHistory h;
-	hystereticForce(p, g, h, 0.5 * g.deltaMaxP);
+	hystereticForce(p, g, h, 0.5 * g.deltaMaxP());
 	EXPECT_EQ(hystereticForce(p, g, h, -1e-9), 0.0);
 	EXPECT_EQ(h.deltaMax, 0.0);
 	EXPECT_NEAR(hystereticForce(p, g, h, 1e-6), 100 * 1e-6, 1e-15); // a new contact starts on k1
@@ -128,7 +128,7 @@ TEST(Hysteresis, SeparationResetsHistory)
 TEST(Hysteresis, LinearSpringWhenKpEqualsK1)
 {
 	const auto [p, g] = pair(100, 100, 0); NormalHistory h;
-	EXPECT_TRUE(std::isinf(g.deltaMaxP));
+	EXPECT_TRUE(std::isinf(g.deltaMaxP()));
 	for (double d : {1e-5, 3e-4, 1e-4, 2e-3, 1e-6}) EXPECT_DOUBLE_EQ(hystereticForce(p, g, h, d), 100 * d);
 }
 
@@ -167,20 +167,20 @@ TEST(Energy, LoopDissipationEqualsEnclosedArea)
 {
 	// Load on k1 to dm, unload on k2 to delta0: dissipated = 1/2 k1 dm^2 - 1/2 k2 (dm - d0)^2.
 	const auto [p, g] = pair(100, 500, 0); NormalHistory h; NormalForce prev;
-	const double dm = 0.7 * g.deltaMaxP; const int n = 2000;
+	const double dm = 0.7 * g.deltaMaxP(); const int n = 2000;
 	double plastic = 0, prevDelta = 0, prevElastic = 0;
 	for (int i = 1; i <= n; ++i) { // fine steps: the trapezoid is exact on each linear piece
 		const double d = dm * i / n;
 		NormalForce f = normalForce(p, g, h, d, 0);
-		plastic += energyStep(prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(h, f.hysteretic);
+		plastic += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(p, g, h, f.hysteretic);
 	}
-	const double k2 = h.k2, d0 = h.delta0;
+	const double k2 = unloadingStiffness(p, g, h), d0 = h.delta0;
 	for (int i = 1; i <= n; ++i) {
 		const double d = dm - (dm - d0) * i / n;
 		NormalForce f = normalForce(p, g, h, d, 0);
-		plastic += energyStep(prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(h, f.hysteretic);
+		plastic += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).plastic; prev = f; prevDelta = d; prevElastic = storedElastic(p, g, h, f.hysteretic);
 	}
 	const double expected = 0.5 * 100 * dm * dm - 0.5 * k2 * (dm - d0) * (dm - d0);
 	EXPECT_LT(rel(plastic, expected), 1e-9);
-	EXPECT_LT(storedElastic(h, prev.hysteretic), 1e-20);
+	EXPECT_LT(storedElastic(p, g, h, prev.hysteretic), 1e-20);
 }

@@ -86,10 +86,10 @@ TEST(Geometry, ReducedRadiusAndLimitOverlapPerContact)
 	EXPECT_DOUBLE_EQ(pairGeometry(p, 1e-3, 0).a12(), 2e-3);      // against a wall: 2 a
 	EXPECT_DOUBLE_EQ(pairGeometry(p, 0, 1e-3).a12(), 2e-3);
 	const PairGeometry g = pairGeometry(p, 1e-3, 0);
-	EXPECT_DOUBLE_EQ(g.deltaMaxP, 500.0 / 400.0 * 0.1 * 2e-3); // Eq. 10
-	EXPECT_DOUBLE_EQ(g.invDeltaMaxP * g.deltaMaxP, 1);
+	EXPECT_DOUBLE_EQ(g.deltaMaxP(), 500.0 / 400.0 * 0.1 * 2e-3); // Eq. 10
+	EXPECT_DOUBLE_EQ(g.invDeltaMaxP * g.deltaMaxP(), 1);
 	EXPECT_DOUBLE_EQ(g.delta0P(p), 0.1 * 2e-3); // Eq. 11
-	EXPECT_NEAR(p.delta0PerMaxP * g.deltaMaxP, g.delta0P(p), 1e-19);
+	EXPECT_NEAR(p.delta0PerMaxP * g.deltaMaxP(), g.delta0P(p), 1e-19);
 }
 
 TEST(Mixing, DominantMaterialImposesItsParameters)
