@@ -82,6 +82,15 @@ void validate(const MaterialParams& m)
 
 double harmonicMean(double x, double y) { return (x == 0 || y == 0) ? 0.0 : 2 * x * y / (x + y); }
 
+void setMechanisms(PairParams& p, bool geometryWithRotations)
+{
+	p.tangential = p.sliding.active() || p.rolling.active() || p.twisting.active();
+	p.rollTwist  = (p.rolling.active() || p.twisting.active()) && geometryWithRotations;
+	p.slides     = p.sliding.active();
+	p.rolls      = p.rollTwist && p.rolling.active();
+	p.twists     = p.rollTwist && p.twisting.active();
+}
+
 PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)
 {
 	PairGeometry g;

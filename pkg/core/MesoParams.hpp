@@ -4,10 +4,14 @@
 #include <string>
 
 // Small functions of the hot path (Law2::go()): GCC does not inline them on its own in -fPIC code.
+// The other inline functions of the core are hidden: in a plugin a visible inline function is called
+// through the PLT (it could be interposed), which costs Law2::go() a jump per call.
 #if defined(__GNUC__)
 #define MESO_HOT inline __attribute__((always_inline))
+#define MESO_INLINE inline __attribute__((visibility("hidden")))
 #else
 #define MESO_HOT inline
+#define MESO_INLINE inline
 #endif
 
 namespace meso {
@@ -66,6 +70,7 @@ struct PairParams {
 	// Hot: what Law2::go() reads every step, flags first.
 	bool            tangential      = false; // any tangential mechanism acts
 	bool            rollTwist       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
+	bool            slides = false, rolls = false, twists = false; // which elements act (setMechanisms())
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
 	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
@@ -94,9 +99,13 @@ struct PairGeometry {
 // friction coefficients by the smaller one (as YADE's Ip2_FrictMat_FrictMat_FrictPhys); phiD by the smaller;
 // adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation
 // only when both ask for it. Equal materials give their own values. When exactly one of the two is
-// dominant, the pair takes that material's parameters unmixed. The flags tangential and rollTwist
-// and the leverFactor are left to the caller.
+// dominant, the pair takes that material's parameters unmixed. The flags (setMechanisms()) and the
+// leverFactor are left to the caller.
 PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2);
+
+// Sets the flags tangential, rollTwist, slides, rolls and twists from the elements; rolling and
+// torsion need a geometry that carries rotations (YADE: ScGeom6D).
+void setMechanisms(PairParams& p, bool geometryWithRotations);
 
 // The geometry of one contact of pair p between spheres of radii r1 and r2 (0: wall, box or facet).
 PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2);

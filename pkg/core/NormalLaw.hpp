@@ -43,7 +43,7 @@ MESO_HOT double setUnloadingLine(const PairParams& p, const PairGeometry& g, Nor
 
 // The deltaMax whose k2 line passes through (delta, -kc delta) on the tensile branch: the root of
 // (k2(dm) - k1) dm = (k2(dm) + kc) delta, solved in closed form (no lagged k2).
-inline double deltaMaxThrough(const PairParams& p, const PairGeometry& g, double delta)
+MESO_INLINE double deltaMaxThrough(const PairParams& p, const PairGeometry& g, double delta)
 {
 	const double x = delta * g.invDeltaMaxP;
 	const double q = (p.k1 + p.kc) / (p.kp - p.k1); // (1 + beta)/eta
@@ -109,7 +109,7 @@ MESO_HOT NormalForce normalForce(const PairParams& p, const PairGeometry& g, Nor
 MESO_HOT bool keepsInteracting(const PairParams& p, double delta) { return delta > p.deltaA; }
 
 // Elastic energy stored on the current un-/re-loading line: 1/2 k2 (delta - delta0)^2 = f^2/(2 k2) [J].
-inline double storedElastic(const PairParams& p, const PairGeometry& g, const NormalHistory& h, double fHysteretic)
+MESO_INLINE double storedElastic(const PairParams& p, const PairGeometry& g, const NormalHistory& h, double fHysteretic)
 {
 	const double k2 = unloadingStiffness(p, g, h);
 	return k2 > 0 ? 0.5 * fHysteretic * fHysteretic / k2 : 0.0;
@@ -129,7 +129,7 @@ struct NormalEnergyStep {
 // (zero force before the first one); f, delta: this step's, h after this step's update. The previous
 // stored energy is not kept: it is storedElastic() of the previous force and history, which the
 // caller evaluates before the update.
-inline NormalEnergyStep energyStep(const PairParams& p, const PairGeometry& g, double prevDelta, double prevElastic, const NormalHistory& h,
+MESO_INLINE NormalEnergyStep energyStep(const PairParams& p, const PairGeometry& g, double prevDelta, double prevElastic, const NormalHistory& h,
                                    const NormalForce& prev, const NormalForce& f, double delta)
 {
 	const double     dd      = delta - prevDelta;

@@ -24,9 +24,20 @@ template <class V> struct ElementStep {
 	bool slipped = false;
 };
 
-MESO_HOT double magnitude(const Vec3& v) { return v.norm(); }
+// Dot product written out in Eigen's summation order a0 b0 + (a1 b1 + a2 b2) (same results), for the
+// same reason: Eigen's dot() stays out of line in go().
+MESO_HOT double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + (a[1] * b[1] + a[2] * b[2]); }
+
+// a x + b y, written out for the same reason (Eigen's assignment kernels stay out of line in go()).
+MESO_HOT Vec3 combine(double a, const Vec3& x, double b, const Vec3& y)
+{
+	return Vec3(a * x[0] + b * y[0], a * x[1] + b * y[1], a * x[2] + b * y[2]);
+}
+MESO_HOT double combine(double a, double x, double b, double y) { return a * x + b * y; }
+
+MESO_HOT double magnitude(const Vec3& v) { return std::sqrt(dot(v, v)); }
 MESO_HOT double magnitude(double v) { return std::abs(v); }
-MESO_HOT double squared(const Vec3& v) { return v.squaredNorm(); }
+MESO_HOT double squared(const Vec3& v) { return dot(v, v); }
 MESO_HOT double squared(double v) { return v * v; }
 
 // One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
@@ -42,8 +53,8 @@ MESO_HOT double squared(double v) { return v * v; }
 template <class V> MESO_HOT ElementStep<V> elementStep(const ElementParams& p, V& xi, const V& v, double dt, double level, bool& sliding)
 {
 	ElementStep<V> out;
-	xi += v * dt;
-	const V      trial = -p.k * xi - p.gamma * v;
+	xi                 = combine(1.0, xi, dt, v);
+	const V      trial = combine(-p.k, xi, -p.gamma, v);
 	const double limit = (sliding ? p.muD : p.muS) * level;
 	if (squared(trial) <= limit * limit) { // no square root while sticking
 		sliding   = false;
@@ -75,7 +86,7 @@ struct ContactRotation {
 		// The per-step angles are tiny: 1/(1 + c) and 1/(1 + t^2) then come from series that are
 		// exact to rounding (truncation below 1e-18 relative where used), sparing two
 		// divisions on go()'s dependency chain; larger angles divide.
-		const double c = nPrev.dot(nNow), u = 1 - c;
+		const double c = dot(nPrev, nNow), u = 1 - c;
 		tilt           = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
 		if (tilt) w = (nPrev + nNow) * (u < 1e-6 ? 0.5 * (1 + 0.5 * u * (1 + 0.5 * u)) : 1 / (1 + c));
 		spin = spinAngle != 0;
@@ -90,13 +101,12 @@ struct ContactRotation {
 	// thus leaves a spring unchanged in the pair's frame.
 	MESO_HOT void apply(Vec3& xi) const
 	{
-		if (tilt) xi -= w * xi.dot(n);
-		else xi -= n * n.dot(xi);
-		if (spin) xi = xi * cosSpin + cross(n, xi) * sinSpin;
+		xi = tilt ? combine(1.0, xi, -dot(xi, n), w) : combine(1.0, xi, -dot(n, xi), n);
+		if (spin) xi = combine(cosSpin, xi, sinSpin, cross(n, xi));
 	}
 };
 
-inline void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
+MESO_INLINE void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
 // Arms from the centres to the contact point (a - delta/2 for a sphere, 0 for a wall, box or
 // facet) and the lever arm a'_12 of rolling and torsion (LUDING2008.md).
@@ -131,22 +141,22 @@ MESO_HOT Vec3 sphereContactVelocity(const Vec3& n, const Vec3& relVel, const Vec
 MESO_HOT ContactVelocities contactVelocities(const Vec3& n, const Vec3& vc, const Vec3& dw, double leverArm)
 {
 	ContactVelocities c;
-	c.sliding = vc - n * n.dot(vc);
+	c.sliding = combine(1.0, vc, -dot(n, vc), n);
 	c.rolling = leverArm * cross(n, dw);
-	c.twist   = leverArm * n.dot(dw);
+	c.twist   = leverArm * dot(n, dw);
 	return c;
 }
 
 // Energy absorbed by an element over one step (trapezoid of the force over the relative
 // displacement v dt, with the previous step's force), and its stored spring energy [J].
-inline double dotOf(const Vec3& a, const Vec3& b) { return a.dot(b); }
-inline double dotOf(double a, double b) { return a * b; }
-template <class V> inline double absorbedWork(const V& prevForce, const V& force, const V& v, double dt)
+MESO_INLINE double dotOf(const Vec3& a, const Vec3& b) { return a.dot(b); }
+MESO_INLINE double dotOf(double a, double b) { return a * b; }
+template <class V> MESO_INLINE double absorbedWork(const V& prevForce, const V& force, const V& v, double dt)
 {
 	return -0.5 * dt * (dotOf(prevForce, v) + dotOf(force, v));
 }
-inline double springEnergy(const ElementParams& p, const Vec3& xi) { return 0.5 * p.k * xi.squaredNorm(); }
-inline double springEnergy(const ElementParams& p, double xi) { return 0.5 * p.k * xi * xi; }
+MESO_INLINE double springEnergy(const ElementParams& p, const Vec3& xi) { return 0.5 * p.k * xi.squaredNorm(); }
+MESO_INLINE double springEnergy(const ElementParams& p, double xi) { return 0.5 * p.k * xi * xi; }
 
 // What a contact remembers of its tangential mechanisms; forces are those of the last step,
 // acting on body 1 (body 2 gets the opposite). The sliding force is not here: YADE keeps it as
@@ -168,17 +178,18 @@ struct TangentialEnergy {
 	double stored = 0, sliding = 0, rolling = 0, twisting = 0;
 };
 
-// One step of all tangential mechanisms of a contact in mechanical contact. rollTwist: rolling
-// and torsion act (ScGeom6D). level: f_n + kc delta (clamped at 0 here). energy may be null.
+// One step of all tangential mechanisms of a contact in mechanical contact (those that act: the
+// flags of p). level: f_n + kc delta (clamped at 0 here). energy may be null; inlined, so that a
+// caller passing nullptr gets no bookkeeping code at all.
 // fT: the sliding force on body 1, the last step's on entry, this step's on return.
-inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState& s, Vec3& fT, const ContactVelocities& v, const Vec3& n,
-                           double spinAngle, double dt, double level, TangentialEnergy* energy)
+MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, const Vec3& n, double spinAngle,
+                             double dt, double level, TangentialEnergy* energy)
 {
 	if (level < 0) level = 0;
-	if (s.nPrev.squaredNorm() > 0) {
+	if (dot(s.nPrev, s.nPrev) > 0) {
 		const ContactRotation rot(s.nPrev, n, spinAngle);
-		if (p.sliding.active()) rot.apply(s.xiT);
-		if (rollTwist && p.rolling.active()) rot.apply(s.xiR);
+		if (p.slides) rot.apply(s.xiT);
+		if (p.rolls) rot.apply(s.xiR);
 		if (energy) { // the previous forces serve only the energy bookkeeping
 			rot.apply(fT);
 			rot.apply(s.fR);
@@ -193,9 +204,9 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 		uR0 = springEnergy(p.rolling, s.xiR);
 		uO0 = springEnergy(p.twisting, s.xiO);
 	}
-	if (p.sliding.active()) fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
-	if (rollTwist && p.rolling.active()) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
-	if (rollTwist && p.twisting.active()) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level, s.slidingO).force;
+	if (p.slides) fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
+	if (p.rolls) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
+	if (p.twists) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level, s.slidingO).force;
 	if (!energy) return;
 	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.twisting, s.xiO);
 	energy->sliding  = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
@@ -205,7 +216,7 @@ inline void tangentialStep(const PairParams& p, bool rollTwist, TangentialState&
 }
 
 // The step at which the contact ends (delta <= 0): forces vanish; what the springs held is lost.
-inline void tangentialRelease(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, double dt, TangentialEnergy* energy)
+MESO_INLINE void tangentialRelease(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, double dt, TangentialEnergy* energy)
 {
 	if (energy) {
 		energy->sliding  = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);

@@ -227,6 +227,7 @@ namespace boost { namespace serialization {
 		ar& make_nvp("deltaA", p.deltaA)& make_nvp("delta0PerMaxP", p.delta0PerMaxP);
 		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.twisting);
 		ar& make_nvp("leverFactor", p.leverFactor)& make_nvp("rollTwist", p.rollTwist)& make_nvp("tangential", p.tangential);
+		ar& make_nvp("slides", p.slides)& make_nvp("rolls", p.rolls)& make_nvp("twists", p.twists);
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
 	}

@@ -98,6 +98,38 @@ for ext in (".yade.gz", ".xml"):
           flush=True)
     if not ok:
         failures.append(f"springs {ext}")
+# Contacts of one material pair share one MesoPairParams: saved once, shared again after loading,
+# and new contacts after a change of the material get new parameters (old ones keep theirs).
+from yade import utils, wrapper as w  # noqa: E402
+
+O.reset()
+shared = w.MesoMat(k1=100.0, kp=500.0, kc=100.0, kt=50.0, frictionAngle=0.3, density=2000)
+O.materials.append(shared)
+O.bodies.append([utils.sphere((i * 1.9e-3, 0, 0), 1e-3, material=shared) for i in range(6)])
+O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
+             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+             w.NewtonIntegrator()]
+O.dt = 1e-7
+O.step()
+path = os.path.join(tmp, "shared.xml")
+O.save(path)
+xml = open(path).read()
+n_params, n_contacts = xml.count("<delta0PerMaxP>"), O.interactions.countReal()  # one per saved parameter set
+ok = n_contacts == 5 and n_params == 1 and xml.count("<pairParams") == n_contacts
+print(("ok   " if ok else "FAIL ") + f"shared     {n_contacts} contacts saved with {n_params} MesoPairParams", flush=True)
+if not ok:
+    failures.append("shared parameters saved once")
+O.load(path)
+O.step()
+shared = O.materials[0]
+shared.kt = 80.0  # a new contact takes the new value, the old ones keep theirs
+O.bodies.append(utils.sphere((-1.9e-3, 0, 0), 1e-3, material=shared))
+O.step()
+kts = sorted(i.phys.kt for i in O.interactions if i.isReal)
+ok = kts == [50.0] * 5 + [80.0]
+print(("ok   " if ok else "FAIL ") + f"revision   sliding stiffness of the contacts after kt = 80 on the material: {kts}", flush=True)
+if not ok:
+    failures.append("material change after load")
 if failures:
     print(f"{len(failures)} FAILED: {failures}")
     sys.exit(1)
