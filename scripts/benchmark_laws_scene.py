@@ -1,5 +1,13 @@
 # Inside yade: times one dense, static packing under five contact laws, same steps, same threads.
 # Writes a JSON report to the path in argv[1]. Run through scripts/benchmark_laws.py.
+#
+# usage: yade -jN -n -x benchmark_laws_scene.py OUT [BODIES] [STEPS] [LAWS] [ROUNDS] [SPLIT]
+# Every law has its scene (O.addScene), built once; the laws then take turns in bursts of STEPS
+# steps, ROUNDS times. A shared machine has slow periods of seconds: a round lasts about a second,
+# so the laws of one round see the same machine, and ratios are taken within rounds.
+# SPLIT=1 also gives every law a second scene in which YADE's separate IGeomDispatcher,
+# IPhysDispatcher and LawDispatcher replace the InteractionLoop: YADE's engine timing then
+# reports the Law2 time on its own.
 import json
 import math
 import random
@@ -10,9 +18,12 @@ from yade import O, pack, wrapper as w
 
 out_path = sys.argv[1]
 n_target = int(sys.argv[2]) if len(sys.argv) > 2 else 6000
-steps = int(sys.argv[3]) if len(sys.argv) > 3 else 400
+steps = int(sys.argv[3]) if len(sys.argv) > 3 else 40
+names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
+rounds = int(sys.argv[5]) if len(sys.argv) > 5 else 15
+split = len(sys.argv) > 6 and sys.argv[6] == "1"
 R, RHO, K = 1e-3, 2000.0, 1e4
-side = 2 * R * (n_target / 0.74 * 0.5) ** (1 / 3.0) * 1.0
+side = 2 * R * (n_target / 0.74 * 0.5) ** (1 / 3.0)
 m = 4 / 3 * math.pi * R ** 3 * RHO
 dt = 0.02 * math.pi * math.sqrt(0.5 * m / (5 * K))  # stiffest branch kp = 5K
 
@@ -42,13 +53,14 @@ def law_setup(name):
     raise ValueError(name)
 
 
-def scene(name):
-    O.reset()
+def build(name, separate_dispatchers):
+    """Builds the law's scene in the current scene slot and creates its contacts."""
     mat, ig2, ip2, law = law_setup(name)
     O.materials.append(mat)
     # A regular hexagonal packing with a small overlap. Every body is blocked but moves with a small
-    # constant velocity and spin, so the contacts are the same under every law while relative
-    # velocities, slips and dashpots are exercised; forces do not feed back into the motion.
+    # constant velocity and spin (reversed after every burst, so that the packing stays put however
+    # long the benchmark runs): the contacts are the same under every law while relative velocities,
+    # slips and dashpots are exercised; forces do not feed back into the motion.
     O.bodies.append(pack.regularHexa(pack.inAlignedBox((0, 0, 0), (side, side, side)), radius=R, gap=-2e-6, material=mat))
     rnd = random.Random(1)
     for b in O.bodies:
@@ -57,45 +69,68 @@ def scene(name):
         b.state.angVel = tuple(rnd.uniform(-1.0, 1.0) for _ in range(3))
     collider = w.InsertionSortCollider([w.Bo1_Sphere_Aabb(aabbEnlargeFactor=1.01)], verletDist=0.05 * R)
     ig2.interactionDetectionFactor = 1.01  # the non-contact range of the meso law; the same for all
-    O.engines = [w.ForceResetter(), collider, w.InteractionLoop([ig2], [ip2], [law]),
-                 w.NewtonIntegrator(damping=0.3, gravity=(0, 0, 0))]
+    newton = w.NewtonIntegrator(damping=0.3, gravity=(0, 0, 0))
+    O.engines = [w.ForceResetter(), collider, w.InteractionLoop([ig2], [ip2], [law]), newton]
     O.dt = dt
-
-
-def timed(name):
-    scene(name)
     O.run(20, True)  # contacts and their physics are created
-    O.timingEnabled = True
+    if separate_dispatchers:
+        # YADE's stand-alone IGeomDispatcher uses the functor that the InteractionLoop cached in each
+        # interaction (it cannot start a scene); the packing is static, so no pair is new after this.
+        O.engines = [w.ForceResetter(), collider, w.IGeomDispatcher([ig2]), w.IPhysDispatcher([ip2]), w.LawDispatcher([law]), newton]
+        O.run(2, True)
+
+
+def burst():
+    """Runs one burst on the current scene; returns the engines' times [ns] (YADE's engine timing)."""
     for e in O.engines:
         e.execTime, e.execCount = 0, 0
-    t0 = time.time()
     O.run(steps, True)
-    wall = time.time() - t0
     times = {e.__class__.__name__: e.execTime for e in O.engines}
-    O.timingEnabled = False
-    return times, wall, O.interactions.countReal()
+    for b in O.bodies:
+        b.state.vel, b.state.angVel = -b.state.vel, -b.state.angVel
+    return times
 
 
-names = ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
-if len(sys.argv) > 4:  # a subset, e.g. for profiling
-    names = sys.argv[4].split(",")
-reps = int(sys.argv[5]) if len(sys.argv) > 5 else 3
-report = {"threads": O.numThreads, "steps": steps, "repetitions": reps, "bodies": 0, "laws": {}}
-# The laws take turns, several rounds; each keeps its best round (machine noise only slows down).
-for rep in range(reps):
-    for name in names:
-        times, wall, contacts = timed(name)
-        step_ns = sum(times.values()) / steps
-        L = report["laws"].setdefault(name, {"step_ns": math.inf})
-        if step_ns < L["step_ns"]:
-            L.update(contacts=contacts, step_ns=step_ns, interaction_loop_ns=times["InteractionLoop"] / steps, wall_s=wall)
-        if rep == reps - 1:
-            O.step()  # forces of one more step, kept for the serial/parallel comparison
-            L["positions"] = [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies]
-        report["bodies"] = len(O.bodies)
-        print(f"[{O.numThreads} thr, round {rep + 1}/{reps}] {name:16s} step {step_ns / 1e3:9.1f} us, interaction loop "
-              f"{times['InteractionLoop'] / steps / 1e3:8.1f} us, {contacts} contacts", flush=True)
-report["mesoPhys_bytes"] = w.MesoPhys().byteSize
-report["frictPhys_bytes"] = w.MesoPhys().frictPhysByteSize
+# Scene slots: (law, separate dispatchers?) -> scene id. Scene 0 is the one YADE starts with.
+slots = {}
+for name in names:
+    for sep in ([False, True] if split else [False]):
+        slots[(name, sep)] = O.addScene() if slots else 0
+        O.switchToScene(slots[(name, sep)])
+        build(name, sep)
+        print(f"[{O.numThreads} thr] built {name}{' (separate dispatchers)' if sep else ''}: {len(O.bodies)} spheres, "
+              f"{O.interactions.countReal()} contacts", flush=True)
+
+report = {"threads": O.numThreads, "steps": steps, "rounds": rounds, "laws": {}}
+O.timingEnabled = True
+t0 = time.time()
+for rnd in range(rounds):
+    # The order rotates, so that no law always follows the same one.
+    for k in range(len(names)):
+        name = names[(k + rnd) % len(names)]
+        L = report["laws"].setdefault(name, {"step_ns": [], "interaction_loop_ns": [], "law2_ns": [], "split_step_ns": []})
+        O.switchToScene(slots[(name, False)])
+        times = burst()
+        L["step_ns"].append(sum(times.values()) / steps)
+        L["interaction_loop_ns"].append(times["InteractionLoop"] / steps)
+        if split:
+            O.switchToScene(slots[(name, True)])
+            times = burst()
+            L["split_step_ns"].append(sum(times.values()) / steps)
+            L["law2_ns"].append(times["LawDispatcher"] / steps)
+    print(f"[{O.numThreads} thr] round {rnd + 1}/{rounds} ({time.time() - t0:.0f} s): "
+          + ", ".join(f"{n} {report['laws'][n]['step_ns'][-1] / 1e3:.0f}" for n in names) + " us/step", flush=True)
+O.timingEnabled = False
+
+for name in names:
+    O.switchToScene(slots[(name, False)])
+    L = report["laws"][name]
+    L["contacts"] = O.interactions.countReal()
+    O.step()  # forces of one more step, kept for the serial/parallel comparison
+    L["forces"] = [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies]
+report["bodies"] = len(O.bodies)
+probe = w.MesoPhys()
+report["mesoPhys_bytes"] = getattr(probe, "byteSize", None)
+report["frictPhys_bytes"] = getattr(probe, "frictPhysByteSize", None)
 with open(out_path, "w") as f:
     json.dump(report, f)
