@@ -3,8 +3,9 @@
 #
 # usage: yade -jN -n -x benchmark_laws_scene.py OUT [BODIES] [STEPS] [LAWS] [ROUNDS] [SPLIT]
 # Every law has its scene (O.addScene), built once; the laws then take turns in bursts of STEPS
-# steps, ROUNDS times. A shared machine has slow periods of seconds: a round lasts about a second,
-# so the laws of one round see the same machine, and ratios are taken within rounds.
+# timed steps (after a few untimed ones that warm the caches up), ROUNDS times. A shared machine
+# has slow periods of seconds: the laws of one round see much the same machine, so ratios are
+# taken within rounds.
 # SPLIT=1 also gives every law a second scene in which YADE's separate IGeomDispatcher,
 # IPhysDispatcher and LawDispatcher replace the InteractionLoop: YADE's engine timing then
 # reports the Law2 time on its own.
@@ -22,6 +23,7 @@ steps = int(sys.argv[3]) if len(sys.argv) > 3 else 40
 names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
 rounds = int(sys.argv[5]) if len(sys.argv) > 5 else 15
 split = len(sys.argv) > 6 and sys.argv[6] == "1"
+WARM = 5  # untimed steps at the start of every burst
 R, RHO, K = 1e-3, 2000.0, 1e4
 side = 2 * R * (n_target / 0.74 * 0.5) ** (1 / 3.0)
 m = 4 / 3 * math.pi * R ** 3 * RHO
@@ -81,7 +83,9 @@ def build(name, separate_dispatchers):
 
 
 def burst():
-    """Runs one burst on the current scene; returns the engines' times [ns] (YADE's engine timing)."""
+    """Runs one burst on the current scene; returns the engines' times [ns] (YADE's engine timing).
+    The first steps after a switch of scenes find the caches holding another scene: untimed."""
+    O.run(WARM, True)
     for e in O.engines:
         e.execTime, e.execCount = 0, 0
     O.run(steps, True)
@@ -131,6 +135,7 @@ for name in names:
 report["bodies"] = len(O.bodies)
 probe = w.MesoPhys()
 report["mesoPhys_bytes"] = getattr(probe, "byteSize", None)
+report["mesoTangentialPhys_bytes"] = w.MesoTangentialPhys().byteSize if hasattr(w, "MesoTangentialPhys") else None
 report["frictPhys_bytes"] = getattr(probe, "frictPhysByteSize", None)
 with open(out_path, "w") as f:
     json.dump(report, f)

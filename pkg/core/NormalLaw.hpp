@@ -95,6 +95,10 @@ MESO_HOT double adhesiveForce(const PairParams& p, NormalHistory& h, double delt
 	return 0;
 }
 
+// The adhesive force that adhesiveForce() gave at delta, from the history it left (a copy: nothing
+// changes). A contact keeps no copy of that force: it is a function of delta and the jump-in flag.
+MESO_INLINE double adhesiveForceAfter(const PairParams& p, NormalHistory h, double delta) { return adhesiveForce(p, h, delta); }
+
 // All parts of the normal force; vn = d(delta)/dt, > 0 while approaching [m/s].
 MESO_HOT NormalForce normalForce(const PairParams& p, const PairGeometry& g, NormalHistory& h, double delta, double vn)
 {

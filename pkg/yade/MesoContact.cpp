@@ -8,7 +8,7 @@
 
 namespace yade {
 
-YADE_PLUGIN((MesoMat)(MesoPairParams)(MesoPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPhys_Meso));
+YADE_PLUGIN((MesoMat)(MesoPairParams)(MesoPhys)(MesoTangentialPhys)(Ip2_MesoMat_MesoMat_MesoPhys)(Law2_ScGeom_MesoPhys_Meso));
 
 /* MesoMat */
 
@@ -85,6 +85,17 @@ void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict&
 	postLoad(*this);
 }
 
+/* MesoPhys */
+
+const meso::TangentialState& MesoPhys::tangentialState() const
+{
+	static const meso::TangentialState none;
+	const auto*                        t = dynamic_cast<const MesoTangentialPhys*>(this);
+	return t ? t->tangential : none;
+}
+
+int MesoPhys::byteSize() const { return dynamic_cast<const MesoTangentialPhys*>(this) ? sizeof(MesoTangentialPhys) : sizeof(MesoPhys); }
+
 /* Ip2 */
 
 void Ip2_MesoMat_MesoMat_MesoPhys::postLoad(Ip2_MesoMat_MesoMat_MesoPhys&)
@@ -133,9 +144,11 @@ Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const s
 void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return;
-	auto phys        = shared_ptr<MesoPhys>(new MesoPhys());
-	phys->pairParams = pairParams(m1, m2, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
-	const meso::PairParams& p = phys->pairParams->params;
+	shared_ptr<MesoPairParams> params = pairParams(m1, m2, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
+	const meso::PairParams&    p      = params->params;
+	// Law2::go() relies on it: a pair with tangential mechanisms gets the class that holds the springs.
+	auto phys        = p.tangential ? shared_ptr<MesoPhys>(new MesoTangentialPhys()) : shared_ptr<MesoPhys>(new MesoPhys());
+	phys->pairParams = params;
 	// Against a wall, box or facet a12 is the limit 2 a of the formula (MODEL.md §1); the radii
 	// those geometries report are not used, they differ between YADE's Ig2 functors.
 	phys->geometry               = meso::pairGeometry(p, sphereRadius(I->getId1(), scene), sphereRadius(I->getId2(), scene));
@@ -163,28 +176,36 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
 	const Real vn = meso::dot(relVel, n); // d(delta)/dt
 
+	meso::NormalForce f;
 	if (scene->trackEnergy) {
-		// The previous step's stored energy, from its force and history (before this step's update).
-		const Real prevElastic = meso::storedElastic(p, g, phys->history, phys->force.hysteretic);
-		const Real prevDelta   = std::isnan(phys->lastDelta) ? delta - vn * scene->dt : phys->lastDelta; // no force before
-		const meso::NormalForce      f = meso::normalForce(p, g, phys->history, delta, vn);
-		const meso::NormalEnergyStep e = meso::energyStep(p, g, prevDelta, prevElastic, phys->history, phys->force, f, delta);
+		// The previous step's force parts and stored energy, from what it left (before this step's update).
+		const bool        first = std::isnan(phys->lastDelta); // no force before
+		const Real        prevDelta = first ? delta - vn * scene->dt : phys->lastDelta;
+		meso::NormalForce prev;
+		if (!first) {
+			prev.hysteretic = phys->fHysteretic;
+			prev.adhesive   = meso::adhesiveForceAfter(p, phys->history, prevDelta);
+			prev.viscous    = phys->fViscous;
+		}
+		const Real prevElastic = meso::storedElastic(p, g, phys->history, prev.hysteretic);
+		f                      = meso::normalForce(p, g, phys->history, delta, vn);
+		const meso::NormalEnergyStep e = meso::energyStep(p, g, prevDelta, prevElastic, phys->history, prev, f, delta);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
 		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
 		scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
-		phys->force = f;
 	} else {
-		phys->force = meso::normalForce(p, g, phys->history, delta, vn);
+		f = meso::normalForce(p, g, phys->history, delta, vn);
 	}
-	const meso::NormalForce& f = phys->force;
-	phys->lastDelta            = delta;
+	phys->fHysteretic = f.hysteretic;
+	phys->fViscous    = f.viscous;
+	phys->lastDelta   = delta;
 	phys->normalForce          = f.total() * n;
 	Vector3r force1            = -phys->normalForce; // on body 1
 
 	if (p.tangential) {
 		const Real              dt   = scene->dt;
-		auto&                   t    = phys->tangential;
+		auto&                   t    = static_cast<MesoTangentialPhys*>(phys)->tangential; // the Ip2 made it so
 		const bool              both = g.radius1 > 0 && g.radius2 > 0;
 		const meso::ContactArms arms = meso::contactArms(p, g, delta);
 		Vector3r                b1, b2; // used off the sphere-sphere path only

@@ -77,13 +77,13 @@ class MesoPhys : public FrictPhys {
 public:
 	virtual ~MesoPhys() = default;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoPhys,FrictPhys,"Physics of one meso-particle contact, created by :yref:`Ip2_MesoMat_MesoMat_MesoPhys`: the mixed pair parameters, the contact history and the energy bookkeeping of :yref:`Law2_ScGeom_MesoPhys_Meso`. All are read-only from Python and are saved with the simulation. ``kn`` is the stiffest branch $k_p$ (for YADE's time-step tools).",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoPhys,FrictPhys,"Physics of one meso-particle contact, created by :yref:`Ip2_MesoMat_MesoMat_MesoPhys`: the mixed pair parameters, the contact history and the energy bookkeeping of :yref:`Law2_ScGeom_MesoPhys_Meso`. All are read-only from Python and are saved with the simulation. ``kn`` is the stiffest branch $k_p$ (for YADE's time-step tools). Contacts of pairs with sliding, rolling or torsion are :yref:`MesoTangentialPhys`, which adds the springs; a plain MesoPhys reports them as zero.",
 		((shared_ptr<MesoPairParams>,pairParams,,Attr::hidden,"Mixed parameters of the material pair, shared by its contacts (see the read-only properties)."))
 		((meso::PairGeometry,geometry,,Attr::hidden,"Radii and limit overlap of this contact (see the read-only properties)."))
 		((meso::NormalHistory,history,,Attr::hidden,"Contact history (see the read-only properties)."))
-		((meso::NormalForce,force,,Attr::hidden,"Parts of the normal force at the last step (see the read-only properties)."))
-		((Real,lastDelta,NaN,Attr::hidden,"Overlap at the last step (NaN before the first) [m], for the energy bookkeeping and the lever arm."))
-		((meso::TangentialState,tangential,,Attr::hidden,"Springs and quasi-forces of rolling and torsion (see the read-only properties); the sliding force is ``-shearForce``.")),
+		((Real,fHysteretic,0,Attr::hidden,"Hysteretic part of the normal force at the last step [N] (see hystereticForce)."))
+		((Real,fViscous,0,Attr::hidden,"Viscous part of the normal force at the last step [N] (see viscousForce); the adhesive part is a function of the overlap and the history, recomputed."))
+		((Real,lastDelta,NaN,Attr::hidden,"Overlap at the last step (NaN before the first) [m], for the energy bookkeeping and the lever arm.")),
 		createIndex();,
 		.add_property("deltaMax",&MesoPhys::getDeltaMax,"Largest overlap $\\delta_{max}$ of the current mechanical contact, after resets along the $-k_c$ branch [m].")
 		.add_property("delta0",&MesoPhys::getDelta0,"Force-free overlap $\\delta_0$ of the current un-/re-loading line [m].")
@@ -119,7 +119,7 @@ public:
 		.add_property("muS",&MesoPhys::getMuS,"Static sliding coefficient of the pair [-].")
 		.add_property("muR",&MesoPhys::getMuR,"Static rolling coefficient of the pair [-].")
 		.add_property("muO",&MesoPhys::getMuO,"Static torsion coefficient of the pair [-].")
-		.add_property("byteSize",&MesoPhys::byteSize,"Memory of one MesoPhys object [bytes] (what each contact costs).")
+		.add_property("byteSize",&MesoPhys::byteSize,"Memory of this object [bytes] (what each contact costs; a MesoTangentialPhys is larger).")
 		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.")
 	);
 	// clang-format on
@@ -146,16 +146,18 @@ public:
 	Real        getGammaN() const { return pair().gammaN; }
 	std::string getAdhesion() const { return meso::adhesionName(pair().adhesion); }
 	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair().k2Interpolation); }
-	Real        getFh() const { return force.hysteretic; }
-	Real        getFadh() const { return force.adhesive; }
-	Real        getFv() const { return force.viscous; }
-	Vector3r    getXiT() const { return tangential.xiT; }
-	Vector3r    getXiR() const { return tangential.xiR; }
-	Real        getXiO() const { return tangential.xiO; }
-	Vector3r    getFR() const { return tangential.fR; }
-	Real        getFO() const { return tangential.fO; }
-	Vector3r    getRollingTorque() const { return -getLeverArm() * tangential.nPrev.cross(tangential.fR); }
-	Vector3r    getTwistTorque() const { return getLeverArm() * tangential.fO * tangential.nPrev; }
+	Real        getFh() const { return fHysteretic; }
+	Real        getFadh() const { return std::isnan(lastDelta) ? 0.0 : meso::adhesiveForceAfter(pair(), history, lastDelta); }
+	Real        getFv() const { return fViscous; }
+	// The springs of a MesoTangentialPhys; zero for a contact without tangential mechanisms.
+	const meso::TangentialState& tangentialState() const;
+	Vector3r    getXiT() const { return tangentialState().xiT; }
+	Vector3r    getXiR() const { return tangentialState().xiR; }
+	Real        getXiO() const { return tangentialState().xiO; }
+	Vector3r    getFR() const { return tangentialState().fR; }
+	Real        getFO() const { return tangentialState().fO; }
+	Vector3r    getRollingTorque() const { return -getLeverArm() * tangentialState().nPrev.cross(tangentialState().fR); }
+	Vector3r    getTwistTorque() const { return getLeverArm() * tangentialState().fO * tangentialState().nPrev; }
 	// The lever arm is a function of the overlap: recomputed here, not stored per contact.
 	Real getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
 	Real        getKt() const { return pair().sliding.k; }
@@ -164,11 +166,26 @@ public:
 	Real        getMuS() const { return pair().sliding.muS; }
 	Real        getMuR() const { return pair().rolling.muS; }
 	Real        getMuO() const { return pair().twisting.muS; }
-	int         byteSize() const { return sizeof(MesoPhys); }
+	int         byteSize() const; // of this object's class
 	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
 };
 REGISTER_SERIALIZABLE(MesoPhys);
+
+// A contact whose pair has sliding, rolling or torsion: a MesoPhys with the springs. Contacts
+// without them stay MesoPhys and do not carry the springs (a contact's size is what bulk runs pay).
+class MesoTangentialPhys : public MesoPhys {
+public:
+	virtual ~MesoTangentialPhys() = default;
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(MesoTangentialPhys,MesoPhys,"A :yref:`MesoPhys` with the sliding, rolling and torsion springs of [Luding2008]_, created by :yref:`Ip2_MesoMat_MesoMat_MesoPhys` for pairs that have any of them (read them through the properties of :yref:`MesoPhys`).",
+		((meso::TangentialState,tangential,,Attr::hidden,"Springs and quasi-forces of rolling and torsion (see the read-only properties); the sliding force is ``-shearForce``.")),
+		createIndex();
+	);
+	// clang-format on
+	REGISTER_CLASS_INDEX(MesoTangentialPhys, MesoPhys);
+};
+REGISTER_SERIALIZABLE(MesoTangentialPhys);
 
 class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 	// One MesoPairParams per (material, material, ScGeom6D or not), made on first use; the Ip2 runs
@@ -238,10 +255,6 @@ namespace boost { namespace serialization {
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{
 		ar& make_nvp("deltaMax", h.deltaMax)& make_nvp("delta0", h.delta0)& make_nvp("touched", h.touched);
-	}
-	template <class Ar> void serialize(Ar& ar, meso::NormalForce& f, const unsigned int)
-	{
-		ar& make_nvp("hysteretic", f.hysteretic)& make_nvp("adhesive", f.adhesive)& make_nvp("viscous", f.viscous);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::TangentialState& s, const unsigned int)
 	{

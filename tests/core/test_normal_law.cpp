@@ -155,6 +155,19 @@ TEST(Adhesion, JumpInActsOnlyAfterFirstTouch)
 	EXPECT_NEAR(adhesiveForce(p, h, -0.5e-4), 5e-4 - 1e-3, 1e-18); // pull-off tail
 }
 
+TEST(Adhesion, RecomputedFromTheHistoryItLeft)
+{
+	// A contact keeps no adhesive force: adhesiveForceAfter() must give what adhesiveForce() gave.
+	for (Adhesion mode : {Adhesion::None, Adhesion::Reversible, Adhesion::JumpIn}) {
+		MaterialParams m; m.fa = 1e-3; m.kca = 10; m.adhesion = mode;
+		[[maybe_unused]] const auto [p, g] = pairOf(m); NormalHistory h;
+		for (double d : {-2e-4, -0.5e-4, -1e-6, 1e-6, 3e-5, -1e-6, -0.5e-4, -0.99e-4, 1e-7, -2e-4}) {
+			const double f = adhesiveForce(p, h, d);
+			EXPECT_EQ(adhesiveForceAfter(p, h, d), f) << adhesionName(mode) << " at " << d;
+		}
+	}
+}
+
 TEST(Viscous, OnlyInMechanicalContact)
 {
 	MaterialParams m; m.gammaN = 2e-3;

@@ -26,14 +26,18 @@ for label, mat, zeta, r2 in cases:
     O.step()
     e0 = O.energy.total()
     ek0 = 0.5 * s.m_r * v * v
-    worst = 0.0
+    worst = split = 0.0
     n = int(12 * s.contact_time / O.dt)
     for _ in range(n):
         O.step()
         worst = max(worst, abs(O.energy.total() - e0) / ek0)
+        if O.interactions.has(*s.ids) and O.interactions[s.ids].isReal:  # the parts add up to the force applied
+            i = O.interactions[s.ids]
+            parts = i.phys.hystereticForce + i.phys.adhesiveForce + i.phys.viscousForce
+            split = max(split, abs(i.phys.normalForce.dot(i.geom.normal) - parts) / (s.m_r * v / s.contact_time))
     parts = {k: O.energy[k] / ek0 for k in O.energy.keys()}
-    ok = worst <= 1e-4 and abs(e0 - ek0) / ek0 < 1e-6
-    line = f"{label:32s} max |E_total - E_0|/E_kin,0 = {worst:.2e}; final shares: " + \
+    ok = worst <= 1e-4 and abs(e0 - ek0) / ek0 < 1e-6 and split <= 1e-12
+    line = f"{label:32s} max |E_total - E_0|/E_kin,0 = {worst:.2e}; force parts vs normalForce {split:.1e}; final shares: " + \
         ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0)
     if label.startswith("fa=0"):  # rebound: all the lost kinetic energy went into the hysteresis
         e_th = theory.pair_collision(v, 100, 500, 100, 0.1, s.a12, s.m_r).e

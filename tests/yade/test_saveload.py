@@ -56,6 +56,7 @@ for moment in ("loading", "kc-branch", "tail"):
         direct = snapshot()
         O.load(path)
         loaded_hist = snapshot()[1]
+        loaded_class = type(O.interactions[0, 1].phys).__name__
         for _ in range(3000):
             O.step()
         resumed = snapshot()
@@ -116,7 +117,11 @@ O.save(path)
 xml = open(path).read()
 n_params, n_contacts = xml.count("<delta0PerMaxP>"), O.interactions.countReal()  # one per saved parameter set
 ok = n_contacts == 5 and n_params == 1 and xml.count("<pairParams") == n_contacts
-print(("ok   " if ok else "FAIL ") + f"shared     {n_contacts} contacts saved with {n_params} MesoPairParams", flush=True)
+# A pair with sliding carries the springs (MesoTangentialPhys); the collisions above had none (MesoPhys).
+classes = {type(i.phys).__name__ for i in O.interactions if i.isReal}
+ok = ok and classes == {"MesoTangentialPhys"} and loaded_class == "MesoPhys"
+print(("ok   " if ok else "FAIL ") + f"shared     {n_contacts} contacts saved with {n_params} MesoPairParams; classes {classes}, "
+      f"without tangential mechanisms {loaded_class}", flush=True)
 if not ok:
     failures.append("shared parameters saved once")
 O.load(path)
