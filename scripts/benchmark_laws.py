@@ -112,7 +112,7 @@ with tempfile.TemporaryDirectory() as tmp:
             info = {k: r[k] for k in ("bodies", "steps", "mesoPhys_bytes", "mesoTangentialPhys_bytes", "frictPhys_bytes")}
             for n, L in r["laws"].items():
                 M = runs[threads].setdefault(n, {"contacts": L["contacts"], "forces": L["forces"]})
-                for key in ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns"):
+                for key in ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns"):
                     M.setdefault(key, []).extend(L[key])
 
 r1, r2 = runs[1], runs[2]
@@ -164,6 +164,17 @@ if all(n in laws for n in ALL):
         rel = paired(r1, x, y)[1] / paired(r2, x, y)[1]
         relf = fastest(r1, x, y) / fastest(r2, x, y)
         print(f"      speed-up ({LETTER[x]}) / speed-up ({LETTER[y]}) = {rel:.3f}; {relf:.3f}   ({verdict(rel >= 1)}; {verdict(relf >= 1)})")
+
+print("\nInteractionLoop speed-up with 2 threads, measured inside the -j2 runs: each burst against its neighbour with a")
+print("one-thread InteractionLoop (median of the per-round ratios [quartiles]); and each law's against the others', paired by round:")
+loop_speedup = {n: [a / b for a, b in zip(r2[n]["serial_loop_ns"], r2[n]["interaction_loop_ns"])] for n in laws}
+for n in laws:
+    q = quartiles(loop_speedup[n])
+    print(f"  ({LETTER[n]}) {n:16s} {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}]")
+for x, y in (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack")):
+    if x in laws and y in laws:
+        q = quartiles([a / b for a, b in zip(loop_speedup[x], loop_speedup[y])])
+        print(f"      ({LETTER[x]}) / ({LETTER[y]}) = {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}] ({verdict(q[1] >= 1)})")
 
 print("\n-j2 speed-up (ratio of the median whole steps; of the fastest) and serial/parallel difference of the forces and torques on the bodies:")
 for n in laws:

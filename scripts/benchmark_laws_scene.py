@@ -6,6 +6,8 @@
 # timed steps (after a few untimed ones that warm the caches up), ROUNDS times. A shared machine
 # has slow periods of seconds: the laws of one round see much the same machine, so ratios are
 # taken within rounds.
+# With several threads, every burst is followed by one with a one-thread InteractionLoop (the
+# speed-up of the loop that runs the Law2, from neighbouring bursts).
 # SPLIT=1 also gives every law a second scene in which YADE's separate IGeomDispatcher,
 # IPhysDispatcher and LawDispatcher replace the InteractionLoop: YADE's engine timing then
 # reports the Law2 time on its own.
@@ -112,11 +114,19 @@ for rnd in range(rounds):
     # The order rotates, so that no law always follows the same one.
     for k in range(len(names)):
         name = names[(k + rnd) % len(names)]
-        L = report["laws"].setdefault(name, {"step_ns": [], "interaction_loop_ns": [], "law2_ns": [], "split_step_ns": []})
+        L = report["laws"].setdefault(name, {"step_ns": [], "interaction_loop_ns": [], "law2_ns": [], "split_step_ns": [],
+                                             "serial_loop_ns": []})
         O.switchToScene(slots[(name, False)])
         times = burst()
         L["step_ns"].append(sum(times.values()) / steps)
         L["interaction_loop_ns"].append(times["InteractionLoop"] / steps)
+        if O.numThreads > 1:
+            # The same scene right after with a one-thread InteractionLoop (the other engines keep their threads):
+            # the speed-up of the loop that runs the Law2, measured in pairs of neighbouring bursts.
+            loop = O.engines[2]
+            loop.ompThreads = 1
+            L["serial_loop_ns"].append(burst()["InteractionLoop"] / steps)
+            loop.ompThreads = -1
         if split:
             O.switchToScene(slots[(name, True)])
             times = burst()
