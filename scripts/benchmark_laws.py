@@ -3,7 +3,9 @@
 
 Runs scripts/benchmark_laws_scene.py inside YADE with 1 and 2 threads on one dense, static packing
 under (a) Law2_ScGeom_FrictPhys_CundallStrack, (b) Law2_ScGeom_LudingPhys_Basic, (c) the meso law with
-the normal force and adhesion, (d) the meso law with sliding, rolling and torsion on ScGeom6D,
+the normal force and adhesion, (d) the meso law with sliding, rolling and torsion on ScGeom6D as the
+README sets it up (Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False): the law reads no relative
+rotation), (d') the same with YADE's default Ig2 (which computes the rotations all the same), and
 (e) Law2_ScGeom6D_CohFrictPhys_CohesionMoment with rolling and twisting moments.
 
 All scenes live in one YADE process and take turns in short bursts, round after round; ratios are
@@ -26,8 +28,8 @@ import sys
 import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-ALL = ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
-LETTER = dict(zip(ALL, "abcde"))
+ALL = ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "meso-full-rotations", "cohesion-moment"]
+LETTER = dict(zip(ALL, ["a", "b", "c", "d", "d'", "e"]))
 ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("--yade", default=os.environ.get("YADE", "yade"), help="YADE launcher (default: yade, or $YADE)")
 ap.add_argument("--bodies", type=int, default=6000, help="target number of spheres (a hexagonal lattice fills the box)")
@@ -46,6 +48,8 @@ if any(n not in ALL for n in laws):
 if args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 1:
     sys.exit("benchmark_laws: --bodies must be >= 100, --steps >= 5, --rounds >= 3, --sessions >= 1")
 SCENE = os.path.join(here, "benchmark_laws_scene.py")
+PAIRS = (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-full-rotations", "cohesion-moment"),
+         ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack"))
 PROFILE_BODIES, PROFILE_STEPS = 2000, 60
 
 
@@ -61,6 +65,7 @@ def profile():
     print(f"profile (callgrind instructions, {PROFILE_BODIES} spheres, -j1, all time steps):")
     symbols = {"cundall-strack": "Law2_ScGeom_FrictPhys_CundallStrack::go(", "luding-basic": "Law2_ScGeom_LudingPhys_Basic::go(",
                "meso-normal": "Law2_ScGeom_MesoPhys_Meso::go(", "meso-full": "Law2_ScGeom_MesoPhys_Meso::go(",
+               "meso-full-rotations": "Law2_ScGeom_MesoPhys_Meso::go(",
                "cohesion-moment": "Law2_ScGeom6D_CohFrictPhys_CohesionMoment::go("}
     for n in laws:
         with tempfile.TemporaryDirectory() as tmp:
@@ -84,7 +89,7 @@ def profile():
                                                           and "thunk" not in ln and ">" in ln)).group(1).replace(",", ""))
         law = int(lines[head].split()[0].replace(",", ""))
         steps = calls / contacts
-        print(f"  ({LETTER[n]}) {n:16s} step {total / calls:6.0f} per contact; Law2::go() {law / calls:5.0f} per call "
+        print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} step {total / calls:6.0f} per contact; Law2::go() {law / calls:5.0f} per call "
               f"({law / total:5.1%} of the step); in go():")
         for ln in lines[head + 1:]:
             m = re.match(r"\s*([\d,]+) \([\s\d.]+%\)\s+>\s+\S*?:(.*?)\(.*\((\d[\d,]*)x\)", ln)
@@ -126,7 +131,7 @@ for threads, r in runs.items():
     for n in laws:
         L, c = r[n], r[n]["contacts"]
         share = statistics.median(a / b for a, b in zip(L["law2_ns"], L["split_step_ns"]))
-        line = (f"      ({LETTER[n]}) {n:16s} {statistics.median(L['step_ns']) / c:6.1f} ns {min(L['step_ns']) / c:6.1f} ns "
+        line = (f"      {'(' + LETTER[n] + ')':4s} {n:19s} {statistics.median(L['step_ns']) / c:6.1f} ns {min(L['step_ns']) / c:6.1f} ns "
                 f"{statistics.median(L['interaction_loop_ns']) / c:13.1f} ns "
                 f"{statistics.median(L['law2_ns']) / c:6.1f} ns {share:9.1%}")
         if "cundall-strack" in r:
@@ -153,14 +158,14 @@ if all(n in laws for n in ALL):
     print("\ncriteria (whole-step time): median of the per-round ratios [quartiles]; ratio of the fastest bursts")
     for threads, r in runs.items():
         for (x, y), bound, strict in ((("meso-normal", "cundall-strack"), 1.10, False), (("meso-normal", "luding-basic"), 1.0, True),
-                                      (("meso-full", "cohesion-moment"), 1.0, False)):
+                                      (("meso-full", "cohesion-moment"), 1.0, False), (("meso-full-rotations", "cohesion-moment"), 1.0, False)):
             q, f = paired(r, x, y), fastest(r, x, y)
             ok = (lambda v: v < bound) if strict else (lambda v: v <= bound)
             print(f"  -j{threads}: ({LETTER[x]})/({LETTER[y]}) = {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}]; {f:.3f}   "
                   f"({'<' if strict else '<='} {bound}: {verdict(ok(q[1]))}; {verdict(ok(f))})")
     # speed-up(x)/speed-up(y) = [x/y at -j1]/[x/y at -j2]: the within-round ratios cancel the machine's state.
     print("  -j2 speed-ups relative to each other, from the paired medians and from the fastest bursts (>= 1: at least as good):")
-    for x, y in (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack")):
+    for x, y in PAIRS:
         rel = paired(r1, x, y)[1] / paired(r2, x, y)[1]
         relf = fastest(r1, x, y) / fastest(r2, x, y)
         print(f"      speed-up ({LETTER[x]}) / speed-up ({LETTER[y]}) = {rel:.3f}; {relf:.3f}   ({verdict(rel >= 1)}; {verdict(relf >= 1)})")
@@ -170,8 +175,8 @@ print("one-thread InteractionLoop (median of the per-round ratios [quartiles]); 
 loop_speedup = {n: [a / b for a, b in zip(r2[n]["serial_loop_ns"], r2[n]["interaction_loop_ns"])] for n in laws}
 for n in laws:
     q = quartiles(loop_speedup[n])
-    print(f"  ({LETTER[n]}) {n:16s} {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}]")
-for x, y in (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack")):
+    print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}]")
+for x, y in PAIRS:
     if x in laws and y in laws:
         q = quartiles([a / b for a, b in zip(loop_speedup[x], loop_speedup[y])])
         print(f"      ({LETTER[x]}) / ({LETTER[y]}) = {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}] ({verdict(q[1] >= 1)})")
@@ -185,7 +190,7 @@ for n in laws:
     for part in (slice(0, 3), slice(3, 6)):  # forces, then torques, each against its own scale
         scale = max(max(abs(a) for a in p[part]) for p in f1) or 1.0
         diff.append(max(max(abs(a - b) for a, b in zip(p[part], q[part])) for p, q in zip(f1, f2)) / scale)
-    print(f"  ({LETTER[n]}) {n:16s} speed-up {s:.3f}; {sf:.3f}; max |F(-j2) - F(-j1)| / max |F| = {diff[0]:.1e}, same for torques {diff[1]:.1e}")
+    print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} speed-up {s:.3f}; {sf:.3f}; max |F(-j2) - F(-j1)| / max |F| = {diff[0]:.1e}, same for torques {diff[1]:.1e}")
 if args.json:
     for r in runs.values():
         for L in r.values():

@@ -6,7 +6,7 @@
 # timed steps (after a few untimed ones that warm the caches up), ROUNDS times. A shared machine
 # has slow periods of seconds: the laws of one round see much the same machine, so ratios are
 # taken within rounds.
-# With several threads, every burst is followed by one with a one-thread InteractionLoop (the
+# Every burst is followed by one with a one-thread InteractionLoop (with several threads: the
 # speed-up of the loop that runs the Law2, from neighbouring bursts).
 # SPLIT=1 also gives every law a second scene in which YADE's separate IGeomDispatcher,
 # IPhysDispatcher and LawDispatcher replace the InteractionLoop: YADE's engine timing then
@@ -22,7 +22,8 @@ from yade import O, pack, wrapper as w
 out_path = sys.argv[1]
 n_target = int(sys.argv[2]) if len(sys.argv) > 2 else 6000
 steps = int(sys.argv[3]) if len(sys.argv) > 3 else 40
-names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "cohesion-moment"]
+names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "meso-full-rotations",
+                                                          "cohesion-moment"]
 rounds = int(sys.argv[5]) if len(sys.argv) > 5 else 15
 split = len(sys.argv) > 6 and sys.argv[6] == "1"
 WARM = 5  # untimed steps at the start of every burst
@@ -34,8 +35,10 @@ dt = 0.02 * math.pi * math.sqrt(0.5 * m / (5 * K))  # stiffest branch kp = 5K
 
 def law_setup(name):
     """(material, geometry functor, Ip2, Law2) of each contender; normal stiffness ~K for all."""
-    six = name in ("meso-full", "cohesion-moment")
+    six = name in ("meso-full", "meso-full-rotations", "cohesion-moment")
     ig2 = w.Ig2_Sphere_Sphere_ScGeom6D() if six else w.Ig2_Sphere_Sphere_ScGeom()
+    if name == "meso-full":  # as the README sets it up: the law reads no relative rotation of ScGeom6D
+        ig2.updateRotations = False
     if name == "cundall-strack":
         return w.FrictMat(young=K / R, poisson=0.3, density=RHO, frictionAngle=0.5), ig2, \
             w.Ip2_FrictMat_FrictMat_FrictPhys(), w.Law2_ScGeom_FrictPhys_CundallStrack()
@@ -45,7 +48,7 @@ def law_setup(name):
     if name == "meso-normal":
         return w.MesoMat(k1=K, kp=5 * K, kc=K, phiF=0.05, gammaN=1e-4, fa=1e-4, kca=1e3, adhesion="reversible",
                          density=RHO), ig2, w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Law2_ScGeom_MesoPhys_Meso()
-    if name == "meso-full":
+    if name in ("meso-full", "meso-full-rotations"):
         return w.MesoMat(k1=K, kp=5 * K, kc=K, phiF=0.05, gammaN=1e-4, fa=1e-4, kca=1e3, adhesion="reversible",
                          frictionAngle=0.5, kt=0.2 * K, gammaT=2e-5, kr=0.1 * K, gammaR=5e-6, muR=0.1, ko=0.1 * K,
                          gammaO=5e-6, muO=0.1, density=RHO), ig2, w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Law2_ScGeom_MesoPhys_Meso()
@@ -120,13 +123,13 @@ for rnd in range(rounds):
         times = burst()
         L["step_ns"].append(sum(times.values()) / steps)
         L["interaction_loop_ns"].append(times["InteractionLoop"] / steps)
-        if O.numThreads > 1:
-            # The same scene right after with a one-thread InteractionLoop (the other engines keep their threads):
-            # the speed-up of the loop that runs the Law2, measured in pairs of neighbouring bursts.
-            loop = O.engines[2]
-            loop.ompThreads = 1
-            L["serial_loop_ns"].append(burst()["InteractionLoop"] / steps)
-            loop.ompThreads = -1
+        # The same scene right after with a one-thread InteractionLoop (the other engines keep their threads):
+        # the speed-up of the loop that runs the Law2, measured in pairs of neighbouring bursts. Also with one
+        # thread in all, so that every run makes the same steps (the serial/parallel comparison).
+        loop = O.engines[2]
+        loop.ompThreads = 1
+        L["serial_loop_ns"].append(burst()["InteractionLoop"] / steps)
+        loop.ompThreads = -1
         if split:
             O.switchToScene(slots[(name, True)])
             times = burst()

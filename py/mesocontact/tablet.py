@@ -75,7 +75,8 @@ def engines(controller=None, extra=()):
         _w.ForceResetter(),
         _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(), _w.Bo1_Box_Aabb()], label="collider"),
         _w.InteractionLoop(
-            [_w.Ig2_Sphere_Sphere_ScGeom6D(), _w.Ig2_Box_Sphere_ScGeom6D()],
+            # The law reads no relative rotation of ScGeom6D (only the bodies' spins): YADE need not compute them.
+            [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False), _w.Ig2_Box_Sphere_ScGeom6D()],
             [_w.Ip2_MesoMat_MesoMat_MesoPhys()],
             [_w.Law2_ScGeom_MesoPhys_Meso(label="law")]),
         background_damping(),
