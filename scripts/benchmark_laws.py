@@ -50,7 +50,7 @@ if args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 1:
 SCENE = os.path.join(here, "benchmark_laws_scene.py")
 PAIRS = (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-full-rotations", "cohesion-moment"),
          ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack"))
-PROFILE_BODIES, PROFILE_STEPS = 2000, 60
+PROFILE_BODIES, PROFILE_STEPS = 2000, 30
 
 
 def quartiles(xs):
@@ -81,21 +81,30 @@ def profile():
             with open(os.path.join(tmp, "p.json")) as f:
                 contacts = json.load(f)["laws"][n]["contacts"]
         total = int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", tree).group(1).replace(",", ""))
-        # The block of go() in the calling tree: its inclusive count, then one line per callee.
+        # The blocks of go() in the calling tree (callgrind splits a function by the files its inlined code
+        # comes from): the largest inclusive count is go()'s, the callee lines are summed over the blocks.
         lines = tree.splitlines()
-        head = next(i for i, ln in enumerate(lines) if re.match(r"\s*[\d,]+ \([\s\d.]+%\)\s+\*\s+\S*:(yade::)?" + re.escape(symbols[n]), ln)
-                    and "thunk" not in ln)
-        calls = int(re.search(r"\((\d[\d,]*)x\)", next(ln for ln in lines if symbols[n] in ln and "(x)" not in ln and "x)" in ln
-                                                          and "thunk" not in ln and ">" in ln)).group(1).replace(",", ""))
-        law = int(lines[head].split()[0].replace(",", ""))
+        star = re.compile(r"\s*([\d,]+) \([\s\d.]+%\)\s+\*\s+\S*:(yade::)?" + re.escape(symbols[n]))
+        callee = re.compile(r"\s*([\d,]+) \([\s\d.]+%\)\s+>\s+\S*?:(.*?)\(.*\((\d[\d,]*)x\)")
+        law, callees = 0, {}
+        for i, ln in enumerate(lines):
+            m = star.match(ln)
+            if not m or "thunk" in ln:
+                continue
+            law = max(law, int(m.group(1).replace(",", "")))
+            for c in lines[i + 1:]:
+                mc = callee.match(c)
+                if not mc:
+                    break
+                cost, count = callees.get(mc.group(2), (0, 0))
+                callees[mc.group(2)] = (cost + int(mc.group(1).replace(",", "")), count + int(mc.group(3).replace(",", "")))
+        calls = max(int(m.group(1).replace(",", "")) for m in
+                    (re.search(r"\((\d[\d,]*)x\)", ln) for ln in lines if symbols[n] in ln and ">" in ln and "thunk" not in ln) if m)
         steps = calls / contacts
         print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} step {total / calls:6.0f} per contact; Law2::go() {law / calls:5.0f} per call "
               f"({law / total:5.1%} of the step); in go():")
-        for ln in lines[head + 1:]:
-            m = re.match(r"\s*([\d,]+) \([\s\d.]+%\)\s+>\s+\S*?:(.*?)\(.*\((\d[\d,]*)x\)", ln)
-            if not m:
-                break
-            print(f"      {int(m.group(1).replace(',', '')) / calls:6.0f}  {m.group(2)[-60:]} ({int(m.group(3).replace(',', '')) / calls:.1f} per call)")
+        for name, (cost, count) in sorted(callees.items(), key=lambda kv: -kv[1][0]):
+            print(f"      {cost / calls:6.0f}  {name[-60:]} ({count / calls:.1f} per call)")
         print(f"      ({steps:.0f} steps)")
 
 
