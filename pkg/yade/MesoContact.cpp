@@ -160,6 +160,25 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 
 /* Law2 */
 
+void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
+{
+	const std::lock_guard<std::mutex> lock(energyMutex);
+	if (!normalEnergiesReady.load(std::memory_order_relaxed)) {
+		scene->energy->add(0, "mesoElastic", elasticIx, /*reset*/ true);
+		scene->energy->add(0, "mesoPlastic", plasticIx, false);
+		scene->energy->add(0, "mesoAdhesive", adhesiveIx, false);
+		scene->energy->add(0, "mesoViscous", viscousIx, false);
+		normalEnergiesReady.store(true, std::memory_order_release);
+	}
+	if (tangential && !tangentialEnergiesReady.load(std::memory_order_relaxed)) {
+		scene->energy->add(0, "mesoSprings", springsIx, /*reset*/ true);
+		scene->energy->add(0, "mesoSliding", slidingIx, false);
+		scene->energy->add(0, "mesoRolling", rollingIx, false);
+		scene->energy->add(0, "mesoTwisting", twistingIx, false);
+		tangentialEnergiesReady.store(true, std::memory_order_release);
+	}
+}
+
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	const auto*     geom   = static_cast<const ScGeom*>(ig.get());
@@ -178,6 +197,7 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 
 	meso::NormalForce f;
 	if (scene->trackEnergy) {
+		if (!normalEnergiesReady.load(std::memory_order_acquire)) registerEnergies(p.tangential);
 		// The previous step's force parts and stored energy, from what it left (before this step's update).
 		const bool        first = std::isnan(phys->lastDelta); // no force before
 		const Real        prevDelta = first ? delta - vn * scene->dt : phys->lastDelta;
@@ -230,6 +250,7 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 			else if (meso::dot(t.nPrev, t.nPrev) > 0) meso::tangentialRelease(p, t, fT, v, dt, e);
 		};
 		if (scene->trackEnergy) {
+			if (!tangentialEnergiesReady.load(std::memory_order_acquire)) registerEnergies(true);
 			meso::TangentialEnergy e;
 			advance(&e);
 			scene->energy->add(e.stored, "mesoSprings", springsIx, true);

@@ -9,6 +9,7 @@
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
+#include <atomic>
 #include <map>
 #include <mutex>
 #include <tuple>
@@ -213,6 +214,13 @@ public:
 REGISTER_SERIALIZABLE(Ip2_MesoMat_MesoMat_MesoPhys);
 
 class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
+	// YADE's EnergyTracker looks a new name up without a lock: threads that meet it first at the same
+	// time each register it, and the shares added under all but one index are lost. So the law
+	// registers its names once, under its own lock, before any thread adds to them.
+	std::mutex        energyMutex;
+	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
+	void              registerEnergies(bool tangential);
+
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	// clang-format off
