@@ -44,7 +44,7 @@ report = {"threads": O.numThreads, "contacts": contacts,
           "forces": [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies],
           "energy": {k: O.energy[k] for k in O.energy.keys()},
           "slipping": sum(1 for i in O.interactions if i.isReal and i.phys.shearForce.norm() > 0
-                          and abs(i.phys.shearForce.norm() - 0.8 * i.phys.muS * (i.phys.hystereticForce + i.phys.viscousForce
+                          and abs(i.phys.shearForce.norm() - mat.phiD * i.phys.muS * (i.phys.hystereticForce + i.phys.viscousForce
                                                                         + i.phys.kc * i.geom.penetrationDepth)) < 1e-9 * i.phys.shearForce.norm())}
 with open(sys.argv[1], "w") as f:
     json.dump(report, f)
