@@ -16,11 +16,13 @@ dispatchers replace the InteractionLoop), -j2 speed-ups, the serial/parallel dif
 forces, the size of MesoPhys, and with --profile callgrind's instructions per go() call.
 
 usage: scripts/benchmark_laws.py [--yade YADE] [--bodies N] [--steps S] [--rounds R] [--sessions K]
-                                 [--laws a,b,...] [--profile] [--json FILE]
+                                 [--laws a,b,...] [--profile] [--json FILE] [--merge FILE ...]
+Several runs' measurements (--json) can be pooled with --merge (with --sessions 0: no new run).
 """
 import argparse
 import json
 import os
+import random
 import re
 import statistics
 import subprocess
@@ -41,12 +43,13 @@ ap.add_argument("--profile", action="store_true",
                 help="only profile: each law under valgrind's callgrind (2000 spheres, -j1): Law2 share of the "
                      "instructions and instructions per go() call, with the hottest functions (slow: minutes)")
 ap.add_argument("--json", help="also write the merged measurements to this file")
+ap.add_argument("--merge", nargs="+", default=[], help="pool the rounds of earlier runs' --json files with this run's")
 args = ap.parse_args()
 laws = args.laws.split(",")
 if any(n not in ALL for n in laws):
     sys.exit(f"benchmark_laws: --laws must be taken from {','.join(ALL)}")
-if args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 1:
-    sys.exit("benchmark_laws: --bodies must be >= 100, --steps >= 5, --rounds >= 3, --sessions >= 1")
+if args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 0 or (args.sessions == 0 and not args.merge):
+    sys.exit("benchmark_laws: --bodies must be >= 100, --steps >= 5, --rounds >= 3, --sessions >= 1 (0 only with --merge)")
 SCENE = os.path.join(here, "benchmark_laws_scene.py")
 PAIRS = (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-full-rotations", "cohesion-moment"),
          ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack"))
@@ -129,6 +132,23 @@ with tempfile.TemporaryDirectory() as tmp:
                 for key in ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns"):
                     M.setdefault(key, []).extend(L[key])
 
+KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")
+for path in args.merge:
+    with open(path) as f:
+        old = json.load(f)
+    if old["info"]["bodies"] != info.get("bodies", old["info"]["bodies"]) or old["info"]["steps"] != info.get("steps", old["info"]["steps"]):
+        sys.exit(f"benchmark_laws: {path} was measured on another scene (bodies, steps): not pooled")
+    info = info or old["info"]
+    for threads in (1, 2):
+        for n in laws:
+            L = old["runs"][str(threads)].get(n)
+            if L is None:
+                sys.exit(f"benchmark_laws: {path} has no measurements of {n}")
+            M = runs[threads].setdefault(n, {"contacts": L["contacts"]})
+            for key in KEYS:
+                M.setdefault(key, []).extend(L[key])
+    print(f"pooled with {path}")
+
 r1, r2 = runs[1], runs[2]
 rounds_total = len(r1[laws[0]]["step_ns"])
 print(f"\n{info['bodies']} spheres, {r1[laws[0]]['contacts']} contacts; {rounds_total} rounds of {info['steps']} steps per law and thread "
@@ -159,25 +179,41 @@ def fastest(r, num, den):
     return min(r[num]["step_ns"]) / min(r[den]["step_ns"])
 
 
+def bootstrap_relative(r1, r2, x, y, samples=2000):
+    """90 % interval of [median x/y at -j1] / [median x/y at -j2], the rounds of each thread count resampled."""
+    rng = random.Random(7)
+    a = [p / q for p, q in zip(r1[x]["step_ns"], r1[y]["step_ns"])]
+    b = [p / q for p, q in zip(r2[x]["step_ns"], r2[y]["step_ns"])]
+    est = sorted(statistics.median(rng.choices(a, k=len(a))) / statistics.median(rng.choices(b, k=len(b))) for _ in range(samples))
+    return est[int(0.05 * samples)], est[int(0.95 * samples) - 1]
+
+
 def verdict(ok):
     return "yes" if ok else "NO"
 
 
-if all(n in laws for n in ALL):
+CRITERIA = ((("meso-normal", "cundall-strack"), 1.10, False), (("meso-normal", "luding-basic"), 1.0, True),
+            (("meso-full", "cohesion-moment"), 1.0, False), (("meso-full-rotations", "cohesion-moment"), 1.0, False))
+present = [(xy, b, s) for xy, b, s in CRITERIA if all(n in laws for n in xy)]
+if present:
     print("\ncriteria (whole-step time): median of the per-round ratios [quartiles]; ratio of the fastest bursts")
     for threads, r in runs.items():
-        for (x, y), bound, strict in ((("meso-normal", "cundall-strack"), 1.10, False), (("meso-normal", "luding-basic"), 1.0, True),
-                                      (("meso-full", "cohesion-moment"), 1.0, False), (("meso-full-rotations", "cohesion-moment"), 1.0, False)):
+        for (x, y), bound, strict in present:
             q, f = paired(r, x, y), fastest(r, x, y)
             ok = (lambda v: v < bound) if strict else (lambda v: v <= bound)
             print(f"  -j{threads}: ({LETTER[x]})/({LETTER[y]}) = {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}]; {f:.3f}   "
                   f"({'<' if strict else '<='} {bound}: {verdict(ok(q[1]))}; {verdict(ok(f))})")
+pairs = [(x, y) for x, y in PAIRS if x in laws and y in laws]
+if pairs:
     # speed-up(x)/speed-up(y) = [x/y at -j1]/[x/y at -j2]: the within-round ratios cancel the machine's state.
-    print("  -j2 speed-ups relative to each other, from the paired medians and from the fastest bursts (>= 1: at least as good):")
-    for x, y in PAIRS:
+    print("  -j2 speed-ups relative to each other (>= 1: at least as good), from the paired medians [90 % bootstrap interval")
+    print("  over the rounds] and from the fastest bursts:")
+    for x, y in pairs:
         rel = paired(r1, x, y)[1] / paired(r2, x, y)[1]
+        lo, hi = bootstrap_relative(r1, r2, x, y)
         relf = fastest(r1, x, y) / fastest(r2, x, y)
-        print(f"      speed-up ({LETTER[x]}) / speed-up ({LETTER[y]}) = {rel:.3f}; {relf:.3f}   ({verdict(rel >= 1)}; {verdict(relf >= 1)})")
+        print(f"      speed-up ({LETTER[x]}) / speed-up ({LETTER[y]}) = {rel:.3f} [{lo:.3f}, {hi:.3f}]; {relf:.3f}   "
+              f"({verdict(rel >= 1)}; {verdict(relf >= 1)})")
 
 print("\nInteractionLoop speed-up with 2 threads, measured inside the -j2 runs: each burst against its neighbour with a")
 print("one-thread InteractionLoop (median of the per-round ratios [quartiles]); and each law's against the others', paired by round:")
@@ -194,6 +230,9 @@ print("\n-j2 speed-up (ratio of the median whole steps; of the fastest) and seri
 for n in laws:
     s = statistics.median(r1[n]["step_ns"]) / statistics.median(r2[n]["step_ns"])
     sf = min(r1[n]["step_ns"]) / min(r2[n]["step_ns"])
+    if "forces" not in r1[n]:  # measured in no run of this invocation
+        print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} speed-up {s:.3f}; {sf:.3f}")
+        continue
     f1, f2 = r1[n]["forces"], r2[n]["forces"]
     diff = []
     for part in (slice(0, 3), slice(3, 6)):  # forces, then torques, each against its own scale
@@ -203,6 +242,6 @@ for n in laws:
 if args.json:
     for r in runs.values():
         for L in r.values():
-            L.pop("forces")
+            L.pop("forces", None)
     with open(args.json, "w") as f:
         json.dump({"info": info, "runs": runs}, f)
