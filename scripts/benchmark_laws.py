@@ -42,7 +42,7 @@ ap.add_argument("--laws", default=",".join(ALL), help="comma-separated subset of
 ap.add_argument("--profile", action="store_true",
                 help="only profile: each law under valgrind's callgrind (2000 spheres, -j1): Law2 share of the "
                      "instructions and instructions per go() call, with the hottest functions (slow: minutes)")
-ap.add_argument("--json", help="also write the merged measurements to this file")
+ap.add_argument("--json", help="also write this invocation's measurements (all its sessions) to this file")
 ap.add_argument("--merge", nargs="+", default=[], help="pool the rounds of earlier runs' --json files with this run's")
 args = ap.parse_args()
 laws = args.laws.split(",")
@@ -133,6 +133,9 @@ with tempfile.TemporaryDirectory() as tmp:
                     M.setdefault(key, []).extend(L[key])
 
 KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")
+if args.json and args.sessions:  # this invocation's own measurements only, so that pooling them later counts nothing twice
+    with open(args.json, "w") as f:
+        json.dump({"info": info, "runs": {t: {n: {k: v for k, v in L.items() if k != "forces"} for n, L in r.items()} for t, r in runs.items()}}, f)
 for path in args.merge:
     with open(path) as f:
         old = json.load(f)
@@ -239,9 +242,3 @@ for n in laws:
         scale = max(max(abs(a) for a in p[part]) for p in f1) or 1.0
         diff.append(max(max(abs(a - b) for a, b in zip(p[part], q[part])) for p, q in zip(f1, f2)) / scale)
     print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} speed-up {s:.3f}; {sf:.3f}; max |F(-j2) - F(-j1)| / max |F| = {diff[0]:.1e}, same for torques {diff[1]:.1e}")
-if args.json:
-    for r in runs.values():
-        for L in r.values():
-            L.pop("forces", None)
-    with open(args.json, "w") as f:
-        json.dump({"info": info, "runs": runs}, f)
