@@ -84,8 +84,8 @@ struct PairParams {
 
 // What one contact adds to its pair's parameters: the radii and the limit overlap, which scales with a12.
 struct PairGeometry {
+	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]; first: the normal law reads only this
 	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
-	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]
 	double a12() const { return reducedRadius(radius1, radius2); }
 	// Limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]; kept as its inverse, which the hot path uses.
 	double deltaMaxP() const { return 1 / invDeltaMaxP; }
