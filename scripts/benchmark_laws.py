@@ -115,6 +115,7 @@ if args.profile:
     profile()
     sys.exit(0)
 
+KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")  # per round, as the scene writes them
 # Measurements merged over the sessions: runs[threads][law] = lists over all rounds.
 runs, info = {1: {}, 2: {}}, {}
 with tempfile.TemporaryDirectory() as tmp:
@@ -129,19 +130,18 @@ with tempfile.TemporaryDirectory() as tmp:
             info = {k: r[k] for k in ("bodies", "steps", "mesoPhys_bytes", "mesoTangentialPhys_bytes", "frictPhys_bytes")}
             for n, L in r["laws"].items():
                 M = runs[threads].setdefault(n, {"contacts": L["contacts"], "forces": L["forces"]})
-                for key in ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns"):
+                for key in KEYS:
                     M.setdefault(key, []).extend(L[key])
 
-KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")
 if args.json and args.sessions:  # this invocation's own measurements only, so that pooling them later counts nothing twice
     with open(args.json, "w") as f:
         json.dump({"info": info, "runs": {t: {n: {k: v for k, v in L.items() if k != "forces"} for n, L in r.items()} for t, r in runs.items()}}, f)
 for path in args.merge:
     with open(path) as f:
         old = json.load(f)
-    if old["info"]["bodies"] != info.get("bodies", old["info"]["bodies"]) or old["info"]["steps"] != info.get("steps", old["info"]["steps"]):
-        sys.exit(f"benchmark_laws: {path} was measured on another scene (bodies, steps): not pooled")
     info = info or old["info"]
+    if (old["info"]["bodies"], old["info"]["steps"]) != (info["bodies"], info["steps"]):
+        sys.exit(f"benchmark_laws: {path} was measured on another scene (bodies, steps): not pooled")
     for threads in (1, 2):
         for n in laws:
             L = old["runs"][str(threads)].get(n)

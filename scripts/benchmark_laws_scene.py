@@ -147,8 +147,8 @@ for name in names:
     L["forces"] = [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies]
 report["bodies"] = len(O.bodies)
 probe = w.MesoPhys()
-report["mesoPhys_bytes"] = getattr(probe, "byteSize", None)
-report["mesoTangentialPhys_bytes"] = w.MesoTangentialPhys().byteSize if hasattr(w, "MesoTangentialPhys") else None
-report["frictPhys_bytes"] = getattr(probe, "frictPhysByteSize", None)
+report["mesoPhys_bytes"] = probe.byteSize
+report["mesoTangentialPhys_bytes"] = w.MesoTangentialPhys().byteSize
+report["frictPhys_bytes"] = probe.frictPhysByteSize
 with open(out_path, "w") as f:
     json.dump(report, f)

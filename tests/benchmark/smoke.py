@@ -30,7 +30,8 @@ with tempfile.TemporaryDirectory() as tmp:
                    "InteractionLoop speed-up", "contact physics: MesoPhys "):
         if needed not in text:
             sys.exit(f"missing from the report: {needed!r}\n{text}")
-    diffs = [float(x) for x in re.findall(r"max \|F\(-j2\) - F\(-j1\)\| / max \|F\| = (\S+), same for torques (\S+)", text) for x in x]
+    pairs = re.findall(r"max \|F\(-j2\) - F\(-j1\)\| / max \|F\| = (\S+), same for torques (\S+)", text)
+    diffs = [float(x) for forces_torques in pairs for x in forces_torques]
     if len(diffs) != 12 or max(diffs) > 1e-12:
         sys.exit(f"serial and parallel forces: {diffs}")
     rounds = int(re.search(r"; (\d+) rounds of", text).group(1))
