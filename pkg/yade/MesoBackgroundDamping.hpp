@@ -1,5 +1,7 @@
-// Viscous background damping of Luding 2008: a drag on every particle, force -gammaB v and
-// torque -gammaBR a^2 w (a: sphere radius), applied as an engine before NewtonIntegrator.
+// Viscous background damping of Luding 2008: a drag on every particle, force -gammaB (v - v_ref)
+// and torque -gammaBR a^2 (w - w_ref), applied as an engine before NewtonIntegrator. The
+// reference is the lab frame (at rest) or the rigid motion of the particle's contact neighbours,
+// so that a cluster moving as a body, or the imposed homogeneous deformation, is not dragged.
 #pragma once
 #include <core/GlobalEngine.hpp>
 #include <vector>
@@ -7,15 +9,17 @@
 namespace yade {
 
 class MesoBackgroundDamping : public GlobalEngine {
-	std::vector<Vector3r> prevVel, prevAngVel; // velocities when the previous drag was applied
+	std::vector<Vector3r> prevVel, prevAngVel, prevForce, prevTorque; // state when the previous drag was applied
 	std::vector<char>     hasPrev;
+	void                  validate() const; // throws std::invalid_argument naming the attribute and value
 
 public:
 	void action() override;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(MesoBackgroundDamping,GlobalEngine,"Viscous background damping of [Luding2008]_: every dynamic body gets the force $-\\gamma_b\\,v$ and, if it is a sphere of radius $a$, the torque $-\\gamma_{br}\\,a^2\\omega$ (the form with the right units; the paper leaves it open). Not YADE's non-viscous :yref:`NewtonIntegrator.damping`. Put it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`. With :yref:`O.trackEnergy<Omega.trackEnergy>` its dissipation is 'mesoBackground' in ``O.energy``, booked consistently with the leapfrog kinetic energy.",
-		((Real,gammaB,0,,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s]."))
-		((Real,gammaBR,0,,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s]: torque $-\\gamma_{br}a^2\\omega$."))
+	YADE_CLASS_BASE_DOC_ATTRS(MesoBackgroundDamping,GlobalEngine,"Viscous background damping of [Luding2008]_: every dynamic body gets the force $-\\gamma_b\\,(v-v_{ref})$ and, if it is a sphere of radius $a$, the torque $-\\gamma_{br}\\,a^2(\\omega-\\omega_{ref})$ (the form with the right units; the paper leaves it open). Not YADE's non-viscous :yref:`NewtonIntegrator.damping`. Put it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`.\n\nWith ``reference='lab'`` the reference is rest ($v_{ref}=\\omega_{ref}=0$): a drag against the surrounding medium, which also slows a free gas (useful while preparing a packing). With ``reference='contacts'`` it is the rigid motion of the body's mechanical contact neighbours (overlap > 0): $\\omega_{ref}=\\bar\\omega$, $v_{ref}=\\bar v+\\bar\\omega\\times(x-\\bar x)$, the bars averaging the neighbours' spins, positions and velocities (for a non-spherical neighbour such as a wall, its contact point and that point's velocity). A cluster translating and rotating as a rigid body, or a layer moving with a wall, feels no drag; a body rattling among resting neighbours feels $-\\gamma_b v$; a body without contacts feels none.\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>` the work of the drag is 'mesoBackground' in ``O.energy``, booked consistently with the leapfrog kinetic energy.",
+		((Real,gammaB,0,,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s], finite."))
+		((Real,gammaBR,0,,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s], finite: torque $-\\gamma_{br}a^2(\\omega-\\omega_{ref})$."))
+		((std::string,reference,"lab",,"What the drag acts relative to: 'lab' (rest) or 'contacts' (the rigid motion of the body's contact neighbours)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy"))
 	);
 	// clang-format on

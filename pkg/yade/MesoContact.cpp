@@ -141,6 +141,28 @@ Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const s
 	return s.params;
 }
 
+void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>& I)
+{
+	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;
+	if (!phys || !I->geom || !phys->pairParams) throw std::invalid_argument("interaction: must be a real interaction with MesoPhys made by this Ip2");
+	Scene*                  sc = Omega::instance().getScene().get();
+	const shared_ptr<Body>& b1 = Body::byId(I->getId1(), sc);
+	const shared_ptr<Body>& b2 = Body::byId(I->getId2(), sc);
+	if (!b1 || !b2 || !dynamic_cast<MesoMat*>(b1->material.get()) || !dynamic_cast<MesoMat*>(b2->material.get()))
+		throw std::invalid_argument("interaction: both bodies must exist and carry a MesoMat");
+	shared_ptr<MesoPairParams> params = pairParams(b1->material, b2->material, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
+	const meso::PairParams&    now = params->params;
+	const meso::PairParams&    old = phys->pairParams->params;
+	for (const auto& [name, a, b] : {std::make_tuple("k1", now.k1, old.k1), std::make_tuple("kp", now.kp, old.kp), std::make_tuple("phiF", now.phiF, old.phiF)})
+		if (a != b) throw std::invalid_argument(std::string("interaction: the new materials change the pair's ") + name + ", which shapes the contact history");
+	if (now.k2Interpolation != old.k2Interpolation) throw std::invalid_argument("interaction: the new materials change the pair's k2Interpolation");
+	if (now.tangential != (dynamic_cast<MesoTangentialPhys*>(phys) != nullptr))
+		throw std::invalid_argument("interaction: the new materials switch the tangential mechanisms on or off (the contact class cannot change)");
+	phys->pairParams             = params;
+	phys->ks                     = now.sliding.k;
+	phys->tangensOfFrictionAngle = now.sliding.muS;
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I)
 {
 	if (I->phys) return;

@@ -206,10 +206,15 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
 	void postLoad(Ip2_MesoMat_MesoMat_MesoPhys&);
+	// Gives a live contact its bodies' present materials, keeping its history; throws
+	// std::invalid_argument if that would change the hysteretic normal law or the contact class.
+	void adoptMaterials(const shared_ptr<Interaction>& I);
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
 		((std::string,leverArm,"reduced",Attr::triggerPostLoad,"Lever arm $a'_{12}$ of rolling and torsion (open in [Luding2008]_): 'reduced' = $a'_1a'_2/(a'_1+a'_2)$ with $a'=a-\\delta/2$ ($a'$ of the sphere against a wall), or 'a12' = twice that. The factor 2 scales the torques of given $k_r$, $k_o$ by 4 and the limit torques by 2."))
-		((int,leverFactor,1,(Attr::hidden|Attr::noSave),"1 or 2, from leverArm"))
+		((int,leverFactor,1,(Attr::hidden|Attr::noSave),"1 or 2, from leverArm")),
+		/*ctor*/,
+		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.")
 	);
 	// clang-format on
 	FUNCTOR2D(MesoMat, MesoMat);

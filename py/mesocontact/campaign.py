@@ -14,6 +14,7 @@ import time
 from yade import O
 
 from . import snapshots as _snap
+from . import stages as _stages
 from . import tablet as _tablet
 from . import uniaxial as _uni
 
@@ -25,20 +26,10 @@ FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
 GAP_AREA = 0.5  # a see-through hole this large [d0^2] counts as the first visible gap
 
 
-def released_path(outdir, quick):
-    return os.path.join(outdir, "released-quick.yade.gz" if quick else "released.yade.gz")
-
-
-def prepare(outdir, quick=False, progress=True):
-    """The released state of the campaign and the unconfined start of the tests (both reused
-    when they exist)."""
-    os.makedirs(outdir, exist_ok=True)
-    cfg = QUICK if quick else FULL
-    path = released_path(outdir, quick)
-    info = _tablet.released(path, progress=progress, n=cfg["n"])
-    if not os.path.exists(_uni.unconfined_path(path)):
-        info["unconfined"] = _uni.make_unconfined(path, progress=progress)["unconfined"]
-    return path, info
+def prepare(outdir, quick=False, progress=True, **tablet_kw):
+    """The unconfined start of the tests loaded into O, with the released state it is made from
+    (each made once and reused: stages.ensure); returns the description."""
+    return _stages.ensure("unconfined", outdir, quick, progress=progress, **tablet_kw)
 
 
 def _run_name(mode, amplitude, slow, prefix=""):
@@ -56,7 +47,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
     _uni._check_mode(mode)
     cfg = QUICK if quick else FULL
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
-    path, info = prepare(outdir, quick, progress)
+    prepare(outdir, quick, progress)
     summary = {"mode": mode, "quick": quick, "period_crossings": period, "slow_factor": slow,
                "cycles": cfg["cycles"], "runs": {}}
     t_all = time.time()
@@ -64,7 +55,8 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, pr
         for is_slow in ((False,) if quick or not slow or slow == 1 else (False, True)):
             name = _run_name(mode, amplitude, is_slow, prefix)
             t0 = time.time()
-            test = _uni.Test(path, progress=progress)
+            prepare(outdir, quick, progress)
+            test = _uni.Test(progress=progress)
             hook = None
             if snapshot_amplitude == amplitude and not is_slow:
                 hook = _cycle_snapshots(outdir, mode, amplitude, test)
@@ -149,9 +141,9 @@ def pull(outdir, quick=False, speed=0.0075, until=9.0, progress=True, dx_marks=F
     """Fig. 17: monotonic tension to Dx = until at wall speed ``speed`` [mm/us] with PNG and
     VTK snapshots at dx_marks; records where the first see-through gap opens and where the last
     contact chain between the walls breaks."""
-    path, info = prepare(outdir, quick, progress)
+    prepare(outdir, quick, progress)
     tag = "fig17-quick" if quick else "fig17"
-    test = _uni.Test(path, progress=progress)
+    test = _uni.Test(progress=progress)
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "last_contact_Dx": None, "snapshots": []}
     check_every = 10  # records between the (costly) gap and connectivity checks
@@ -209,12 +201,17 @@ def main(figure, argv):
     p.add_argument("--period", type=float, default=30.0, help="cycle period in elastic crossing times (fast runs)")
     p.add_argument("--amplitudes", default=None, help="comma-separated amplitudes Dx in d0")
     p.add_argument("--speed", type=float, default=0.0075, help="fig17: wall speed [mm/us]")
+    if figure == "prepare":
+        p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
+                       help="particle parameters: Appendix F of the long paper or Table 2 of Luding 2008")
+        p.add_argument("--kc-over-kp", type=float, default=None, help="overrides the set's kc/kp")
+        p.add_argument("--n", type=int, default=None, help="number of particles (1728; 216 with --quick)")
     a = p.parse_args(argv)
     amps = tuple(float(x) for x in a.amplitudes.split(",")) if a.amplitudes else None
     t0 = time.time()
     if figure == "prepare":
-        path, info = prepare(a.out, a.quick)
-        out = {k: info[k] for k in ("packed", "sintered", "released", "unconfined") if k in info}
+        info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
+        out = {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
     elif figure == "fig16":
         out = cyclic("tension", a.out, amps, a.quick, a.period)
     elif figure == "fig18":

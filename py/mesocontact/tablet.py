@@ -6,7 +6,7 @@ torsion act on the walls' ScGeom6D too) are pressure-sintered with YADE's
 ``TriaxialStressController`` at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
 
     from mesocontact import tablet
-    info = tablet.prepare("tablet.yade.gz")      # or tablet.released("tablet.yade.gz"): reuse
+    info = tablet.prepare("released.yade.gz")    # or stages.ensure("released", DIR): reuse
     print(info["released"]["solid_fraction"])
 
 All six walls carry the strongly adhesive wall material of Luding's tension tests (a ``dominant``
@@ -34,32 +34,55 @@ KP = 5.0           # limit stiffness [mg/us^2 = 1e6 N/m]
 GAMMA0 = 5e-5      # normal viscous damping [mg/us = kg/s]
 SINTER_STRESS = 0.02 * KP / D0   # d0 p_s/kp = 0.02
 RELEASE_RATIO = 1e-3             # p_r/p_s
-PACKING_RATIO = 1e-1             # stress of the frictionless, non-adhesive packing stage, over p_s
+COMPACTION_SPEED = 2.0           # largest wall speed while compacting the gas [mm/us], ~c/10
+SINTER_SPEED = 0.05              # largest wall speed while sintering and releasing [mm/us]
+RELEASE_STEPS = 40000            # steps over which the wall stress is lowered from p_s to p_r
 WALLS = ("left", "right", "bottom", "top", "back", "front")  # YADE's aabbWalls order: -x +x -y +y -z +z
 
 
-def particle_material(**changes):
-    """Table 2 of Luding 2008 with the changes of Appendix F (kc/kp = 0.2, mu_r = mu_o = 0.2,
-    gamma_r/gamma0 = gamma_o/gamma0 = 0.1) as MesoMat keywords; ``changes`` override."""
-    kw = dict(density=DENSITY, k1=0.5 * KP, kp=KP, kc=0.2 * KP, phiF=0.05, gammaN=GAMMA0,
-              frictionAngle=math.atan(1.0), kt=0.2 * KP, gammaT=0.2 * GAMMA0,
-              kr=0.1 * KP, gammaR=0.1 * GAMMA0, muR=0.2, ko=0.1 * KP, gammaO=0.1 * GAMMA0, muO=0.2,
-              label="particles")
+# Particle parameter sets (MesoMat keywords, the paper's units): Table 2 of Luding 2008 and the
+# long paper's Appendix F, which changes kc, the rolling and torsion limits and their dashpots.
+MATERIALS = {
+    "table2": dict(density=DENSITY, k1=0.5 * KP, kp=KP, kc=0.5 * KP, phiF=0.05, gammaN=GAMMA0,
+                   frictionAngle=math.atan(1.0), kt=0.2 * KP, gammaT=0.2 * GAMMA0,
+                   kr=0.1 * KP, gammaR=0.05 * GAMMA0, muR=0.1, ko=0.1 * KP, gammaO=0.05 * GAMMA0, muO=0.1),
+}
+MATERIALS["appendixF"] = dict(MATERIALS["table2"], kc=0.2 * KP, gammaR=0.1 * GAMMA0, muR=0.2,
+                              gammaO=0.1 * GAMMA0, muO=0.2)
+
+
+def particle_material(material="appendixF", **changes):
+    """The particles' MesoMat keywords of parameter set ``material`` ('appendixF': Table 2 of
+    Luding 2008 with kc/kp = 0.2, mu_r = mu_o = 0.2, gamma_r/gamma0 = gamma_o/gamma0 = 0.1;
+    'table2': Luding's reference set); ``changes`` override."""
+    if material not in MATERIALS:
+        raise ValueError(f"material = {material!r} is invalid: one of {sorted(MATERIALS)}")
+    kw = dict(MATERIALS[material], label="particles")
     kw.update(changes)
     return kw
 
 
-def wall_material(**changes):
+def wall_material(material="appendixF", **changes):
     """The loading walls of Luding's tension tests: the particles' law with kc_wall/kp = 20 and
     mu_wall = 10, imposed unmixed on wall contacts (``dominant``)."""
-    kw = particle_material(kc=20 * KP, frictionAngle=math.atan(10.0), label="walls", dominant=True)
+    kw = particle_material(material, kc=20 * KP, frictionAngle=math.atan(10.0), label="walls", dominant=True)
     kw.update(changes)
     return kw
 
 
-def background_damping():
-    """Luding's viscous background damping, gamma_b/gamma0 = 4, gamma_br/gamma0 = 1."""
-    return _w.MesoBackgroundDamping(gammaB=4 * GAMMA0, gammaBR=GAMMA0, label="background")
+def mould_material(material="appendixF"):
+    """The walls while the tablet is made: the particles' normal law without adhesion, friction,
+    rolling or torsion resistance (a smooth, non-adhesive mould), imposed unmixed. Frictional
+    walls lock the box: spheres wedged at its edges and corners carry the wall stress by
+    friction against the neighbouring wall (at N = 216 the stress target was met at solid
+    fraction 0.40, coordination 1.2). The tests make the loading walls adhesive."""
+    return particle_material(material, kc=0.0, frictionAngle=0.0, muR=0.0, muO=0.0, label="walls", dominant=True)
+
+
+def background_damping(reference="lab"):
+    """Luding's viscous background damping, gamma_b/gamma0 = 4, gamma_br/gamma0 = 1, relative to
+    the lab frame (preparation) or to the rigid motion of each particle's contacts (the tests)."""
+    return _w.MesoBackgroundDamping(gammaB=4 * GAMMA0, gammaBR=GAMMA0, reference=reference, label="background")
 
 
 def time_step(r_min):
@@ -69,7 +92,7 @@ def time_step(r_min):
     return _params.time_step(m["kp"], m_min, kt=m["kt"], kr=m["kr"], ko=m["ko"], gamma=m["gammaN"])
 
 
-def engines(controller=None, extra=()):
+def engines(controller=None, extra=(), reference="lab"):
     """The engine loop of every tablet run: spheres and boxes, meso law, background damping."""
     loop = [
         _w.ForceResetter(),
@@ -79,7 +102,7 @@ def engines(controller=None, extra=()):
             [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False), _w.Ig2_Box_Sphere_ScGeom6D()],
             [_w.Ip2_MesoMat_MesoMat_MesoPhys()],
             [_w.Law2_ScGeom_MesoPhys_Meso(label="law")]),
-        background_damping(),
+        background_damping(reference),
     ]
     if controller is not None:
         loop.append(controller)
@@ -98,10 +121,17 @@ def _radii(n, rel_std, rng):
     return out
 
 
-def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1):
+def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF", kc_over_kp=None):
     """A loose random gas of n spheres in a cubic box of six adhesive walls (ids 0-5, spheres
-    after). The Gaussian size distribution is narrow (relative std rel_std, cut at 2 sigma) to
-    avoid monodisperse crystallisation."""
+    after), particles of parameter set ``material`` (kc_over_kp overrides its kc/kp). The
+    Gaussian size distribution is narrow (relative std rel_std, cut at 2 sigma) to avoid
+    monodisperse crystallisation."""
+    changes = {}
+    if kc_over_kp is not None:
+        if not (0 <= kc_over_kp < math.inf):
+            raise ValueError(f"kc_over_kp = {kc_over_kp} is invalid: must be finite and >= 0")
+        changes["kc"] = kc_over_kp * KP
+    particles = particle_material(material, **changes)
     if int(n) != n or n < 8:
         raise ValueError(f"n = {n} is invalid: at least 8 particles")
     if not 0 <= rel_std < 0.3:
@@ -113,8 +143,8 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1):
     volume = sum(4.0 / 3.0 * math.pi * r ** 3 for r in radii)
     side = (volume / solid_fraction) ** (1.0 / 3.0)
     O.reset()
-    O.materials.append(_w.MesoMat(**wall_material()))
-    O.materials.append(_w.MesoMat(**particle_material()))
+    O.materials.append(_w.MesoMat(**mould_material(material)))
+    O.materials.append(_w.MesoMat(**particles))
     thick = 0.5 * D0
     lo, hi = (0.0, 0.0, 0.0), (side, side, side)
     walls = _utils.aabbWalls([lo, hi], thickness=thick, oversizeFactor=1.5, material="walls")
@@ -137,7 +167,8 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1):
             raise RuntimeError("could not place the random gas; lower solid_fraction")
     O.bodies.append([_utils.sphere(c, r, material="particles") for c, r in placed])
     O.dt = time_step(min(radii))
-    return {"n": int(n), "radii": (min(radii), max(radii)), "side0": side, "dt": O.dt}
+    return {"n": int(n), "radii": (min(radii), max(radii)), "side0": side, "dt": O.dt, "material": material,
+            "kc_over_kp": particles["kc"] / KP, "seed": seed, "rel_std": rel_std}
 
 
 def sphere_ids():
@@ -172,11 +203,25 @@ def kinetic_energy():
     return e
 
 
+def _lens(r1, r2, d):
+    """Volume shared by two overlapping spheres (radii r1, r2, centres d apart)."""
+    if d >= r1 + r2:
+        return 0.0
+    return math.pi * (r1 + r2 - d) ** 2 * (d * d + 2 * d * (r1 + r2) - 3 * (r1 - r2) ** 2) / (12 * d)
+
+
+def _cap(r, h):
+    """Volume of a sphere of radius r beyond a plane at distance h from its centre."""
+    t = r - h
+    return 0.0 if t <= 0 else math.pi * t * t * (3 * r - t) / 3
+
+
 def stats():
-    """Solid fraction (sphere volume over the walls' inner box, or the particles' extent where
-    the walls are gone; overlaps counted twice), mean
-    coordination number (particle contacts per particle, walls excluded, and with walls), wall
-    stresses (compressive > 0), kinetic energy."""
+    """The state of the sample: solid fraction (sphere volume inside the walls' inner box, overlap
+    lenses and wall caps subtracted, over the box volume; where the walls are gone, the particles'
+    extent), coordination (2 x particle-particle contacts / N), coordination_with_walls,
+    rattlers (particles with < 2 mechanical contacts, walls included), wall stresses
+    (compressive > 0), kinetic energy and its ratio to energy_scale()."""
     ids = set(sphere_ids())
     lo, hi = inner_box()
     for k in range(3):  # without walls on an axis: the particles' extent
@@ -185,13 +230,25 @@ def stats():
         if hi[k] is None:
             hi[k] = max(O.bodies[i].state.pos[k] + O.bodies[i].shape.radius for i in ids)
     vol = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])
-    vs = sum(4.0 / 3.0 * math.pi * O.bodies[i].shape.radius ** 3 for i in ids)
+    vs = 0.0
+    for i in ids:
+        b = O.bodies[i]
+        r, x = b.shape.radius, b.state.pos
+        vs += 4.0 / 3.0 * math.pi * r ** 3
+        for k in range(3):
+            vs -= _cap(r, x[k] - lo[k]) + _cap(r, hi[k] - x[k])
     pp = pw = 0
+    contacts = dict.fromkeys(ids, 0)
     for I in O.interactions:
         if not I.isReal or I.geom.penetrationDepth <= 0:  # mechanical contacts only
             continue
+        for j in (I.id1, I.id2):
+            if j in contacts:
+                contacts[j] += 1
         if I.id1 in ids and I.id2 in ids:
             pp += 1
+            b1, b2 = O.bodies[I.id1], O.bodies[I.id2]
+            vs -= _lens(b1.shape.radius, b2.shape.radius, (b1.state.pos - b2.state.pos).norm())
         else:
             pw += 1
     stress = {}
@@ -201,16 +258,18 @@ def stats():
         area = (hi[a] - lo[a]) * (hi[b] - lo[b])
         f = O.forces.f(i)[axis]
         stress[name] = (f if WALLS.index(name) % 2 else -f) / area
+    ke = kinetic_energy()
     return {"solid_fraction": vs / vol, "coordination": 2.0 * pp / len(ids),
-            "coordination_with_walls": (2.0 * pp + pw) / len(ids), "wall_stress": stress,
-            "side": [hi[k] - lo[k] for k in range(3)], "kinetic_energy": kinetic_energy(),
-            "iter": O.iter, "time": O.time}
+            "coordination_with_walls": (2.0 * pp + pw) / len(ids),
+            "rattlers": sum(1 for c in contacts.values() if c < 2), "wall_stress": stress,
+            "side": [hi[k] - lo[k] for k in range(3)], "kinetic_energy": ke,
+            "kinetic_energy_ratio": ke / energy_scale(len(ids)), "iter": O.iter, "time": O.time}
 
 
-def _controller(goal):
+def _controller(goal, max_vel):
     return _w.TriaxialStressController(
         internalCompaction=False, stressMask=7, goal1=-goal, goal2=-goal, goal3=-goal,
-        thickness=0.5 * D0, max_vel=0.05, stressDamping=0.25, label="triax")
+        thickness=0.5 * D0, max_vel=max_vel, stressDamping=0.25, label="triax")
 
 
 def energy_scale(n):
@@ -219,26 +278,34 @@ def energy_scale(n):
     return 3 * n * (SINTER_STRESS * D0 * D0) ** 2 / (2 * KP)
 
 
-def _relax(goal, max_steps, tol_stress, tol_ke, chunk, progress, stage):
-    """Runs the stress-controlled walls until the sample is static: every wall's stress within
-    tol_stress of the goal and the kinetic energy below tol_ke energy_scale(). Returns (steps,
-    stats())."""
-    e_ref = energy_scale(len(sphere_ids()))
-    t0, start, ok = time.time(), O.iter, 0
+def run_until_static(measure, stage, chunk=2000, max_steps=400000, progress=True):
+    """Runs until ``measure()`` -> (static, text, value) says static on two consecutive checks,
+    ``chunk`` steps apart; returns (steps, value). The one loop behind every "relax" of the
+    tablet and its tests."""
+    t0, start, ok, text = time.time(), O.iter, 0, ""
     while O.iter - start < max_steps:
         O.run(chunk, True)
+        static, text, value = measure()
+        if progress:
+            print(f"  {stage}: step {O.iter - start:7d}  {text}  ({time.time() - t0:.0f} s)", flush=True)
+        ok = ok + 1 if static else 0
+        if ok == 2:
+            return O.iter - start, value
+    raise RuntimeError(f"{stage}: not static after {max_steps} steps ({text})")
+
+
+def _relax(goal, tol_stress, tol_ke, stage, progress, max_steps=400000):
+    """The stress-controlled walls run until every wall's stress is within tol_stress of the goal
+    and the kinetic energy below tol_ke energy_scale(); returns stats() with the goal."""
+    def measure():
         s = stats()
         err = max(abs(v / goal - 1.0) for v in s["wall_stress"].values())
-        ke = s["kinetic_energy"] / e_ref
-        if progress:
-            print(f"  {stage}: step {O.iter - start:7d}  max |stress/goal - 1| = {err:.3g}  "
-                  f"E_kin/E_ref = {ke:.2e}  solid fraction {s['solid_fraction']:.4f}  "
-                  f"({time.time() - t0:.0f} s)", flush=True)
-        ok = ok + 1 if (err < tol_stress and ke < tol_ke) else 0
-        if ok == 2:  # static on two consecutive checks
-            return O.iter - start, s
-    raise RuntimeError(f"{stage}: not static after {max_steps} steps (stress error {err:.3g}, "
-                       f"E_kin/E_ref {ke:.3g})")
+        text = (f"max |stress/goal - 1| = {err:.3g}  E_kin/E_ref = {s['kinetic_energy_ratio']:.2e}  "
+                f"solid fraction {s['solid_fraction']:.4f}  C {s['coordination']:.2f}")
+        return err < tol_stress and s["kinetic_energy_ratio"] < tol_ke, text, s
+    steps, s = run_until_static(measure, stage, max_steps=max_steps, progress=progress)
+    s["goal"], s["steps"] = goal, steps
+    return s
 
 
 def _set_goal(p):
@@ -246,61 +313,78 @@ def _set_goal(p):
     triax.goal1 = triax.goal2 = triax.goal3 = -p  # YADE: tension positive
 
 
-def _set_packing_law(packing):
-    """Frictionless, non-adhesive contacts (packing=True) or the full law (False). Existing
-    contacts are remade by the Ip2 with the new parameters, without history."""
-    for m in O.materials:
-        full = wall_material() if m.label == "walls" else particle_material()
-        if packing:
-            m.kc, m.frictionAngle, m.muR, m.muO = 0.0, 0.0, 0.0, 0.0
-        else:
-            m.kc, m.frictionAngle, m.muR, m.muO = full["kc"], full["frictionAngle"], full["muR"], full["muO"]
-    for I in O.interactions:
-        I.phys = None
+def _release(goal, steps, progress, chunk=1000):
+    """Lowers the walls' stress goal geometrically from the present one to ``goal`` over
+    ``steps`` steps. A sudden drop lets the stored elastic energy throw the particles apart:
+    released at once, the sintered sample expanded by 14 % in length and lost half its contacts."""
+    triax = [e for e in O.engines if isinstance(e, _w.TriaxialStressController)][0]
+    start = -triax.goal1
+    n = max(1, steps // chunk)
+    for k in range(1, n + 1):
+        _set_goal(start * (goal / start) ** (k / n))
+        O.run(chunk, True)
+        if progress and k % 10 == 0:
+            s = stats()
+            print(f"  release ramp: {k * chunk:7d}/{n * chunk} steps  goal {-triax.goal1:.4g}  "
+                  f"solid fraction {s['solid_fraction']:.4f}  C {s['coordination']:.2f}", flush=True)
 
 
-def prepare(path, n=1728, rel_std=0.05, seed=1, tol_stress=0.01, tol_ke=1e-4,
-            max_steps=400000, progress=True):
-    """Builds, pressure-sinters at d0 p_s/kp = 0.02 and releases to p_r/p_s = 1e-3 a tablet of n
-    particles, saves the released state to ``path`` (O.save) and its description to
-    ``path + '.json'``; returns that description."""
+def save_atomic(path, info):
+    """O.save to ``path`` and the description to ``path + '.json'``, each written under a
+    temporary name and renamed, the JSON last: a reader that finds the JSON finds both whole."""
+    tmp = f"{path[:-len('.yade.gz')]}.tmp{os.getpid()}.yade.gz"
+    O.save(tmp)
+    os.replace(tmp, path)
+    with open(path + f".tmp{os.getpid()}", "w") as f:
+        json.dump(info, f, indent=1)
+    os.replace(path + f".tmp{os.getpid()}", path + ".json")
+
+
+def _compact(goal, speed, progress, chunk=500, max_steps=200000):
+    """Drives the walls in at up to ``speed`` [mm/us], without background drag, until every wall
+    first carries 0.9 goal; returns stats() then. The particles meet faster than they stick, so
+    the skeleton is formed by the pressure rather than by slow aggregation into clusters."""
+    drag = [e for e in O.engines if isinstance(e, _w.MesoBackgroundDamping)][0]
+    triax = [e for e in O.engines if isinstance(e, _w.TriaxialStressController)][0]
+    gammas, triax.max_vel = (drag.gammaB, drag.gammaBR), speed
+    drag.gammaB = drag.gammaBR = 0.0
+    start = O.iter
+    while True:
+        O.run(chunk, True)
+        s = stats()
+        if progress:
+            print(f"  compaction: step {O.iter - start:6d}  smallest wall stress/goal "
+                  f"{min(s['wall_stress'].values()) / goal:.3f}  solid fraction {s['solid_fraction']:.4f}", flush=True)
+        if min(s["wall_stress"].values()) >= 0.9 * goal:
+            break
+        if O.iter - start > max_steps:
+            raise RuntimeError(f"compaction: the wall stress did not reach {goal:g} in {max_steps} steps")
+    drag.gammaB, drag.gammaBR = gammas
+    triax.max_vel = SINTER_SPEED
+    s["steps"] = O.iter - start
+    return s
+
+
+def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, seed=1, tol_stress=0.01,
+            tol_ke=1e-4, compaction_speed=COMPACTION_SPEED, release_steps=RELEASE_STEPS, progress=True):
+    """Makes the released tablet with the full law (adhesion, friction, rolling, torsion) from
+    the start: a gas of the particles is compacted by the six walls (at up to
+    ``compaction_speed`` [mm/us], without background drag) until they carry d0 p_s/kp = 0.02,
+    sintered at that stress with the lab-frame background drag until static, released to
+    p_r/p_s = 1e-3 (the goal lowered geometrically over ``release_steps`` steps) and relaxed.
+    Saves the released state to ``path`` (O.save) and its description to ``path + '.json'``
+    (both atomically); returns the description."""
     t0 = time.time()
-    info = {"built": build(n, rel_std=rel_std, seed=seed)}
-    # A random gas of adhesive, frictional particles aggregates into loose clusters; pack it
-    # first without adhesion and friction (the usual way to a dense random packing), at a low
-    # stress, then switch the full law on (new contacts, no history) and sinter.
-    _set_packing_law(True)
-    p_pack = PACKING_RATIO * SINTER_STRESS
-    O.engines = engines(_controller(p_pack))
-    _, info["packed"] = _relax(p_pack, max_steps, tol_stress, tol_ke, 2000, progress, "packing")
-    info["packed"]["goal"] = p_pack
-    _set_packing_law(False)
-    _set_goal(SINTER_STRESS)
-    _, sinter = _relax(SINTER_STRESS, max_steps, tol_stress, tol_ke, 2000, progress, "sintering")
-    sinter["goal"] = SINTER_STRESS
-    info["sintered"] = sinter
-    p_r = RELEASE_RATIO * SINTER_STRESS
-    _set_goal(p_r)
-    _, released = _relax(p_r, max_steps, tol_stress, tol_ke, 2000, progress, "release")
-    released["goal"] = p_r
-    info["released"] = released
+    info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp)}
+    O.engines = engines(_controller(SINTER_STRESS, SINTER_SPEED), reference="lab")
+    info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
+    info["sintered"] = _relax(SINTER_STRESS, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
+    _release(RELEASE_RATIO * SINTER_STRESS, release_steps, progress)
+    info["released"] = _relax(RELEASE_RATIO * SINTER_STRESS, tol_stress, tol_ke, "release", progress)
+    info["release_steps"] = release_steps
     info["units"] = "mm, us, mg (stress 1 = 1e9 Pa)"
     info["d0"] = D0
     info["kp"] = KP
     info["wall_clock_s"] = time.time() - t0
-    O.save(path)
-    with open(path + ".json", "w") as f:
-        json.dump(info, f, indent=1)
+    save_atomic(path, info)
     return info
-
-
-def released(path, progress=True, **prepare_kw):
-    """The released state at ``path``: loaded if the file exists, prepared and saved otherwise.
-    Returns its description (the JSON written by prepare())."""
-    if os.path.exists(path) and os.path.exists(path + ".json"):
-        O.load(path)
-        with open(path + ".json") as f:
-            return json.load(f)
-    if progress:
-        print(f"preparing the released tablet {path}", flush=True)
-    return prepare(path, progress=progress, **prepare_kw)

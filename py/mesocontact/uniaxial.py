@@ -1,9 +1,12 @@
 """Unconfined uni-axial tension and compression of the released tablet (Appendix F; inside ``yade``).
 
-The test starts from the saved released state (``tablet.released``): the four lateral walls are
-erased with their contacts (unconfined: no lateral stress at all), the stress controller is
-removed and the sample relaxed again with the x walls held at p_r (``make_unconfined``, saved
-once). From there the two x walls, which carry the adhesive wall material, move symmetrically:
+The tests start from the unconfined start (``make_unconfined``, made once from the released
+state and cached by ``stages.ensure('unconfined')``): the four lateral walls erased with their
+contacts (unconfined: no lateral stress at all), the stress controller removed, the x walls
+made adhesive (kc_wall/kp = 20, mu_wall = 10, contact histories kept) and the sample relaxed
+again with the x walls held at p_r; the background drag acts relative to each particle's
+contacts, so a part of the sample moving as a body is not dragged. From there the two x walls
+move symmetrically:
 
 - ``cycles``: cosine strain cycles to an amplitude Dx and back, L(t) = L0 -+ Dx d0 (1 - cos wt)/2,
   driven by YADE's ``HarmonicMotionEngine`` (one per wall); a cycle is a whole number of steps,
@@ -13,9 +16,7 @@ once). From there the two x walls, which carry the adhesive wall material, move 
 Recorded: Dx = (L - L0)/d0 (> 0 in tension) and the force on the loading walls,
 F = (f_right - f_left)/2 along x, > 0 when the sample pushes the walls (compression).
 """
-import json
 import math
-import os
 import time
 
 try:
@@ -43,10 +44,6 @@ def crossing_time():
     m = sum(O.bodies[i].state.mass for i in ids) / len(ids)
     lo, hi = _tablet.inner_box()
     return (hi[0] - lo[0]) / (_tablet.D0 * math.sqrt(_tablet.KP / m))
-
-
-def unconfined_path(released_path):
-    return released_path.replace(".yade.gz", "") + "-unconfined.yade.gz"
 
 
 def _py_runner(fn, period, label):
@@ -84,13 +81,27 @@ class _Servo:
             O.bodies[wid].state.vel = Vector3(outward * max(-self.v_max, min(self.v_max, v)), 0, 0)
 
 
-def make_unconfined(released_path, progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000):
-    """The common start of the uni-axial tests, saved next to the released state: the four
+def make_adhesive_walls(wall_ids):
+    """Gives the walls the adhesive material of Luding's tension tests (tablet.wall_material)
+    in place of the smooth mould: the walls' MesoMat is changed and every contact of these
+    walls adopts it, keeping its history (the force stays continuous)."""
+    walls = [m for m in O.materials if m.label == "walls"][0]
+    adhesive = _tablet.wall_material()
+    walls.kc, walls.frictionAngle, walls.muR, walls.muO = (adhesive[k] for k in ("kc", "frictionAngle", "muR", "muO"))
+    ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
+    for wid in wall_ids:
+        for I in O.bodies[wid].intrs():
+            ip2.adoptMaterials(I)
+
+
+def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000):
+    """Turns the loaded released state into the common start of the uni-axial tests: the four
     lateral walls erased with their contacts (no lateral stress), the stress controller
-    removed, and the sample relaxed again with the two x walls held at the release stress p_r
-    (the lateral walls' adhesive contacts had held it), until the wall force is within
-    tol_force kp d0 of p_r L_y L_z and the kinetic energy below tol_ke of the energy scale."""
-    info = _tablet.released(released_path, progress=progress)
+    removed, the two x walls made adhesive (make_adhesive_walls), and the sample relaxed again
+    with the x walls held at the release stress p_r (the lateral walls had held it), until the
+    wall force is within tol_force kp d0 of p_r L_y L_z and the kinetic energy below tol_ke of
+    the energy scale; the background drag then acts relative to the contacts, as in the tests.
+    Returns the description of this stage."""
     walls = _tablet.wall_ids()
     lo, hi = _tablet.inner_box()
     area = (hi[1] - lo[1]) * (hi[2] - lo[2])
@@ -98,47 +109,31 @@ def make_unconfined(released_path, progress=True, tol_force=1e-4, tol_ke=1e-4, m
         if name in walls:
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
+    make_adhesive_walls((walls["left"], walls["right"]))
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
     _before_newton([_py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
-    e_ref = _tablet.energy_scale(len(_tablet.sphere_ids()))
     scale = _tablet.KP * _tablet.D0
-    t0, start, ok = time.time(), O.iter, 0
-    while True:
-        O.run(2000, True)
+
+    def measure():
         err = max(abs(s * O.forces.f(w)[0] - target) for w, s in ((walls["right"], 1), (walls["left"], -1))) / scale
-        ke = _tablet.kinetic_energy() / e_ref
-        if progress:
-            print(f"  unconfined relaxation: step {O.iter - start:6d}  |F - p_r A|/(kp d0) = {err:.2e}  "
-                  f"E_kin/E_ref = {ke:.2e}  ({time.time() - t0:.0f} s)", flush=True)
-        ok = ok + 1 if (err < tol_force and ke < tol_ke) else 0
-        if ok == 2:
-            break
-        if O.iter - start > max_steps:
-            raise RuntimeError(f"unconfined relaxation: not static after {max_steps} steps")
+        ke = _tablet.kinetic_energy() / _tablet.energy_scale(len(_tablet.sphere_ids()))
+        return err < tol_force and ke < tol_ke, f"|F - p_r A|/(kp d0) = {err:.2e}  E_kin/E_ref = {ke:.2e}", (err, ke)
+
+    steps, (err, ke) = _tablet.run_until_static(measure, "unconfined relaxation", max_steps=max_steps, progress=progress)
     O.engines = [e for e in O.engines if e.label != "servo"]
     for w in (walls["left"], walls["right"]):
         O.bodies[w].state.vel = Vector3(0, 0, 0)
-    info["unconfined"] = {"steps": O.iter - start, "force_error": err, "kinetic_energy_ratio": ke,
-                          "target_force": target, "stats": _tablet.stats()}
-    path = unconfined_path(released_path)
-    O.save(path)
-    with open(path + ".json", "w") as f:
-        json.dump(info, f, indent=1)
-    return info
+    for e in O.engines:
+        if isinstance(e, _w.MesoBackgroundDamping):
+            e.reference = "contacts"
+    return {"steps": steps, "force_error": err, "kinetic_energy_ratio": ke, "target_force": target,
+            "stats": _tablet.stats()}
 
 
 class Test:
-    """The released tablet set up for an unconfined uni-axial test: loads the unconfined start
-    made from the released state at ``path`` (made and saved once by make_unconfined)."""
+    """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined'))."""
 
-    def __init__(self, path, progress=True):
-        start = unconfined_path(path)
-        if os.path.exists(start) and os.path.exists(start + ".json"):
-            O.load(start)
-            with open(start + ".json") as f:
-                self.info = json.load(f)
-        else:
-            self.info = make_unconfined(path, progress=progress)
+    def __init__(self, progress=True):
         self.progress = progress
         walls = _tablet.wall_ids()
         self.left, self.right = walls["left"], walls["right"]

@@ -57,7 +57,9 @@ from yade import wrapper as wr
 
 full = dict(base, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=2e-3, kt=40.0, gammaT=1e-3, frictionAngle=0.3,
             kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1, phiD=0.8)
-for label, wall in (("all mechanisms, sphere-sphere 6D", False), ("all mechanisms, sphere-box 6D", True)):
+for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"), ("all mechanisms, sphere-box 6D", True, "lab"),
+                               ("sphere-sphere 6D, drag vs contacts", False, "contacts"),
+                               ("sphere-box 6D, drag vs contacts", True, "contacts")):
     v = 0.08
     if wall:
         s = pair.build_wall(r, v, full, kind="box", six_d=True, tangential_velocity=(0.05, 0.02, 0), spin=(30, -50, 80),
@@ -69,7 +71,7 @@ for label, wall in (("all mechanisms, sphere-sphere 6D", False), ("all mechanism
         O.bodies[s.ids[0]].state.vel += (0, 0.04, 0.01)  # oblique
         O.bodies[s.ids[0]].state.angVel = (40, 0, -60)
         O.bodies[s.ids[1]].state.angVel = (0, 70, 20)
-    O.engines = O.engines[:-1] + [wr.MesoBackgroundDamping(gammaB=1e-4, gammaBR=1e-4)] + O.engines[-1:]
+    O.engines = O.engines[:-1] + [wr.MesoBackgroundDamping(gammaB=1e-4, gammaBR=1e-4, reference=reference)] + O.engines[-1:]
     O.step()
     e0 = O.energy.total()
     worst = 0.0

@@ -1,0 +1,84 @@
+"""The cached states of the tablet campaign, made once and shared by every job (inside ``yade``).
+
+Two stages, each a saved simulation with a JSON description beside it in one directory:
+
+- ``released``: the pressure-sintered, released tablet (``tablet.prepare``);
+- ``unconfined``: the common start of the uni-axial tests, made from the released state
+  (``uniaxial.make_unconfined``).
+
+``ensure(stage, outdir, ...)`` loads the stage into ``O`` and returns its description, making it
+(and the stage before it) first if the directory does not hold it. It holds a lock on the
+directory while it looks and makes, so two jobs asking at once make a stage once: the second
+waits and loads what the first saved. Files are written under temporary names and renamed, so
+a half-written state is never loaded.
+"""
+import fcntl
+import json
+import os
+from contextlib import contextmanager
+
+from yade import O
+
+from . import tablet as _tablet
+from . import uniaxial as _uni
+
+STAGES = ("released", "unconfined")
+QUICK_N = 216
+
+
+def path(stage, outdir, quick=False):
+    if stage not in STAGES:
+        raise ValueError(f"stage = {stage!r} is invalid: one of {STAGES}")
+    return os.path.join(outdir, f"{stage}{'-quick' if quick else ''}.yade.gz")
+
+
+@contextmanager
+def _locked(outdir):
+    os.makedirs(outdir, exist_ok=True)
+    with open(os.path.join(outdir, ".stages.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+
+
+def _config(quick, material, kc_over_kp, n):
+    n = n or (QUICK_N if quick else 1728)
+    kc = _tablet.particle_material(material)["kc"] / _tablet.KP if kc_over_kp is None else float(kc_over_kp)
+    return {"n": int(n), "material": material, "kc_over_kp": kc}
+
+
+def _load(p, config):
+    with open(p + ".json") as f:
+        info = json.load(f)
+    built = info["built"]
+    have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"]}
+    if any(abs(have[k] - config[k]) > 1e-12 if k == "kc_over_kp" else have[k] != config[k] for k in config):
+        raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
+    O.load(p)
+    return info
+
+
+def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True):
+    """Loads ``stage`` ('released' or 'unconfined') of the tablet in ``outdir`` into O, making
+    it first if it is missing; returns its description. quick: the 216-particle tablet."""
+    config = _config(quick, material, kc_over_kp, n)
+    p = path(stage, outdir, quick)
+    with _locked(outdir):
+        if os.path.exists(p) and os.path.exists(p + ".json"):
+            return _load(p, config)
+        if stage == "released":
+            if progress:
+                print(f"preparing the released tablet {p} ({config})", flush=True)
+            return _tablet.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
+                                   progress=progress)
+    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress)
+    with _locked(outdir):
+        if os.path.exists(p) and os.path.exists(p + ".json"):  # made meanwhile by another job
+            return _load(p, config)
+        if progress:
+            print(f"making the unconfined start {p}", flush=True)
+        info = dict(info, unconfined=_uni.make_unconfined(progress=progress))
+        _tablet.save_atomic(p, info)
+        return info
