@@ -25,35 +25,37 @@ void MesoBackgroundDamping::validate() const
 		throw std::invalid_argument("MesoBackgroundDamping.reference = '" + reference + "' is invalid: must be 'lab' or 'contacts'");
 }
 
-namespace {
-	// The rigid motion of a body's mechanical contact neighbours, evaluated at the body's centre:
-	// (v_ref, w_ref). false if it has none (a free body: its own motion is rigid).
-	bool neighbourMotion(const Body& b, const BodyContainer& bodies, Vector3r& vRef, Vector3r& wRef)
-	{
-		Vector3r sumX = Vector3r::Zero(), sumV = Vector3r::Zero(), sumW = Vector3r::Zero();
-		int      n    = 0;
-		for (const auto& [otherId, I] : b.intrs) {
-			if (!I->isReal()) continue;
-			const auto* geom = dynamic_cast<const ScGeom*>(I->geom.get());
-			if (!geom || !(geom->penetrationDepth > 0)) continue;
-			const shared_ptr<Body>& o = bodies[otherId];
-			if (!o) continue;
-			const State& s = *o->state;
-			if (dynamic_cast<const Sphere*>(o->shape.get())) { // its centre
-				sumX += s.pos;
-				sumV += s.vel;
+void MesoBackgroundDamping::sumNeighbours()
+{
+	// One pass over the contacts (a vector) instead of each body's map of interactions: every
+	// contact adds each body's motion to the other's sums. Serial: it costs a small share of the
+	// law's own loop over the same contacts.
+	const BodyContainer& bodies = *scene->bodies;
+	const size_t         n      = bodies.size();
+	neighbours.assign(n, Neighbours());
+	isSphere.assign(n, 0);
+	for (size_t id = 0; id < n; ++id)
+		if (bodies[id]) isSphere[id] = dynamic_cast<const Sphere*>(bodies[id]->shape.get()) != nullptr;
+	for (const auto& I : *scene->interactions) {
+		if (!I->isReal()) continue;
+		const auto* geom = dynamic_cast<const ScGeom*>(I->geom.get());
+		if (!geom || !(geom->penetrationDepth > 0)) continue;
+		const Body::id_t ids[2] = {I->getId1(), I->getId2()};
+		for (int k = 0; k < 2; ++k) {
+			const Body::id_t self = ids[k], other = ids[1 - k];
+			if (!bodies[other]) continue;
+			const State& s   = *bodies[other]->state;
+			Neighbours&  acc = neighbours[self];
+			if (isSphere[other]) { // its centre
+				acc.x += s.pos;
+				acc.v += s.vel;
 			} else { // a wall or another large body: the material point at the contact
-				sumX += geom->contactPoint;
-				sumV += s.vel + s.angVel.cross(geom->contactPoint - s.pos);
+				acc.x += geom->contactPoint;
+				acc.v += s.vel + s.angVel.cross(geom->contactPoint - s.pos);
 			}
-			sumW += s.angVel;
-			++n;
+			acc.w += s.angVel;
+			++acc.n;
 		}
-		if (n == 0) return false;
-		const Real inv = Real(1) / n;
-		wRef           = sumW * inv;
-		vRef           = sumV * inv + wRef.cross(b.state->pos - sumX * inv);
-		return true;
 	}
 }
 
@@ -70,6 +72,7 @@ void MesoBackgroundDamping::action()
 		hasPrev.resize(n, 0);
 	}
 	const BodyContainer& bodies     = *scene->bodies;
+	if (relative) sumNeighbours();
 	Real                 dissipated = 0;
 #ifdef YADE_OPENMP
 #pragma omp parallel for reduction(+ : dissipated) schedule(static)
@@ -88,7 +91,13 @@ void MesoBackgroundDamping::action()
 			hasPrev[id] = 0;
 		}
 		Vector3r vRef = Vector3r::Zero(), wRef = Vector3r::Zero();
-		if (relative && !neighbourMotion(*b, bodies, vRef, wRef)) continue;
+		if (relative) { // the rigid motion of the contacts, at the body's centre; none without contacts
+			const Neighbours& acc = neighbours[id];
+			if (acc.n == 0) continue;
+			const Real inv = Real(1) / acc.n;
+			wRef           = acc.w * inv;
+			vRef           = acc.v * inv + wRef.cross(st.pos - acc.x * inv);
+		}
 		const Vector3r force  = -gammaB * (st.vel - vRef);
 		const Vector3r torque = -rot * (st.angVel - wRef);
 		if (track) {

@@ -11,7 +11,14 @@ namespace yade {
 class MesoBackgroundDamping : public GlobalEngine {
 	std::vector<Vector3r> prevVel, prevAngVel, prevForce, prevTorque; // state when the previous drag was applied
 	std::vector<char>     hasPrev;
-	void                  validate() const; // throws std::invalid_argument naming the attribute and value
+	struct Neighbours {
+		Vector3r x = Vector3r::Zero(), v = Vector3r::Zero(), w = Vector3r::Zero(); // sums of positions, velocities, spins
+		int      n = 0;
+	};
+	std::vector<Neighbours> neighbours; // per body, this step
+	std::vector<char>       isSphere;
+	void                    validate() const; // throws std::invalid_argument naming the attribute and value
+	void                    sumNeighbours();
 
 public:
 	void action() override;

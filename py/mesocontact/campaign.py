@@ -1,11 +1,12 @@
 """Figures 16-19 of the long paper (Appendix F) from the tablet tests (inside ``yade``).
 
-Each figure function runs its tests from the saved released state (prepared once, reused),
-writes one CSV per run and a PNG, prints progress, and returns a summary dict. ``quick=True``:
-a 216-particle tablet and one cycle, for the test suite.
+Each figure function runs its tests from the cached unconfined start (stages.ensure: made once,
+reused), writes a CSV and a JSON per run and a JSON and PNG per figure, prints progress, and
+returns a summary dict. ``quick=True``: a 216-particle tablet and one cycle, for the test suite.
 
-Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.crossing_time);
-the slow runs last ``slow`` times longer (4, as in the paper).
+Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.crossing_time).
+``rates`` runs one amplitude at three periods, each 4x the last; the figures run FAST and the
+4x slower SLOW, the pair where the peak force of every cycle agrees within 5 %.
 """
 import json
 import os
@@ -23,6 +24,11 @@ QUICK = dict(n=216, cycles=1)
 TENSION_AMPLITUDES = (0.025, 0.05, 0.1, 0.2, 0.3)
 COMPRESSION_AMPLITUDES = (0.05, 0.1, 0.2, 0.3)
 FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
+# Cycle periods in elastic crossing times (uniaxial.crossing_time): the rate study runs all
+# three; the figures run FAST (thin) and SLOW (thick), where the peaks agree within 5 %.
+RATE_PERIODS = (30.0, 120.0, 480.0)
+PULL_SPEED = 0.0075  # Fig. 17: each wall's speed [mm/us] (Dx = 9 in about 345 000 steps)
+FAST, SLOW = 120.0, 480.0
 GAP_AREA = 0.5  # a see-through hole this large [d0^2] counts as the first visible gap
 
 
@@ -32,61 +38,134 @@ def prepare(outdir, quick=False, progress=True, **tablet_kw):
     return _stages.ensure("unconfined", outdir, quick, progress=progress, **tablet_kw)
 
 
-def _run_name(mode, amplitude, slow, prefix=""):
-    return f"{prefix}{mode}-Dx{amplitude:g}-{'slow' if slow else 'fast'}"
+def run_name(mode, amplitude, period, prefix=""):
+    return f"{prefix}{mode}-Dx{amplitude:g}-P{period:g}"
 
 
-def cyclic(mode, outdir, amplitudes=None, quick=False, period=30.0, slow=4.0, progress=True,
-           snapshot_amplitude=None, figure=None):
-    """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude, fast and slow.
-    With snapshot_amplitude, the fast run of that amplitude also writes PNG and VTK snapshots
-    at the start, at every peak and at every return (Fig. 19). figure: the name of the JSON
-    and PNG written (default fig16 for tension, fig18 for compression), and the prefix of its
-    CSV files when given. slow = 1 or None: the fast runs only."""
-    prefix = f"{figure}-" if figure else ""
-    _uni._check_mode(mode)
-    cfg = QUICK if quick else FULL
-    amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
-    prepare(outdir, quick, progress)
-    summary = {"mode": mode, "quick": quick, "period_crossings": period, "slow_factor": slow,
-               "cycles": cfg["cycles"], "runs": {}}
-    t_all = time.time()
-    for amplitude in amplitudes:
-        for is_slow in ((False,) if quick or not slow or slow == 1 else (False, True)):
-            name = _run_name(mode, amplitude, is_slow, prefix)
-            t0 = time.time()
-            prepare(outdir, quick, progress)
-            test = _uni.Test(progress=progress)
-            hook = None
-            if snapshot_amplitude == amplitude and not is_slow:
-                hook = _cycle_snapshots(outdir, mode, amplitude, test)
-            rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period * (slow if is_slow else 1.0),
-                               on_record=hook)
-            _uni.write_csv(os.path.join(outdir, name + ".csv"), rows)
-            summary["runs"][name] = {
-                "amplitude": amplitude, "slow": is_slow, "steps_per_cycle": test.steps_per_cycle,
-                "dt": O.dt, "t_cross": test.t_cross, "L0": test.L0, "final_Dx": rows[-1][1],
-                "max_abs_Dx": max(abs(r[1]) for r in rows), "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
-                "wall_clock_s": time.time() - t0}
-            if progress:
-                print(f"{name}: {time.time() - t0:.0f} s", flush=True)
-    summary["wall_clock_s"] = time.time() - t_all
-    fig = figure or ("fig16" if mode == "tension" else "fig18")
-    if quick:
-        fig += "-quick"
-    # A figure re-run for some amplitudes keeps the runs of the others.
-    js = os.path.join(outdir, fig + ".json")
-    if os.path.exists(js):
+def read_csv(path):
+    with open(path) as f:
+        return [tuple(float(x) for x in line.split(",")) for line in f.read().split("\n")[1:] if line]
+
+
+def cycle_peaks(mode, rows, steps_per_cycle):
+    """The peak force of each cycle: the most tensile (min F) in tension, the largest in compression."""
+    start = rows[0][0]
+    cycles = {}
+    for it, _, f in rows:
+        k = min(int((it - start) // steps_per_cycle), int((rows[-1][0] - start - 1) // steps_per_cycle))
+        cycles.setdefault(k, []).append(f)
+    pick = min if mode == "tension" else max
+    return [pick(cycles[k]) for k in sorted(cycles)]
+
+
+def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None):
+    """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
+    start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
+    description, peaks per cycle). A run whose two files exist is read back, not repeated.
+    Returns (description, rows)."""
+    name = run_name(mode, amplitude, period, prefix)
+    csv, js = (os.path.join(outdir, name + ext) for ext in (".csv", ".json"))
+    if os.path.exists(csv) and os.path.exists(js) and hook is None:
         with open(js) as f:
-            old = json.load(f)
-        if old.get("period_crossings") == period and old.get("cycles") == cfg["cycles"]:
-            summary["runs"] = dict(old.get("runs", {}), **summary["runs"])
-            summary["wall_clock_s"] += old.get("wall_clock_s", 0)
+            return json.load(f), read_csv(csv)
+    cfg = QUICK if quick else FULL
+    t0 = time.time()
+    prepare(outdir, quick, progress)
+    test = _uni.Test(progress=progress)
+    rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
+                       on_record=hook(test) if hook else None)
+    info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": cfg["cycles"],
+            "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
+            "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
+            "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
+            "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
+            "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0])}
+    _uni.write_csv(csv, rows)
     with open(js, "w") as f:
+        json.dump(info, f, indent=1)
+    if progress:
+        print(f"{name}: {info['wall_clock_s']:.0f} s, peaks {['%.4g' % x for x in info['peaks']]}", flush=True)
+    return info, rows
+
+
+def cyclic(mode, outdir, amplitudes=None, quick=False, periods=(FAST, SLOW), progress=True,
+           snapshot_amplitude=None, figure=None):
+    """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
+    times; thin lines the first, thick the others). With snapshot_amplitude, the run of that
+    amplitude at the first period also writes PNG and VTK snapshots at the start, at every peak
+    and at every return (Fig. 19). figure: the name of the JSON and PNG written (default fig16
+    for tension, fig18 for compression), and the prefix of its runs' files when given."""
+    _uni._check_mode(mode)
+    prefix = f"{figure}-" if figure else ""
+    amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
+    runs, data = {}, {}
+    for amplitude in amplitudes:
+        for k, period in enumerate(periods):
+            hook = None
+            if snapshot_amplitude == amplitude and k == 0:
+                hook = lambda test, a=amplitude: _cycle_snapshots(outdir, mode, a, test)
+            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, prefix, hook)
+            runs[info["name"]] = info
+            data[info["name"]] = rows
+    fig = (figure or ("fig16" if mode == "tension" else "fig18")) + ("-quick" if quick else "")
+    summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
+               "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
+    with open(os.path.join(outdir, fig + ".json"), "w") as f:
         json.dump(summary, f, indent=1)
-    shown = sorted({r["amplitude"] for r in summary["runs"].values()})
-    plot_cycles(outdir, mode, shown, os.path.join(outdir, fig + ".png"), quick, prefix)
+    plot_cycles(mode, amplitudes, periods, runs, data, os.path.join(outdir, fig + ".png"), quick)
     return summary
+
+
+def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=True):
+    """The rate study: the tension and compression cycles of one amplitude at every period of
+    ``periods`` (crossing times, each 4x the last); writes rates.json, rates.csv (peak force per
+    cycle and period, and the change from each period to the next) and rates.png."""
+    table, runs = [], {}
+    for mode in _uni.MODES:
+        peaks = {}
+        for period in periods:
+            info, _ = run_cycles(outdir, mode, amplitude, period, quick, progress)
+            runs[info["name"]] = info
+            peaks[period] = info["peaks"]
+        for c in range(len(peaks[periods[0]])):
+            row = {"mode": mode, "amplitude": amplitude, "cycle": c + 1}
+            for period in periods:
+                row[f"P{period:g}"] = peaks[period][c]
+            for p1, p2 in zip(periods, periods[1:]):
+                row[f"change_P{p1:g}_P{p2:g}"] = abs(peaks[p1][c] / peaks[p2][c] - 1)
+            table.append(row)
+    tag = "rates-quick" if quick else "rates"
+    with open(os.path.join(outdir, tag + ".csv"), "w") as f:
+        keys = list(table[0])
+        f.write(",".join(keys) + "\n")
+        for row in table:
+            f.write(",".join(str(row[k]) for k in keys) + "\n")
+    summary = {"amplitude": amplitude, "periods_crossings": list(periods), "table": table, "runs": runs,
+               "criterion": "peak force of every cycle within 5 % between a period and the next (4x slower)"}
+    with open(os.path.join(outdir, tag + ".json"), "w") as f:
+        json.dump(summary, f, indent=1)
+    _plot_rates(table, periods, os.path.join(outdir, tag + ".png"))
+    return summary
+
+
+def _plot_rates(table, periods, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
+    for ax, mode in zip(axes, _uni.MODES):
+        rows = [r for r in table if r["mode"] == mode]
+        for period in periods:
+            ax.plot([r["cycle"] for r in rows], [r[f"P{period:g}"] for r in rows], "o-", label=f"period {period:g} t_w")
+        ax.set_xlabel("cycle")
+        ax.set_ylabel("peak F/(kp d0)")
+        ax.set_title(f"{mode}, Dx = {rows[0]['amplitude']:g}", fontsize=10)
+        ax.set_xticks([r["cycle"] for r in rows])
+        ax.legend(fontsize=8)
+    fig.suptitle("Peak force per cycle against the cycle period (t_w: elastic crossing time)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(png, dpi=130)
+    plt.close(fig)
 
 
 def _cycle_snapshots(outdir, mode, amplitude, test):
@@ -108,36 +187,34 @@ def _cycle_snapshots(outdir, mode, amplitude, test):
     return hook
 
 
-def plot_cycles(outdir, mode, amplitudes, png, quick=False, prefix=""):
+def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
     """Force-displacement cycles, compressive displacement (L0 - L)/d0 and force > 0 (tension
-    on the negative axes); thin: fast, thick: four times slower."""
+    on the negative axes); thin: the first period, thick: the slower ones."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import numpy as np
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for k, amplitude in enumerate(amplitudes):
-        for is_slow in (False, True):
-            f = os.path.join(outdir, _run_name(mode, amplitude, is_slow, prefix) + ".csv")
-            if not os.path.exists(f):
-                continue
-            d = np.loadtxt(f, delimiter=",", skiprows=1, ndmin=2)
-            ax.plot(-d[:, 1], d[:, 2], color=colours[k % len(colours)], lw=2.4 if is_slow else 0.8,
-                    label=f"Dx = {amplitude:g}" + (" (4x slower)" if is_slow else ""))
+    for name, info in runs.items():
+        k = amplitudes.index(info["amplitude"])
+        slow = info["period_crossings"] != periods[0]
+        d = data[name]
+        ax.plot([-r[1] for r in d], [r[2] for r in d], color=colours[k % len(colours)], lw=2.2 if slow else 0.7,
+                alpha=0.8 if slow else 1.0,
+                label=f"Dx = {info['amplitude']:g}, period {info['period_crossings']:g} t_w")
     ax.plot([0], [0], "ko", ms=6)
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_xlabel("compression (L0 - L)/d0  [tension < 0]")
     ax.set_ylabel("F/(kp d0)  [compressive > 0]")
     ax.set_title(f"Unconfined uni-axial {mode} cycles of the tablet" + (" (quick mode)" if quick else ""), fontsize=10)
-    ax.legend(fontsize=7, ncol=2)
+    ax.legend(fontsize=6.5, ncol=2)
     fig.tight_layout()
     fig.savefig(png, dpi=130)
     plt.close(fig)
 
 
-def pull(outdir, quick=False, speed=0.0075, until=9.0, progress=True, dx_marks=FIG17_DX):
+def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX):
     """Fig. 17: monotonic tension to Dx = until at wall speed ``speed`` [mm/us] with PNG and
     VTK snapshots at dx_marks; records where the first see-through gap opens and where the last
     contact chain between the walls breaks."""
@@ -192,33 +269,37 @@ def _plot_pull(rows, events, png):
 
 
 def main(figure, argv):
-    """Command line of the figure scripts: [--quick] [--out DIR] [--period P] [--amplitudes a,b]."""
+    """Command line of the tablet scripts (prepare, rates, fig16 ... fig19)."""
     import argparse
     p = argparse.ArgumentParser(prog=f"yade -n -x scripts/tablet_{figure}.py",
-                                description=f"Appendix F, {figure}: writes CSV, PNG (and VTK) into --out.")
+                                description=f"Appendix F, {figure}: writes CSV, JSON, PNG (and VTK) into --out.")
     p.add_argument("--quick", action="store_true", help="216 particles, one cycle (for tests)")
-    p.add_argument("--out", default="results/tablet", help="output directory (the released state is reused from it)")
-    p.add_argument("--period", type=float, default=30.0, help="cycle period in elastic crossing times (fast runs)")
+    p.add_argument("--out", default="results/tablet", help="output directory (the cached states are reused from it)")
+    default_periods = {"rates": RATE_PERIODS, "fig19": (FAST,)}.get(figure, (FAST, SLOW))
+    p.add_argument("--periods", default=",".join(f"{x:g}" for x in default_periods),
+                   help="comma-separated cycle periods in elastic crossing times (the first drawn thin)")
     p.add_argument("--amplitudes", default=None, help="comma-separated amplitudes Dx in d0")
-    p.add_argument("--speed", type=float, default=0.0075, help="fig17: wall speed [mm/us]")
-    if figure == "prepare":
-        p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
-                       help="particle parameters: Appendix F of the long paper or Table 2 of Luding 2008")
-        p.add_argument("--kc-over-kp", type=float, default=None, help="overrides the set's kc/kp")
-        p.add_argument("--n", type=int, default=None, help="number of particles (1728; 216 with --quick)")
+    p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
+    p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
+                   help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
+    p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
+    p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
     a = p.parse_args(argv)
     amps = tuple(float(x) for x in a.amplitudes.split(",")) if a.amplitudes else None
+    periods = tuple(float(x) for x in a.periods.split(","))
     t0 = time.time()
     if figure == "prepare":
         info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
         out = {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
+    elif figure == "rates":
+        out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods)
     elif figure == "fig16":
-        out = cyclic("tension", a.out, amps, a.quick, a.period)
+        out = cyclic("tension", a.out, amps, a.quick, periods)
     elif figure == "fig18":
-        out = cyclic("compression", a.out, amps, a.quick, a.period)
+        out = cyclic("compression", a.out, amps, a.quick, periods)
     elif figure == "fig19":
         amp = (amps or (0.3,))[-1]
-        out = cyclic("compression", a.out, (amp,), a.quick, a.period, slow=1.0, snapshot_amplitude=amp, figure="fig19")
+        out = cyclic("compression", a.out, (amp,), a.quick, periods[:1], snapshot_amplitude=amp, figure="fig19")
     elif figure == "fig17":
         out = pull(a.out, a.quick, speed=a.speed)
     else:
