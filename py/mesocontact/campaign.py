@@ -29,7 +29,7 @@ FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
 RATE_PERIODS = (30.0, 120.0, 480.0)
 PULL_SPEED = 0.0075  # Fig. 17: each wall's speed [mm/us] (Dx = 9 in about 345 000 steps)
 FAST, SLOW = 120.0, 480.0
-GAP_AREA = 0.5  # a see-through hole this large [d0^2] counts as the first visible gap
+GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
 
 
 def prepare(outdir, quick=False, progress=True, **tablet_kw):
@@ -172,6 +172,7 @@ def _cycle_snapshots(outdir, mode, amplitude, test):
     """A record hook writing snapshots at the start, at the peaks and at the returns."""
     state = {"next": 0}
     tag = "fig19" if mode == "compression" else "fig16-snap"
+    win = _snap.window(margin=1.5, stretch=0.5 * amplitude if mode == "tension" else 0.0)  # one frame for all panels
 
     def hook(t, row):
         spc = t.steps_per_cycle
@@ -181,7 +182,7 @@ def _cycle_snapshots(outdir, mode, amplitude, test):
             label = f"{tag}-{mode}-Dx{amplitude:g}-{k:02d}"
             what = "start" if k == 0 else ("peak" if k % 2 else "return") + f" {(k + 1) // 2}"
             _snap.png(os.path.join(outdir, label + ".png"),
-                      f"{mode}, amplitude {amplitude:g} d0: {what}, Dx = {row[1]:+.3f}, F/(kp d0) = {row[2]:+.3g}")
+                      f"{mode}, amplitude {amplitude:g} d0: {what}, Dx = {row[1]:+.3f}, F/(kp d0) = {row[2]:+.3g}", win=win)
             _snap.vtk(os.path.join(outdir, f"{tag}-{mode}-Dx{amplitude:g}"), k)
             state["next"] = k + 1
     return hook
@@ -215,34 +216,52 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
 
 
 def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX):
-    """Fig. 17: monotonic tension to Dx = until at wall speed ``speed`` [mm/us] with PNG and
-    VTK snapshots at dx_marks; records where the first see-through gap opens and where the last
-    contact chain between the walls breaks."""
+    """Fig. 17: monotonic tension to Dx = until, each wall moving out at ``speed`` [mm/us], with
+    PNG and VTK snapshots at dx_marks (one frame for all); records where the first crack is
+    visible from the front face (snapshots.visible_gap >= GAP_AREA d0^2), where one first sees
+    through the sample, where the last contact chain between the walls breaks, and the force
+    after that (no drag acts on a detached half moving as a body: it must vanish)."""
+    speed = speed or PULL_SPEED
     prepare(outdir, quick, progress)
     tag = "fig17-quick" if quick else "fig17"
     test = _uni.Test(progress=progress)
+    win = _snap.window(margin=1.0, stretch=0.5 * until)
     marks = list(dx_marks)
-    events = {"first_gap_Dx": None, "last_contact_Dx": None, "snapshots": []}
+    events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
+              "gap_area": []}
     check_every = 10  # records between the (costly) gap and connectivity checks
 
     def hook(t, row):
         dx = row[1]
         if marks and dx >= marks[0]:
             label = f"{tag}-{len(events['snapshots']):02d}"
-            _snap.png(os.path.join(outdir, label + ".png"), f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}")
+            _snap.png(os.path.join(outdir, label + ".png"), f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}",
+                      win=win)
             _snap.vtk(os.path.join(outdir, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         if len(t.rows) % check_every == 0:
-            if events["first_gap_Dx"] is None and _snap.see_through_holes() > GAP_AREA:
-                events["first_gap_Dx"] = dx
+            if events["first_gap_Dx"] is None:
+                area = _snap.visible_gap()
+                events["gap_area"].append((dx, area))
+                if area >= GAP_AREA:
+                    events["first_gap_Dx"] = dx
+            if events["see_through_Dx"] is None and _snap.see_through_holes() > GAP_AREA:
+                events["see_through_Dx"] = dx
             if events["last_contact_Dx"] is None and not _snap.walls_connected(t.left, t.right):
                 events["last_contact_Dx"] = dx
 
     t0 = time.time()
     rows = test.pull(speed, until=until, on_record=hook)
     _uni.write_csv(os.path.join(outdir, tag + ".csv"), rows)
+    after = [r[2] for r in rows if events["last_contact_Dx"] is not None and r[1] > events["last_contact_Dx"] + 0.05]
     summary = dict(events, speed=speed, until=until, t_cross=test.t_cross, L0=test.L0, quick=quick,
-                   wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows))
+                   wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows),
+                   max_tension_Dx=min(rows, key=lambda r: r[2])[1],
+                   # a drag on the halves would show as a mean force; they ring about zero
+                   mean_force_after_last_contact=sum(after) / len(after) if after else None,
+                   rms_force_after_last_contact=(sum(f * f for f in after) / len(after)) ** 0.5 if after else None,
+                   gap_criterion=f"a crack of >= {GAP_AREA:g} d0^2 seen >= 3 d0 behind the front face, "
+                                 "in the central 60 % of the height, between the walls")
     with open(os.path.join(outdir, tag + ".json"), "w") as f:
         json.dump(summary, f, indent=1)
     _plot_pull(rows, events, os.path.join(outdir, tag + ".png"))
@@ -255,7 +274,7 @@ def _plot_pull(rows, events, png):
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     ax.plot([r[1] for r in rows], [r[2] for r in rows], lw=0.8)
-    for key, style in (("first_gap_Dx", "g--"), ("last_contact_Dx", "r--")):
+    for key, style in (("first_gap_Dx", "g--"), ("see_through_Dx", "b--"), ("last_contact_Dx", "r--")):
         if events[key] is not None:
             ax.axvline(events[key], color=style[0], ls="--", lw=0.8, label=key.replace("_", " "))
     for s in events["snapshots"]:

@@ -1,7 +1,8 @@
 """Snapshots of the tablet without a GUI, and where it comes apart (inside ``yade``).
 
-- ``png``: the spheres seen along y (the viewer at -y), drawn far to near, coloured by their
-  distance from the viewer red -> green -> blue as in the paper's Figs. 17 and 19;
+- ``png``: the spheres seen along y (the viewer at -y), ray-cast and shaded as spheres, coloured
+  by their distance from the viewer red -> green -> blue as in the paper's Figs. 17 and 19;
+- ``visible_gap``: the largest crack seen from the front face, the paper's "first visible gap";
 - ``vtk``: the spheres (radius, depth, velocity) as legacy VTK polydata for ParaView;
 - ``see_through_holes``: the area of the holes one sees through the sample along y (empty pixels
   of the projection not connected to its outside), the "visible gap";
@@ -32,37 +33,132 @@ def depth_colours(depth):
     r = np.clip(1.0 - 2.0 * d, 0.0, 1.0)
     g = 1.0 - np.abs(2.0 * d - 1.0)
     b = np.clip(2.0 * d - 1.0, 0.0, 1.0)
-    return np.stack([r, g, b], axis=1)
+    return np.stack([r, g, b], axis=-1)
 
 
-def png(path, title="", xlim=None, zlim=None):
-    """Renders the spheres seen along +y into ``path``."""
+def window(margin=1.0, stretch=0.0):
+    """(x0, x1, z0, z1) around the spheres and walls present, ``margin`` d0 wide, and ``stretch``
+    d0 wider on each side in x (room for a pull): one window for every panel of a series."""
+    _, pos, rad = _spheres()
+    x0, x1 = (pos[:, 0] - rad).min(), (pos[:, 0] + rad).max()
+    for i in _tablet.wall_ids().values():
+        b = O.bodies[i]
+        x0, x1 = min(x0, b.state.pos[0] - b.shape.extents[0]), max(x1, b.state.pos[0] + b.shape.extents[0])
+    m = margin * _tablet.D0
+    return (x0 - m - stretch * _tablet.D0, x1 + m + stretch * _tablet.D0,
+            (pos[:, 2] - rad).min() - m, (pos[:, 2] + rad).max() + m)
+
+
+def depth_buffer(win, pixel):
+    """Ray-casts the spheres seen from -y along +y on a grid of ``pixel`` over ``win``: returns
+    (surface y of the first sphere hit, inf where none; its index; the surface normal), each an
+    array indexed [z, x]."""
+    _, pos, rad = _spheres()
+    x0, x1, z0, z1 = win
+    nx, nz = int((x1 - x0) / pixel) + 1, int((z1 - z0) / pixel) + 1
+    xs, zs = x0 + (np.arange(nx) + 0.5) * pixel, z0 + (np.arange(nz) + 0.5) * pixel
+    ybuf = np.full((nz, nx), np.inf)
+    owner = np.full((nz, nx), -1)
+    normal = np.zeros((nz, nx, 3))
+    for k, ((x, y, z), r) in enumerate(zip(pos, rad)):
+        i0, i1 = max(0, int((x - r - x0) / pixel)), min(nx, int((x + r - x0) / pixel) + 1)
+        j0, j1 = max(0, int((z - r - z0) / pixel)), min(nz, int((z + r - z0) / pixel) + 1)
+        if i0 >= i1 or j0 >= j1:
+            continue
+        dx = xs[None, i0:i1] - x
+        dz = zs[j0:j1, None] - z
+        h2 = r * r - dx * dx - dz * dz
+        hit = h2 > 0
+        h = np.sqrt(np.where(hit, h2, 0.0))
+        ys = y - h
+        sub = ybuf[j0:j1, i0:i1]
+        better = hit & (ys < sub)
+        sub[better] = ys[better]
+        owner[j0:j1, i0:i1][better] = k
+        nrm = normal[j0:j1, i0:i1]
+        nrm[better] = np.stack([np.broadcast_to(dx, h.shape), -h, np.broadcast_to(dz, h.shape)], axis=-1)[better] / r
+    return ybuf, owner, normal
+
+
+def png(path, title="", win=None, pixel=None):
+    """Renders the spheres seen from -y (the paper's view) into ``path``: each sphere shaded as a
+    sphere (light from the viewer's upper left) and coloured by its centre's distance from the
+    viewer, red -> green -> blue over the sample's depth; the walls in grey. ``win`` (see
+    window()) fixes the frame, so that a series of panels shares one scale."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.collections import PatchCollection
-    from matplotlib.patches import Circle, Rectangle
+    pixel = pixel or _tablet.D0 / 16
+    win = win or window()
     _, pos, rad = _spheres()
+    ybuf, owner, normal = depth_buffer(win, pixel)
     y = pos[:, 1]
     depth = (y - y.min()) / max(y.max() - y.min(), 1e-300)
-    order = np.argsort(-y)  # far first, near drawn on top
-    fig, ax = plt.subplots(figsize=(6, 4.5))
-    for i in _tablet.wall_ids().values():  # the walls' faces, grey, behind the particles
+    light = np.array([-0.45, -1.0, 0.55])
+    light /= np.linalg.norm(light)
+    shade = 0.3 + 0.7 * np.clip(normal @ light, 0.0, 1.0)  # both point towards the viewer's side
+    img = np.ones(ybuf.shape + (3,))
+    x0, x1, z0, z1 = win
+    xs = x0 + (np.arange(img.shape[1]) + 0.5) * pixel
+    zs = z0 + (np.arange(img.shape[0]) + 0.5) * pixel
+    for i in _tablet.wall_ids().values():  # the walls: grey, behind nothing
         b = O.bodies[i]
         c, e = b.state.pos, b.shape.extents
-        ax.add_patch(Rectangle((c[0] - e[0], c[2] - e[2]), 2 * e[0], 2 * e[2], color="0.8", zorder=0))
-    circles = [Circle((pos[i, 0], pos[i, 2]), rad[i]) for i in order]
-    col = PatchCollection(circles, facecolors=depth_colours(depth[order]), edgecolors="k", linewidths=0.15)
-    ax.add_collection(col)
-    ax.set_aspect("equal")
-    ax.set_xlim(xlim or (pos[:, 0].min() - 2 * _tablet.D0, pos[:, 0].max() + 2 * _tablet.D0))
-    ax.set_ylim(zlim or (pos[:, 2].min() - _tablet.D0, pos[:, 2].max() + _tablet.D0))
+        inx = (xs >= c[0] - e[0]) & (xs <= c[0] + e[0])
+        inz = (zs >= c[2] - e[2]) & (zs <= c[2] + e[2])
+        img[np.ix_(inz, inx)] = 0.72
+    seen = owner >= 0
+    img[seen] = depth_colours(depth[owner[seen]]) * shade[seen][:, None]
+    fig, ax = plt.subplots(figsize=(6.4, 6.4 * img.shape[0] / img.shape[1] + 0.6))
+    ax.imshow(img, origin="lower", extent=(x0, x1, z0, z1), interpolation="bilinear")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("z [mm]")
-    ax.set_title(title, fontsize=10)
+    ax.set_title(title, fontsize=9)
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def visible_gap(depth_behind=3.0, band=0.6, pixel=None):
+    """Area [d0^2] of the largest crack seen from the front face (-y): the largest 4-connected
+    region of pixels where the first sphere seen lies ``depth_behind`` d0 or more behind the
+    front face (or none is seen), within the central ``band`` of the sample's height in z and
+    between the inner faces of the x walls (one d0 in from each). The front face is the median
+    surface depth seen in that window. A sample seen whole gives 0; the paper's "first
+    visible gap" is the first Dx where this reaches one d0^2."""
+    pixel = pixel or _tablet.D0 / 10
+    _, pos, rad = _spheres()
+    lo, hi = _tablet.inner_box()
+    zc, zh = pos[:, 2].mean(), 0.5 * band * ((pos[:, 2] + rad).max() - (pos[:, 2] - rad).min())
+    x0 = (lo[0] if lo[0] is not None else (pos[:, 0] - rad).min()) + _tablet.D0
+    x1 = (hi[0] if hi[0] is not None else (pos[:, 0] + rad).max()) - _tablet.D0
+    if x1 <= x0:
+        return 0.0
+    ybuf, _, _ = depth_buffer((x0, x1, zc - zh, zc + zh), pixel)
+    front = np.median(ybuf[np.isfinite(ybuf)]) if np.isfinite(ybuf).any() else 0.0
+    deep = ybuf >= front + depth_behind * _tablet.D0
+    return _largest_region(deep) * pixel * pixel / _tablet.D0 ** 2
+
+
+def _largest_region(mask):
+    """Pixel count of the largest 4-connected True region of a boolean array."""
+    seen = np.zeros_like(mask)
+    best = 0
+    nz, nx = mask.shape
+    for j0, i0 in zip(*np.nonzero(mask)):
+        if seen[j0, i0]:
+            continue
+        seen[j0, i0] = True
+        todo, count = [(j0, i0)], 0
+        while todo:
+            j, i = todo.pop()
+            count += 1
+            for jj, ii in ((j + 1, i), (j - 1, i), (j, i + 1), (j, i - 1)):
+                if 0 <= jj < nz and 0 <= ii < nx and mask[jj, ii] and not seen[jj, ii]:
+                    seen[jj, ii] = True
+                    todo.append((jj, ii))
+        best = max(best, count)
+    return best
 
 
 def vtk(base, label):
@@ -123,3 +219,22 @@ def walls_connected(left, right):
                 seen.add(j)
                 todo.append(j)
     return False
+
+
+def montage(pngs, path, ncols=4):
+    """The panels ``pngs`` side by side in one picture (a series shares its frame and scale)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.image as mpimg
+    import matplotlib.pyplot as plt
+    imgs = [mpimg.imread(p) for p in pngs]
+    nrows = (len(imgs) + ncols - 1) // ncols
+    h, w = imgs[0].shape[:2]
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 3.2 * nrows * h / w), squeeze=False)
+    for ax in axes.flat:
+        ax.axis("off")
+    for ax, img in zip(axes.flat, imgs):
+        ax.imshow(img)
+    fig.tight_layout(pad=0.2)
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
