@@ -325,3 +325,35 @@ def main(figure, argv):
         raise ValueError(f"figure = {figure!r} is invalid")
     print(json.dumps(out, indent=1, default=str)[:4000])
     print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
+
+
+def report(outdir, docsdir):
+    """Copies a campaign's data and figures (CSV, JSON, PNG; not the saved states or VTK) from
+    ``outdir`` into ``docsdir``, with the snapshot series side by side (fig17-snapshots.png,
+    fig19-snapshots.png) and the states of the kc study (kc-*/) in one table (kc-study.csv)."""
+    import glob
+    import shutil
+    os.makedirs(docsdir, exist_ok=True)
+    for ext in ("csv", "json", "png"):
+        for f in glob.glob(os.path.join(outdir, f"*.{ext}")) + glob.glob(os.path.join(outdir, f"*.yade.gz.{ext}")):
+            shutil.copy(f, docsdir)
+    for tag in ("fig17", "fig19-compression-Dx0.3"):
+        pngs = sorted(glob.glob(os.path.join(outdir, f"{tag}-[0-9][0-9].png")))
+        if pngs:
+            _snap.montage(pngs, os.path.join(docsdir, tag.split("-")[0] + "-snapshots.png"), ncols=4 if len(pngs) > 6 else 3)
+    rows = []
+    for js in sorted(glob.glob(os.path.join(outdir, "kc-*", "released.yade.gz.json"))):
+        with open(js) as f:
+            info = json.load(f)
+        for stage in ("sintered", "released"):
+            s = info[stage]
+            rows.append([info["built"]["material"], info["built"]["kc_over_kp"], stage, s["solid_fraction"], s["coordination"],
+                         s["coordination_with_walls"], s["rattlers"], s["kinetic_energy_ratio"]]
+                        + [s["wall_stress"][w] for w in _tablet.WALLS] + s["side"])
+    if rows:
+        with open(os.path.join(docsdir, "kc-study.csv"), "w") as f:
+            f.write("material,kc_over_kp,stage,solid_fraction,coordination,coordination_with_walls,rattlers,"
+                    "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in _tablet.WALLS) + ",Lx,Ly,Lz\n")
+            for r in rows:
+                f.write(",".join(str(x) for x in r) + "\n")
+    return rows

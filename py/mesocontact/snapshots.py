@@ -13,7 +13,6 @@ import numpy as np
 try:
     from yade import O
     from yade import export as _export
-    from yade import wrapper as _w
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.snapshots needs YADE: run it inside `yade`") from _exc
 

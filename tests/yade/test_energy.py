@@ -2,7 +2,6 @@
 # to 1e-4 of the initial kinetic energy at every step of a collision, with every mechanism
 # of the normal law on; and the hysteretic dissipation of a rebound equals the closed form
 # E_i (1 - e^2).
-import math
 import sys
 
 from yade import O
