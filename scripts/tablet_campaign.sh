@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The full Appendix F campaign on a 2-core machine, as two independent single-threaded lanes
-# (faster here than one -j2 job), then its data and figures copied into docs/tablet/:
+# The full Appendix F campaign on a 2-core machine: independent single-threaded jobs, two at a
+# time (faster here than -j2 jobs), longest first; then the figures from the runs' files and
+# the data and figures copied into docs/tablet/:
 #   bash scripts/tablet_campaign.sh [YADE] [OUT]
 # YADE defaults to the build-tree launcher, OUT to results/tablet. Runs whose CSV and JSON are
 # in OUT already are read back, not repeated; the cached states are made once (stages.ensure).
@@ -8,19 +9,31 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 YADE=${1:-build/yade-meso}
 OUT=${2:-results/tablet}
-run() { "$YADE" -j1 -n -x "$@" --out "$OUT"; }
 mkdir -p "$OUT"
-run scripts/tablet_prepare.py
-( run scripts/tablet_fig16.py --amplitudes 0.2 --periods 30,120,480
-  run scripts/tablet_fig16.py
-  run scripts/tablet_fig17.py ) > "$OUT/lane-a.log" 2>&1 &
-( run scripts/tablet_fig18.py --amplitudes 0.2 --periods 30,120,480
-  run scripts/tablet_fig18.py
-  run scripts/tablet_fig19.py
-  for set in "table2 0" "appendixF 0.2" "table2 0.5"; do
-    read -r material kc <<< "$set"
-    "$YADE" -j1 -n -x scripts/tablet_prepare.py --material "$material" --kc-over-kp "$kc" --out "$OUT/kc-$material-$kc"
-  done ) > "$OUT/lane-b.log" 2>&1 &
-wait
-run scripts/tablet_rates.py   # the rate table from the runs above (nothing is re-run)
+"$YADE" -j1 -n -x scripts/tablet_prepare.py --out "$OUT"
+jobs="fig16.py --amplitudes 0.2 --periods 1920
+fig16.py --amplitudes 0.2 --periods 30,120,480
+fig18.py --amplitudes 0.2 --periods 30,120,480
+fig16.py --amplitudes 0.025
+fig16.py --amplitudes 0.05
+fig16.py --amplitudes 0.1
+fig16.py --amplitudes 0.3
+fig18.py --amplitudes 0.05
+fig18.py --amplitudes 0.1
+fig18.py --amplitudes 0.3
+fig17.py
+fig19.py
+timestep.py
+drag.py
+prepare.py --material table2 --kc-over-kp 0 --out $OUT/kc-table2-0
+prepare.py --material appendixF --kc-over-kp 0.2 --out $OUT/kc-appendixF-0.2
+prepare.py --material table2 --kc-over-kp 0.5 --out $OUT/kc-table2-0.5"
+export YADE OUT
+# Each line: a script of scripts/tablet_*.py and its options (a later --out overrides OUT).
+echo "$jobs" | xargs -P 2 -I{} sh -c 'set -f; set -- {}; script=$1; shift; name=$(echo "{}" | tr " ./" "___"); \
+  "$YADE" -j1 -n -x "scripts/tablet_$script" --out "$OUT" "$@" > "$OUT/log-$name.txt" 2>&1 \
+  && echo "done: {}" || { echo "FAILED: {} (see $OUT/log-$name.txt)"; exit 255; }'
+"$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT"   # the figures, from the runs above
+"$YADE" -j1 -n -x scripts/tablet_fig18.py --out "$OUT"
+"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --periods 30,120,480,1920
 "$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" docs/tablet

@@ -5,7 +5,7 @@ after Luding 2008) for YADE.
 - ``mesocontact.params``: parameters from dimensionless groups, time steps (plain Python);
 - ``mesocontact.pair``: pair-collision scenes and driver (inside ``yade``);
 - ``mesocontact.figures``: the papers' figures (matplotlib);
-- ``mesocontact.tablet``, ``uniaxial``, ``snapshots``, ``campaign``: the agglomerate tablet of
+- ``mesocontact.tablet``, ``stages``, ``uniaxial``, ``snapshots``, ``campaign``: the agglomerate tablet of
   Appendix F, its unconfined uni-axial tests and Figs. 16-19 (inside ``yade``).
 
 The C++ classes (``MesoMat``, ``MesoPhys``, ``Ip2_MesoMat_MesoMat_MesoPhys``,

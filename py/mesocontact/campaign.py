@@ -13,6 +13,7 @@ import os
 import time
 
 from yade import O
+from yade import wrapper as _w
 
 from . import snapshots as _snap
 from . import stages as _stages
@@ -124,15 +125,18 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
     for mode in _uni.MODES:
         peaks = {}
         for period in periods:
+            name = run_name(mode, amplitude, period)
+            if period not in RATE_PERIODS and not os.path.exists(os.path.join(outdir, name + ".json")):
+                continue  # a slower period only where it was run (it is long)
             info, _ = run_cycles(outdir, mode, amplitude, period, quick, progress)
             runs[info["name"]] = info
             peaks[period] = info["peaks"]
         for c in range(len(peaks[periods[0]])):
             row = {"mode": mode, "amplitude": amplitude, "cycle": c + 1}
             for period in periods:
-                row[f"P{period:g}"] = peaks[period][c]
+                row[f"P{period:g}"] = peaks[period][c] if period in peaks else ""
             for p1, p2 in zip(periods, periods[1:]):
-                row[f"change_P{p1:g}_P{p2:g}"] = abs(peaks[p1][c] / peaks[p2][c] - 1)
+                row[f"change_P{p1:g}_P{p2:g}"] = abs(peaks[p1][c] / peaks[p2][c] - 1) if p2 in peaks else ""
             table.append(row)
     tag = "rates-quick" if quick else "rates"
     with open(os.path.join(outdir, tag + ".csv"), "w") as f:
@@ -148,6 +152,57 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
     return summary
 
 
+def timestep_check(outdir, quick=False, factors=(0.5, 1.0, 2.0), amplitude=0.2, period=FAST, progress=True):
+    """The time step justified: one cycle of tension and of compression at ``amplitude`` and
+    ``period``, with the campaign's time step (tablet.time_step, t_c/50) scaled by each factor;
+    writes timestep.json with the peak forces and their change against the smallest step."""
+    out = {"amplitude": amplitude, "period_crossings": period, "factors": list(factors), "runs": []}
+    for mode in _uni.MODES:
+        for factor in factors:
+            prepare(outdir, quick, progress)
+            O.dt *= factor
+            test = _uni.Test(progress=False)
+            t0, n0 = time.time(), O.iter
+            rows = test.cycles(mode, amplitude, n_cycles=1, period=period)
+            peak = cycle_peaks(mode, rows, test.steps_per_cycle)[0]
+            out["runs"].append({"mode": mode, "factor": factor, "dt": O.dt, "peak": peak, "final_F": rows[-1][2],
+                                "ms_per_step": 1e3 * (time.time() - t0) / (O.iter - n0)})
+            if progress:
+                print(f"  time step x{factor:g}: {mode} peak F/(kp d0) = {peak:.5g}", flush=True)
+    for r in out["runs"]:
+        ref = [q for q in out["runs"] if q["mode"] == r["mode"] and q["factor"] == min(factors)][0]
+        r["peak_change_vs_smallest"] = abs(r["peak"] / ref["peak"] - 1)
+        r["final_F_change_vs_smallest"] = abs(r["final_F"] - ref["final_F"])
+    with open(os.path.join(outdir, "timestep-quick.json" if quick else "timestep.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    return out
+
+
+def drag_share(outdir, quick=False, amplitude=0.2, period=FAST, progress=True):
+    """How much of the tension peak the background drag supplies: one tension cycle with the
+    drag relative to the lab (the old form), relative to the contacts (the tests' form) and
+    without drag; writes drag-share.json."""
+    out = {"amplitude": amplitude, "period_crossings": period, "runs": {}}
+    for label in ("lab", "contacts", "none"):
+        prepare(outdir, quick, progress)
+        drag = [e for e in O.engines if isinstance(e, _w.MesoBackgroundDamping)][0]
+        if label == "none":
+            drag.gammaB = drag.gammaBR = 0.0
+        else:
+            drag.reference = label
+        test = _uni.Test(progress=False)
+        rows = test.cycles("tension", amplitude, n_cycles=1, period=period)
+        out["runs"][label] = {"peak": cycle_peaks("tension", rows, test.steps_per_cycle)[0], "final_F": rows[-1][2]}
+        if progress:
+            print(f"  drag {label}: tension peak F/(kp d0) = {out['runs'][label]['peak']:.5g}", flush=True)
+    none = out["runs"]["none"]["peak"]
+    for label in ("lab", "contacts"):
+        out["runs"][label]["drag_share_of_peak"] = 1 - none / out["runs"][label]["peak"]
+    with open(os.path.join(outdir, "drag-share-quick.json" if quick else "drag-share.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    return out
+
+
 def _plot_rates(table, periods, png):
     import matplotlib
     matplotlib.use("Agg")
@@ -156,7 +211,8 @@ def _plot_rates(table, periods, png):
     for ax, mode in zip(axes, _uni.MODES):
         rows = [r for r in table if r["mode"] == mode]
         for period in periods:
-            ax.plot([r["cycle"] for r in rows], [r[f"P{period:g}"] for r in rows], "o-", label=f"period {period:g} t_w")
+            if rows[0][f"P{period:g}"] != "":
+                ax.plot([r["cycle"] for r in rows], [r[f"P{period:g}"] for r in rows], "o-", label=f"period {period:g} t_w")
         ax.set_xlabel("cycle")
         ax.set_ylabel("peak F/(kp d0)")
         ax.set_title(f"{mode}, Dx = {rows[0]['amplitude']:g}", fontsize=10)
@@ -310,6 +366,10 @@ def main(figure, argv):
     if figure == "prepare":
         info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
         out = {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
+    elif figure == "drag":
+        out = drag_share(a.out, a.quick)
+    elif figure == "timestep":
+        out = timestep_check(a.out, a.quick)
     elif figure == "rates":
         out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods)
     elif figure == "fig16":
