@@ -1,17 +1,19 @@
 """The agglomerate "tablet" of Luding 2008 / Appendix F of the long paper (run inside ``yade``).
 
 Units are the paper's: 1 mm, 1 us, 1 mg (stiffness 1 = 1e6 N/m, stress 1 = 1e9 Pa). Primary
-particles of mean diameter d0 = 0.01 in a box of six walls (YADE boxes, so that rolling and
-torsion act on the walls' ScGeom6D too) are pressure-sintered with YADE's
-``TriaxialStressController`` at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
+particles of mean diameter d0 = 0.01, with the full law (adhesion, friction, rolling, torsion)
+from the start, are compacted from a gas by six walls (YADE boxes, so that rolling and torsion
+act on the walls' ScGeom6D too) driven by YADE's ``TriaxialStressController``, pressure-sintered
+at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
 
     from mesocontact import tablet
     info = tablet.prepare("released.yade.gz")    # or stages.ensure("released", DIR): reuse
     print(info["released"]["solid_fraction"])
 
-All six walls carry the strongly adhesive wall material of Luding's tension tests (a ``dominant``
-MesoMat, kc_wall/kp = 20, mu_wall = 10), so the two loading walls of every later test hold the
-sample from the start; the four lateral walls are removed by the tests.
+While the tablet is made the walls are a smooth, non-adhesive mould (mould_material); the tests
+give the two loading walls the strongly adhesive material of Luding's tension tests
+(wall_material: kc_wall/kp = 20, mu_wall = 10) and remove the four lateral walls
+(uniaxial.make_unconfined).
 """
 import json
 import math
