@@ -32,7 +32,7 @@ RATE_PERIODS = (30.0, 120.0, 480.0)
 # within 0.5 % from 120 t_w on; tension cycles after the first only from 480 t_w (120 -> 480:
 # up to 25 %, 480 -> 1920: up to 3 %).
 PERIODS = {"tension": (480.0, 1920.0), "compression": (120.0, 480.0)}
-PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us], half the peak wall speed of the 480 t_w cycles at Dx = 0.2 (Dx = 9 in about 1 040 000 steps)
+PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us]: the peak wall speed of 240 t_w cycles at Dx = 0.2, where the first pull's peak agrees within 2.2 % from 120 t_w on (Dx = 9 in about 1 040 000 steps)
 FAST, SLOW = PERIODS["compression"]
 GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
 
