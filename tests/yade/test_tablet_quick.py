@@ -122,7 +122,7 @@ for mode in ("tension", "compression"):
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
-pull = campaign.pull(out, quick=True, progress=False)
+pull = campaign.pull(out, quick=True, speed=3 * campaign.PULL_SPEED, progress=False)  # 3x faster: the protocol, not the figure
 check(pull["last_contact_Dx"] is not None, f"pull: the last contact chain breaks at Dx = {pull['last_contact_Dx']}")
 check(pull["first_gap_Dx"] is not None and pull["first_gap_Dx"] < pull["until"],
       f"pull: first visible crack at Dx = {pull['first_gap_Dx']}")
