@@ -10,10 +10,10 @@ at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
     info = tablet.prepare("released.yade.gz")    # or stages.ensure("released", DIR): reuse
     print(info["released"]["solid_fraction"])
 
-While the tablet is made the walls are a smooth, non-adhesive mould (mould_material); the tests
-give the two loading walls the strongly adhesive material of Luding's tension tests
-(wall_material: kc_wall/kp = 20, mu_wall = 10) and remove the four lateral walls
-(uniaxial.make_unconfined).
+While the tablet is compacted and sintered the walls are a smooth, non-adhesive mould
+(mould_material); after sintering the two loading walls get the strongly adhesive material of
+Luding's tension tests (wall_material: kc_wall/kp = 20, mu_wall = 10), and the tests remove the
+four lateral walls (uniaxial.make_unconfined).
 """
 import json
 import math
@@ -342,6 +342,24 @@ def save_atomic(path, info):
     os.replace(path + f".tmp{os.getpid()}", path + ".json")
 
 
+def make_adhesive_walls(wall_ids):
+    """Gives the walls the adhesive material of Luding's tension tests (wall_material) in place
+    of the smooth mould: the walls' MesoMat is changed and every contact of these walls adopts
+    it, keeping its history (the force stays continuous). Idempotent."""
+    walls = [m for m in O.materials if m.label == "walls"][0]
+    adhesive = wall_material()
+    walls.kc, walls.frictionAngle, walls.muR, walls.muO = (adhesive[k] for k in ("kc", "frictionAngle", "muR", "muO"))
+    ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
+    for wid in wall_ids:
+        for I in O.bodies[wid].intrs():
+            ip2.adoptMaterials(I)
+
+
+def _wall_contacts(name):
+    wid = wall_ids()[name]
+    return sum(1 for I in O.bodies[wid].intrs() if I.isReal and I.geom.penetrationDepth > 0)
+
+
 def _compact(goal, speed, progress, chunk=500, max_steps=200000):
     """Drives the walls in at up to ``speed`` [mm/us], without background drag, until every wall
     first carries 0.9 goal; returns stats() then. The particles meet faster than they stick, so
@@ -372,7 +390,8 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     """Makes the released tablet with the full law (adhesion, friction, rolling, torsion) from
     the start: a gas of the particles is compacted by the six walls (at up to
     ``compaction_speed`` [mm/us], without background drag) until they carry d0 p_s/kp = 0.02,
-    sintered at that stress with the lab-frame background drag until static, released to
+    sintered at that stress with the lab-frame background drag until static, glued to the two
+    x walls (make_adhesive_walls), released to
     p_r/p_s = 1e-3 (the goal lowered geometrically over ``release_steps`` steps) and relaxed.
     Saves the released state to ``path`` (O.save) and its description to ``path + '.json'``
     (both atomically); returns the description."""
@@ -381,9 +400,15 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     O.engines = engines(_controller(SINTER_STRESS, SINTER_SPEED), reference="lab")
     info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
     info["sintered"] = _relax(SINTER_STRESS, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
+    # The loading walls are glued to the sample where it was sintered against them: released
+    # against the smooth mould first, only the few particles still touching at p_r (12 and 16
+    # of about 144 per face) held it, and the pull tore it off a wall.
+    make_adhesive_walls([wall_ids()["left"], wall_ids()["right"]])
+    info["loading_wall_contacts_sintered"] = {k: _wall_contacts(k) for k in ("left", "right")}
     _release(RELEASE_RATIO * SINTER_STRESS, release_steps, progress)
     info["released"] = _relax(RELEASE_RATIO * SINTER_STRESS, tol_stress, tol_ke, "release", progress)
     info["release_steps"] = release_steps
+    info["loading_wall_contacts_released"] = {k: _wall_contacts(k) for k in ("left", "right")}
     info["units"] = "mm, us, mg (stress 1 = 1e9 Pa)"
     info["d0"] = D0
     info["kp"] = KP

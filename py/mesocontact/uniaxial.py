@@ -81,23 +81,10 @@ class _Servo:
             O.bodies[wid].state.vel = Vector3(outward * max(-self.v_max, min(self.v_max, v)), 0, 0)
 
 
-def make_adhesive_walls(wall_ids):
-    """Gives the walls the adhesive material of Luding's tension tests (tablet.wall_material)
-    in place of the smooth mould: the walls' MesoMat is changed and every contact of these
-    walls adopts it, keeping its history (the force stays continuous)."""
-    walls = [m for m in O.materials if m.label == "walls"][0]
-    adhesive = _tablet.wall_material()
-    walls.kc, walls.frictionAngle, walls.muR, walls.muO = (adhesive[k] for k in ("kc", "frictionAngle", "muR", "muO"))
-    ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
-    for wid in wall_ids:
-        for I in O.bodies[wid].intrs():
-            ip2.adoptMaterials(I)
-
-
 def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000):
     """Turns the loaded released state into the common start of the uni-axial tests: the four
     lateral walls erased with their contacts (no lateral stress), the stress controller
-    removed, the two x walls made adhesive (make_adhesive_walls), and the sample relaxed again
+    removed, and the sample (glued to the two x walls since sintering) relaxed again
     with the x walls held at the release stress p_r (the lateral walls had held it), until the
     wall force is within tol_force kp d0 of p_r L_y L_z and the kinetic energy below tol_ke of
     the energy scale; the background drag then acts relative to the contacts, as in the tests.
@@ -109,7 +96,7 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
         if name in walls:
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
-    make_adhesive_walls((walls["left"], walls["right"]))
+    _tablet.make_adhesive_walls((walls["left"], walls["right"]))  # done at sintering; a no-op then
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
     _before_newton([_py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
     scale = _tablet.KP * _tablet.D0
