@@ -11,13 +11,12 @@ YADE=${1:-build/yade-meso}
 OUT=${2:-results/tablet}
 mkdir -p "$OUT"
 "$YADE" -j1 -n -x scripts/tablet_prepare.py --out "$OUT"
-jobs="fig16.py --amplitudes 0.2 --periods 1920
-fig16.py --amplitudes 0.2 --periods 30,120,480
+jobs="fig16.py --amplitudes 0.2 --periods 30,120,480
 fig18.py --amplitudes 0.2 --periods 30,120,480
-fig16.py --amplitudes 0.025 --periods 120,480
-fig16.py --amplitudes 0.05 --periods 120,480
-fig16.py --amplitudes 0.1 --periods 120,480
-fig16.py --amplitudes 0.3 --periods 120,480
+fig16.py --amplitudes 0.025
+fig16.py --amplitudes 0.05
+fig16.py --amplitudes 0.1
+fig16.py --amplitudes 0.3
 fig18.py --amplitudes 0.05
 fig18.py --amplitudes 0.1
 fig18.py --amplitudes 0.3
@@ -33,7 +32,7 @@ export YADE OUT
 echo "$jobs" | xargs -P 2 -I{} sh -c 'set -f; set -- {}; script=$1; shift; name=$(echo "{}" | tr " ./" "___"); \
   "$YADE" -j1 -n -x "scripts/tablet_$script" --out "$OUT" "$@" > "$OUT/log-$name.txt" 2>&1 \
   && echo "done: {}" || { echo "FAILED: {} (see $OUT/log-$name.txt)"; exit 255; }'
-"$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT" --slow-amplitudes 0.2   # the figures, from the runs above
+"$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT"   # the figures, from the runs above
 "$YADE" -j1 -n -x scripts/tablet_fig18.py --out "$OUT"
-"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --periods 30,120,480,1920
+"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT"
 "$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" docs/tablet
