@@ -12,8 +12,8 @@ at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
 
 While the tablet is compacted and sintered the walls are a smooth, non-adhesive mould
 (mould_material); after sintering the two loading walls get the strongly adhesive material of
-Luding's tension tests (wall_material: kc_wall/kp = 20, mu_wall = 10), and the tests remove the
-four lateral walls (uniaxial.make_unconfined).
+Luding's tension tests (make_adhesive_walls: kc_wall/kp = 20, mu_wall = 10), and the tests
+remove the four lateral walls (uniaxial.make_unconfined).
 """
 import json
 import math
@@ -64,20 +64,12 @@ def particle_material(material="appendixF", **changes):
     return kw
 
 
-def wall_material(material="appendixF", **changes):
-    """The loading walls of Luding's tension tests: the particles' law with kc_wall/kp = 20 and
-    mu_wall = 10, imposed unmixed on wall contacts (``dominant``)."""
-    kw = particle_material(material, kc=20 * KP, frictionAngle=math.atan(10.0), label="walls", dominant=True)
-    kw.update(changes)
-    return kw
-
-
 def mould_material(material="appendixF"):
     """The walls while the tablet is made: the particles' normal law without adhesion, friction,
     rolling or torsion resistance (a smooth, non-adhesive mould), imposed unmixed. Frictional
     walls lock the box: spheres wedged at its edges and corners carry the wall stress by
     friction against the neighbouring wall (at N = 216 the stress target was met at solid
-    fraction 0.40, coordination 1.2). The tests make the loading walls adhesive."""
+    fraction 0.40, coordination 1.2). After sintering the loading walls are made adhesive."""
     return particle_material(material, kc=0.0, frictionAngle=0.0, muR=0.0, muO=0.0, label="walls", dominant=True)
 
 
@@ -124,7 +116,7 @@ def _radii(n, rel_std, rng):
 
 
 def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF", kc_over_kp=None):
-    """A loose random gas of n spheres in a cubic box of six adhesive walls (ids 0-5, spheres
+    """A loose random gas of n spheres in a cubic box of six smooth walls (ids 0-5, spheres
     after), particles of parameter set ``material`` (kc_over_kp overrides its kc/kp). The
     Gaussian size distribution is narrow (relative std rel_std, cut at 2 sigma) to avoid
     monodisperse crystallisation."""
@@ -343,14 +335,23 @@ def save_atomic(path, info):
 
 
 def make_adhesive_walls(wall_ids):
-    """Gives the walls the adhesive material of Luding's tension tests (wall_material) in place
-    of the smooth mould: the walls' MesoMat is changed and every contact of these walls adopts
-    it, keeping its history (the force stays continuous). Idempotent."""
-    walls = [m for m in O.materials if m.label == "walls"][0]
-    adhesive = wall_material()
-    walls.kc, walls.frictionAngle, walls.muR, walls.muO = (adhesive[k] for k in ("kc", "frictionAngle", "muR", "muO"))
+    """Gives these walls the adhesive law of Luding's tension tests (the particles' law with
+    kc_wall/kp = 20, mu_wall = 10, ``dominant``) as a material of their own, "loading walls", so
+    that the other walls stay a smooth mould; every contact of these walls adopts it, keeping its
+    history (the force stays continuous). Idempotent."""
+    mats = [m for m in O.materials if m.label == "loading walls"]
+    if mats:
+        mat = mats[0]
+    else:
+        particles = [m for m in O.materials if m.label == "particles"][0]
+        keys = [k for k in particle_material() if k != "label"]
+        kw = {k: getattr(particles, k) for k in keys}
+        kw.update(kc=20 * KP, frictionAngle=math.atan(10.0), dominant=True, label="loading walls")
+        mat = _w.MesoMat(**kw)
+        O.materials.append(mat)
     ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
     for wid in wall_ids:
+        O.bodies[wid].material = mat
         for I in O.bodies[wid].intrs():
             ip2.adoptMaterials(I)
 

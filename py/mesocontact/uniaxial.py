@@ -2,9 +2,9 @@
 
 The tests start from the unconfined start (``make_unconfined``, made once from the released
 state and cached by ``stages.ensure('unconfined')``): the four lateral walls erased with their
-contacts (unconfined: no lateral stress at all), the stress controller removed, the x walls
-made adhesive (kc_wall/kp = 20, mu_wall = 10, contact histories kept) and the sample relaxed
-again with the x walls held at p_r; the background drag acts relative to each particle's
+contacts (unconfined: no lateral stress at all), the stress controller removed, and the sample,
+glued to the adhesive x walls since sintering (tablet.make_adhesive_walls), relaxed again with
+the x walls held at p_r; the background drag acts relative to each particle's
 contacts, so a part of the sample moving as a body is not dragged. From there the two x walls
 move symmetrically:
 
@@ -96,7 +96,6 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
         if name in walls:
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
-    _tablet.make_adhesive_walls((walls["left"], walls["right"]))  # done at sintering; a no-op then
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
     _before_newton([_py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
     scale = _tablet.KP * _tablet.D0

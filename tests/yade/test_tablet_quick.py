@@ -81,10 +81,12 @@ wall_contacts = [I for I in O.interactions if I.isReal and test.left in (I.id1, 
 check(len(wall_contacts) > 0 and all(abs(I.phys.kc - 20 * tablet.KP) < 1e-12 and abs(I.phys.muS - 10) < 1e-12
                                      for I in wall_contacts),
       f"{len(wall_contacts)} wall contacts with kc = 20 kp and mu = 10 (adhesive wall material)")
+mould = [m for m in O.materials if m.label == "walls"][0]
+check(mould.kc == 0 and mould.frictionAngle == 0, "the other walls' material stays the smooth mould")
 kept = sum(1 for I in wall_contacts if I.phys.deltaMax > 1.5 * I.geom.penetrationDepth)
 check(kept > len(wall_contacts) // 2, f"wall contacts kept their sintering history: {kept}/{len(wall_contacts)} with deltaMax > 1.5 x overlap")
 ip2 = [e for e in O.engines if isinstance(e, w.InteractionLoop)][0].physDispatcher.functors[0]
-walls_mat = [m for m in O.materials if m.label == "walls"][0]
+walls_mat = [m for m in O.materials if m.label == "loading walls"][0]
 walls_mat.k1 = 0.3 * tablet.KP
 try:
     ip2.adoptMaterials(wall_contacts[0])
