@@ -63,6 +63,7 @@ void validate(const MaterialParams& m)
 	if (!(m.fa >= 0)) reject("fa", m.fa, "the non-contact adhesive force must be >= 0");
 	if (!(m.kca >= 0)) reject("kca", m.kca, "the non-contact adhesive stiffness must be >= 0");
 	if (m.fa > 0 && !(m.kca > 0)) reject("kca", m.kca, "must be > 0 when fa > 0 (the range of the non-contact force is fa/kca)");
+	if (m.fa > 0 && !std::isfinite(m.fa / m.kca)) reject("kca", m.kca, "too small for fa: the range fa/kca of the non-contact force must be finite");
 	if (m.fa > 0 && m.adhesion == Adhesion::None)
 		throw std::invalid_argument("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0");
 	if (!(m.gammaN >= 0)) reject("gammaN", m.gammaN, "the viscous damping must be >= 0");
@@ -80,7 +81,13 @@ void validate(const MaterialParams& m)
 	if (!(m.phiD > 0 && m.phiD <= 1)) reject("phiD", m.phiD, "the dynamic/static friction ratio must lie in (0, 1]");
 }
 
-double harmonicMean(double x, double y) { return (x == 0 || y == 0) ? 0.0 : 2 * x * y / (x + y); }
+double harmonicMean(double x, double y)
+{
+	if (x == 0 || y == 0) return 0.0;
+	// Scaled by the larger value: 2xy/(x+y) itself overflows for finite x, y above ~1e154.
+	const double s = std::max(x, y), u = x / s, v = y / s;
+	return s * (2 * (u * v / (u + v))); // <= s: 2 s itself can overflow
+}
 
 void setMechanisms(PairParams& p, bool geometryWithRotations)
 {
@@ -99,6 +106,36 @@ PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)
 	// 0 when purely elastic (kp == k1): the limit branch is never reached.
 	g.invDeltaMaxP = p.kp > p.k1 ? (p.kp - p.k1) / (p.kp * p.phiF * g.a12()) : 0.0;
 	return g;
+}
+
+double stableStep(double k, double gamma, double invMass)
+{
+	if (!(invMass > 0)) return std::numeric_limits<double>::infinity();
+	if (k <= 0) return gamma > 0 ? 2 / (gamma * invMass) : std::numeric_limits<double>::infinity();
+	const double m = 1 / invMass, w = std::sqrt(k * invMass), z = gamma / (2 * std::sqrt(k * m));
+	return 2 / w / (std::sqrt(1 + z * z) + z); // = (2/w)(sqrt(1+z^2) - z), without the cancellation
+}
+
+double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1, double invInertia2,
+                  const char** which)
+{
+	double best = stableStep(p.kp, p.gammaN, invMass1 + invMass2);
+	*which      = "normal";
+	auto consider = [&](double dt, const char* name) {
+		if (dt < best) {
+			best   = dt;
+			*which = name;
+		}
+	};
+	if (p.slides) { // the contact point moves with both spheres' spins too (arms ~ radii)
+		const double inv = invMass1 + invMass2 + g.radius1 * g.radius1 * invInertia1 + g.radius2 * g.radius2 * invInertia2;
+		consider(stableStep(p.sliding.k, p.sliding.gamma, inv), "sliding");
+	}
+	const double lever = p.leverFactor * (g.radius1 > 0 && g.radius2 > 0 ? g.radius1 * g.radius2 / (g.radius1 + g.radius2) : std::max(g.radius1, g.radius2));
+	const double invRot = lever * lever * (invInertia1 + invInertia2); // v_r = a' (w1 - w2), torque a' f on each
+	if (p.rolls) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
+	if (p.twists) consider(stableStep(p.twisting.k, p.twisting.gamma, invRot), "torsion");
+	return best;
 }
 
 PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)

@@ -61,7 +61,7 @@ struct MaterialParams {
 // Throws std::invalid_argument whose message starts with the offending parameter's name.
 void validate(const MaterialParams& m);
 
-// Harmonic mean 2xy/(x+y) (0 if either is 0): reduces to x for equal materials.
+// Harmonic mean 2xy/(x+y) (0 if either is 0), without overflow for any finite x, y >= 0; x for x == y.
 double harmonicMean(double x, double y);
 
 // The parameters of one material pair (MODEL.md §8): the same for every contact of that pair,
@@ -92,7 +92,7 @@ struct PairGeometry {
 	// Plastic overlap on the limit branch phiF a12 (Eq. 11) [m].
 	double delta0P(const PairParams& p) const { return p.phiF * a12(); }
 	// Reduced radius 2 a1 a2/(a1+a2) of two spheres; against a wall, box or facet (radius 0) 2 a.
-	static double reducedRadius(double r1, double r2) { return (r1 > 0 && r2 > 0) ? 2 * r1 * r2 / (r1 + r2) : 2 * (r1 > 0 ? r1 : r2); }
+	static double reducedRadius(double r1, double r2) { return (r1 > 0 && r2 > 0) ? harmonicMean(r1, r2) : 2 * (r1 > 0 ? r1 : r2); }
 };
 
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;
@@ -109,5 +109,17 @@ void setMechanisms(PairParams& p, bool geometryWithRotations);
 
 // The geometry of one contact of pair p between spheres of radii r1 and r2 (0: wall, box or facet).
 PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2);
+
+// Largest stable step of the leapfrog (central difference) integration of a spring k [N/m] with a
+// dashpot gamma [kg/s] on a mass m = 1/invMass: (2/w)(sqrt(1 + z^2) - z), w = sqrt(k/m), z = gamma/(2 sqrt(k m));
+// 2 m/gamma for a dashpot alone; +inf without either or for an infinite mass (invMass = 0) [s].
+double stableStep(double k, double gamma, double invMass);
+
+// The stable step of a contact (the smallest over its normal limit branch kp with gamma0 and the
+// sliding, rolling and torsion elements that act). invMass1/2: 1/m of each body, invInertia1/2:
+// 1/(smallest principal moment) (0 for a body that does not move); a12 radii from g. Names the
+// element that limits it in *which (normal, sliding, rolling, torsion).
+double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1, double invInertia2,
+                  const char** which);
 
 } // namespace meso

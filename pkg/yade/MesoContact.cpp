@@ -2,8 +2,10 @@
 #include <core/BodyContainer.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
+#include <iostream>
 #include <core/State.hpp>
 #include <pkg/common/Sphere.hpp>
+#include <sstream>
 #include <stdexcept>
 
 namespace yade {
@@ -29,6 +31,16 @@ namespace {
 		                        { &MesoMat::gammaO, &meso::MaterialParams::gammaO }, { &MesoMat::muO, &meso::MaterialParams::muO } };
 }
 
+namespace {
+	std::string number(Real v) // all digits: a rejected 1e-20 must not read "0.000000"
+	{
+		std::ostringstream out;
+		out.precision(17);
+		out << v;
+		return out.str();
+	}
+}
+
 meso::MaterialParams MesoMat::parse() const
 {
 	meso::MaterialParams m;
@@ -37,9 +49,15 @@ meso::MaterialParams MesoMat::parse() const
 	m.adhesion        = meso::parseAdhesion(adhesion);
 	m.k2Interpolation = meso::parseK2Interpolation(k2Interpolation);
 	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
-		throw std::invalid_argument("frictionAngle = " + std::to_string(frictionAngle) + " is invalid: must lie in [0, pi/2)");
+		throw std::invalid_argument("frictionAngle = " + number(frictionAngle) + " is invalid: must lie in [0, pi/2)");
 	m.muS      = math::tan(frictionAngle);
 	m.dominant = dominant;
+	// Not parameters of the law, but a mass of 0, < 0 or NaN (density) or a wrong time step (young,
+	// read by PWaveTimeStep) would make any run meaningless without a word.
+	if (!(std::isfinite(density) && density > 0))
+		throw std::invalid_argument("density = " + number(density) + " is invalid: must be a finite number > 0 [kg/m^3]");
+	if (!(std::isfinite(young) && young > 0))
+		throw std::invalid_argument("young = " + number(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law; PWaveTimeStep reads it)");
 	return m;
 }
 
@@ -53,10 +71,15 @@ void MesoMat::postLoad(MesoMat&)
 		++revisionCount;
 		validAdhesion        = adhesion;
 		validK2Interpolation = k2Interpolation;
-	} catch (const std::invalid_argument&) { // keep the material valid: undo the assignment, then report it
+		validFrictionAngle   = frictionAngle;
+		validDensity         = density;
+		validYoung           = young;
+	} catch (const std::invalid_argument&) { // keep the material valid: undo every assignment (updateAttrs makes several), then report
 		for (const Field& f : numericFields)
 			this->*f.attr = valid.*f.param;
-		frictionAngle   = math::atan(valid.muS);
+		frictionAngle   = validFrictionAngle; // not atan(muS): that can differ by an ulp
+		density         = validDensity;
+		young           = validYoung;
 		dominant        = valid.dominant;
 		adhesion        = validAdhesion;
 		k2Interpolation = validK2Interpolation;
@@ -67,6 +90,18 @@ void MesoMat::postLoad(MesoMat&)
 void MesoMat::setFrictionAngle(Real a)
 {
 	frictionAngle = a;
+	postLoad(*this);
+}
+
+void MesoMat::setDensity(Real d)
+{
+	density = d;
+	postLoad(*this);
+}
+
+void MesoMat::setYoung(Real y)
+{
+	young = y;
 	postLoad(*this);
 }
 
@@ -92,6 +127,17 @@ const meso::TangentialState& MesoPhys::tangentialState() const
 	static const meso::TangentialState none;
 	const auto*                        t = dynamic_cast<const MesoTangentialPhys*>(this);
 	return t ? t->tangential : none;
+}
+
+void MesoPhys::postLoad(MesoPhys&)
+{
+	if (!pairParams) return; // made from Python: the law remakes it (Law2_ScGeom_MesoPhys_Meso::dropForeign)
+	const bool springs = dynamic_cast<const MesoTangentialPhys*>(this) != nullptr;
+	if (pairParams->params.tangential != springs)
+		throw std::runtime_error(
+		        getClassName() + ": its pair parameters " + (springs ? "have no" : "have") + " sliding, rolling or torsion, which a "
+		        + (springs ? "MesoTangentialPhys does not fit" : "plain MesoPhys cannot hold (it has no springs)")
+		        + "; the saved contact was not made by Ip2_MesoMat_MesoMat_MesoPhys.");
 }
 
 int MesoPhys::byteSize() const { return dynamic_cast<const MesoTangentialPhys*>(this) ? sizeof(MesoTangentialPhys) : sizeof(MesoPhys); }
@@ -178,6 +224,32 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	phys->ks                     = p.sliding.k;
 	phys->tangensOfFrictionAngle = p.sliding.muS;
 	I->phys                      = phys;
+	checkTimeStep(*phys, *I);
+}
+
+void Ip2_MesoMat_MesoMat_MesoPhys::checkTimeStep(const MesoPhys& phys, const Interaction& I)
+{
+	auto inverses = [this](Body::id_t id, Real& invMass, Real& invInertia) {
+		const Body& b = *Body::byId(id, scene);
+		invMass = invInertia = 0;
+		if (!b.isDynamic()) return; // moved by the user or an engine: not integrated
+		if (b.state->mass > 0) invMass = 1 / b.state->mass;
+		const Real i = b.state->inertia.minCoeff();
+		if (i > 0) invInertia = 1 / i;
+	};
+	Real invM1, invI1, invM2, invI2;
+	inverses(I.getId1(), invM1, invI1);
+	inverses(I.getId2(), invM2, invI2);
+	const char* which = "";
+	const Real  dt    = meso::stableStep(phys.pair(), phys.geometry, invM1, invM2, invI1, invI2, &which);
+	{
+		const std::lock_guard<std::mutex> lock(sharedMutex);
+		if (dt < stableDt) stableDt = dt;
+	}
+	if (scene->dt > dt && !dtWarned.exchange(true))
+		std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: O.dt = " << scene->dt << " s exceeds the stable step " << dt << " s of contact #"
+		          << I.getId1() << "+#" << I.getId2() << " (its " << which << " element): the integration is unstable. (Warned once; "
+		          << "the smallest stable step so far is the functor's stableDt.)" << std::endl;
 }
 
 /* Law2 */
@@ -201,10 +273,25 @@ void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
 	}
 }
 
+bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interaction* I)
+{
+	// No exception can leave YADE's OpenMP loop, so the phys is dropped: the Ip2 makes a proper one
+	// at the next step (from the bodies' materials, history afresh), and the user is told.
+	if (!foreignWarned.exchange(true))
+		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2()
+		          << " has a MesoPhys not made by Ip2_MesoMat_MesoMat_MesoPhys (no pair parameters, e.g. assigned from Python): it is "
+		          << "dropped and remade from the bodies' materials at the next step. To change a live contact's materials, "
+		          << "use Ip2_MesoMat_MesoMat_MesoPhys.adoptMaterials. (Warned once.)" << std::endl;
+	ip.reset();
+	return true;
+}
+
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	const auto*     geom   = static_cast<const ScGeom*>(ig.get());
-	auto*           phys   = static_cast<MesoPhys*>(ip.get());
+	const auto* geom = static_cast<const ScGeom*>(ig.get());
+	auto*       phys = static_cast<MesoPhys*>(ip.get());
+	if (!phys->pairParams) [[unlikely]]
+		return dropForeign(ip, I);
 	const auto&     p      = phys->pairParams->params;
 	const auto&     g      = phys->geometry;
 	const Real      delta  = geom->penetrationDepth;
@@ -221,15 +308,23 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	if (scene->trackEnergy) {
 		if (!normalEnergiesReady.load(std::memory_order_acquire)) registerEnergies(p.tangential);
 		// The previous step's force parts and stored energy, from what it left (before this step's update).
-		const bool        first = std::isnan(phys->lastDelta); // no force before
+		const bool        first = std::isnan(phys->lastDelta); // the law's first step on this contact
 		const Real        prevDelta = first ? delta - vn * scene->dt : phys->lastDelta;
 		meso::NormalForce prev;
+		Real              prevElastic;
 		if (!first) {
 			prev.hysteretic = phys->fHysteretic;
 			prev.adhesive   = meso::adhesiveForceAfter(p, phys->history, prevDelta);
 			prev.viscous    = phys->fViscous;
+			prevElastic     = meso::storedElastic(p, g, phys->history, prev.hysteretic);
+		} else {
+			// As if the contact had been at prevDelta already: zero for a pair coming from outside the
+			// force's range; for spheres that start overlapped, the energy they store is the initial
+			// state (in mesoElastic), not work done this step (which would read as negative dissipation).
+			meso::NormalHistory h;
+			prev        = meso::normalForce(p, g, h, prevDelta, vn);
+			prevElastic = meso::storedElastic(p, g, h, prev.hysteretic);
 		}
-		const Real prevElastic = meso::storedElastic(p, g, phys->history, prev.hysteretic);
 		f                      = meso::normalForce(p, g, phys->history, delta, vn);
 		const meso::NormalEnergyStep e = meso::energyStep(p, g, prevDelta, prevElastic, phys->history, prev, f, delta);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);

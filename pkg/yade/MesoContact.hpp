@@ -10,6 +10,7 @@
 #include <pkg/dem/ScGeom.hpp>
 
 #include <atomic>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <tuple>
@@ -19,6 +20,7 @@ namespace yade {
 class MesoMat : public FrictMat {
 	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
 	std::string          validAdhesion = "none", validK2Interpolation = "linear";
+	Real                 validFrictionAngle = 0.5, validDensity = 1000, validYoung = 1e9; // the bases' defaults
 	bool                 deferChecks   = false; // set while the constructor applies its keywords
 	meso::MaterialParams parse() const;         // throws std::invalid_argument naming the parameter
 	unsigned long        revisionCount = 0;     // counts accepted changes: contacts made before keep the parameters they had
@@ -31,6 +33,10 @@ public:
 	void                        postLoad(MesoMat&);
 	Real                        getFrictionAngle() const { return frictionAngle; }
 	void                        setFrictionAngle(Real a); // validated, like the attributes below
+	Real                        getDensity() const { return density; }
+	void                        setDensity(Real d);
+	Real                        getYoung() const { return young; }
+	void                        setYoung(Real y);
 	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
@@ -55,6 +61,8 @@ public:
 		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
 		createIndex(); valid = parse();,
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
+		.add_property("density",&MesoMat::getDensity,&MesoMat::setDensity,"Density of the material [kg/m³], finite and > 0 (checked on assignment).")
+		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law, read by :yref:`PWaveTimeStep`.")
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(MesoMat, FrictMat);
@@ -172,6 +180,8 @@ public:
 	Real        getMuO() const { return pair().twisting.muS; }
 	int         byteSize() const; // of this object's class
 	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
+	// A loaded contact whose class does not fit its pair's mechanisms would be read as the wrong type.
+	void        postLoad(MesoPhys&);
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
 };
 REGISTER_SERIALIZABLE(MesoPhys);
@@ -202,6 +212,8 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 	std::map<std::tuple<const Material*, const Material*, bool>, Shared> sharedParams;
 	std::mutex                                                         sharedMutex;
 	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
+	std::atomic<bool>          dtWarned{ false };
+	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I); // updates stableDt, warns once
 
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
@@ -212,7 +224,8 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
 		((std::string,leverArm,"reduced",Attr::triggerPostLoad,"Lever arm $a'_{12}$ of rolling and torsion (open in [Luding2008]_): 'reduced' = $a'_1a'_2/(a'_1+a'_2)$ with $a'=a-\\delta/2$ ($a'$ of the sphere against a wall), or 'a12' = twice that. The factor 2 scales the torques of given $k_r$, $k_o$ by 4 and the limit torques by 2."))
-		((int,leverFactor,1,(Attr::hidden|Attr::noSave),"1 or 2, from leverArm")),
+		((int,leverFactor,1,(Attr::hidden|Attr::noSave),"1 or 2, from leverArm"))
+		((Real,stableDt,std::numeric_limits<Real>::infinity(),(Attr::readonly|Attr::noSave),"Smallest stable time step of the contacts this functor has made [s]: per contact the leapfrog bound $(2/\\omega)(\\sqrt{1+\\zeta^2}-\\zeta)$ of its stiffest element (normal $k_p$ with $\\gamma_0$ on the reduced mass; sliding, rolling and torsion with the spins' inertia). When O.dt exceeds it at a new contact, a warning names the contact, once per functor.")),
 		/*ctor*/,
 		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.")
 	);
@@ -228,6 +241,8 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	std::mutex        energyMutex;
 	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
 	void              registerEnergies(bool tangential);
+	std::atomic<bool> foreignWarned{ false };
+	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
 
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;

@@ -106,3 +106,35 @@ TEST(Mixing, DominantMaterialImposesItsParameters)
 	EXPECT_DOUBLE_EQ(mixPair(particle, wall).kc, 200.0 / 101.0);
 	EXPECT_DOUBLE_EQ(mixPair(particle, wall).sliding.muS, 1);
 }
+
+TEST(Mixing, HarmonicMeanOfExtremeValuesStaysFinite)
+{
+	// 2xy/(x+y) overflows from ~1e154 on; the mean lies between x and y, so it never may.
+	const double big = std::numeric_limits<double>::max();
+	EXPECT_EQ(harmonicMean(big, big), big);
+	EXPECT_DOUBLE_EQ(harmonicMean(1e155, 3e155), 1.5e155);
+	EXPECT_DOUBLE_EQ(harmonicMean(1.5e308, 1.7e308), 2 / (1 / 1.5e308 + 1 / 1.7e308));
+	EXPECT_DOUBLE_EQ(harmonicMean(1e-300, 3e-300), 1.5e-300);
+	EXPECT_EQ(harmonicMean(7.25, 7.25), 7.25); // equal materials keep their value exactly
+	EXPECT_EQ(harmonicMean(0, big), 0.0);
+	MaterialParams m; m.k1 = m.kp = 1e155;
+	const PairParams p = mixPair(m, m);
+	EXPECT_EQ(p.k1, 1e155); EXPECT_EQ(p.kp, 1e155);
+}
+
+TEST(Validate, NonContactRangeMustBeFinite)
+{
+	MaterialParams m; m.adhesion = Adhesion::Reversible; m.fa = 1e300; m.kca = 1e-300;
+	EXPECT_TRUE(startsWith(rejection(m), "kca"));
+}
+
+TEST(StableStep, SpringDashpotBounds)
+{
+	const double m = 2e-3, k = 500;
+	EXPECT_DOUBLE_EQ(stableStep(k, 0, 1 / m), 2 * std::sqrt(m / k));
+	EXPECT_DOUBLE_EQ(stableStep(0, 0.1, 1 / m), 2 * m / 0.1);
+	EXPECT_TRUE(std::isinf(stableStep(k, 0, 0))); // a body that does not move
+	// omega^2 dt^2 + 2 gamma dt / m = 4 at the bound (the leapfrog's eigenvalue -1)
+	const double g = 3e-2, dt = stableStep(k, g, 1 / m);
+	EXPECT_NEAR(k / m * dt * dt + 2 * g * dt / m, 4, 1e-12);
+}

@@ -1,0 +1,211 @@
+# ctest (inside yade): what must not crash or go silently wrong (issue #14's items 1-4, 6, 7, 11).
+# - a MesoPhys assigned from Python to a live contact is dropped with a warning and remade by the
+#   Ip2 (it used to crash: no pair parameters);
+# - a saved plain MesoPhys whose pair has tangential mechanisms is refused on load, naming the class;
+# - mixing huge finite parameters gives the harmonic mean, not inf/NaN;
+# - density and young are validated (constructor, assignment, updateAttrs); a rejected updateAttrs
+#   leaves every attribute as it was, frictionAngle to the bit;
+# - spheres that start overlapped store energy (mesoElastic), they do not dissipate a negative amount;
+# - the Ip2's stableDt is the leapfrog stability bound of the stiffest element (checked against the
+#   spectral radius of the integrator's amplification matrix, computed here), and O.dt above it warns.
+import math
+import os
+import sys
+import tempfile
+
+import numpy as np
+from yade import O, utils
+from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom6D, Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator,
+                          MesoMat, MesoPhys, MesoTangentialPhys)
+
+failures = []
+
+
+def check(ok, label, detail=""):
+    print(("ok   " if ok else "FAIL ") + label + (f": {detail}" if detail else ""), flush=True)
+    if not ok:
+        failures.append(label)
+
+
+A, RHO = 1e-3, 2000.0
+MASS = 4 / 3 * math.pi * A ** 3 * RHO
+
+
+def two_spheres(mat, overlap=0.0, v=0.0, dt=1e-6, six=False):
+    O.reset()
+    m = O.materials.append(mat)
+    O.bodies.append([utils.sphere((0, 0, 0), A, material=m), utils.sphere((2 * A - overlap, 0, 0), A, material=m)])
+    O.bodies[1].state.vel = (-v, 0, 0)
+    ig2 = Ig2_Sphere_Sphere_ScGeom6D() if six else Ig2_Sphere_Sphere_ScGeom()
+    ip2 = Ip2_MesoMat_MesoMat_MesoPhys()
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]), InteractionLoop([ig2], [ip2], [Law2_ScGeom_MesoPhys_Meso()]),
+                 NewtonIntegrator(damping=0)]
+    O.dt = dt
+    return ip2
+
+
+class Stderr:
+    """What the C++ side writes to stderr (fd 2) inside the block."""
+
+    def __enter__(self):
+        sys.stderr.flush()
+        self.file = tempfile.TemporaryFile(mode="w+")
+        self.saved = os.dup(2)
+        os.dup2(self.file.fileno(), 2)
+        return self
+
+    def __exit__(self, *exc):
+        os.dup2(self.saved, 2)
+        os.close(self.saved)
+        self.file.seek(0)
+        self.text = self.file.read()
+        sys.stderr.write(self.text)
+
+
+# 1. A MesoPhys made in Python on a live contact.
+two_spheres(MesoMat(k1=100, kp=500, density=RHO), overlap=1e-5)
+O.step()
+O.interactions[0, 1].phys = MesoPhys()
+with Stderr() as err:
+    O.step()
+    O.step()
+i = O.interactions[0, 1]
+check(i.isReal and i.phys.kp == 500 and math.isfinite(i.phys.normalForce.norm()) and "adoptMaterials" in err.text
+      and err.text.count("WARNING") == 1, "hand-made MesoPhys: warned once, dropped and remade by the Ip2",
+      f"real {i.isReal}, kp {i.phys.kp}")
+two_spheres(MesoMat(k1=100, kp=500, density=RHO, kt=50, frictionAngle=0.3), overlap=1e-5)
+O.step()
+O.interactions[0, 1].phys = MesoTangentialPhys()
+O.step()
+O.step()
+check(type(O.interactions[0, 1].phys).__name__ == "MesoTangentialPhys" and O.interactions[0, 1].phys.kt == 50,
+      "hand-made MesoTangentialPhys: remade")
+
+# 2. A saved plain MesoPhys whose pair parameters have tangential mechanisms (the file edited).
+two_spheres(MesoMat(k1=100, kp=500, density=RHO), overlap=1e-5, dt=1e-5)
+O.step()
+with tempfile.TemporaryDirectory() as d:
+    good, bad = os.path.join(d, "good.xml"), os.path.join(d, "bad.xml")
+    O.save(good)
+    text = open(good).read()
+    n = text.count("<tangential>0</tangential>")
+    open(bad, "w").write(text.replace("<tangential>0</tangential>", "<tangential>1</tangential>"))
+    try:
+        O.load(bad)
+        check(False, "plain MesoPhys with tangential pair parameters refused on load", "loaded")
+    except RuntimeError as e:
+        check(n == 1 and "plain MesoPhys" in str(e), "plain MesoPhys with tangential pair parameters refused on load", str(e)[:80])
+    O.load(good)
+    O.step()
+    check(O.interactions[0, 1].phys.kp == 500, "the unedited file still loads and runs")
+
+# 3. Mixing huge finite values: the harmonic mean 2/(1/x + 1/y), written independently.
+for x, y in ((1e155, 1e155), (1e155, 3e155), (1.5e308, 1.7e308), (1e-300, 3e-300)):
+    two_spheres(MesoMat(k1=x, kp=y, density=RHO), overlap=1e-6, dt=1e-80)
+    O.bodies[0].material = O.materials[O.materials.append(MesoMat(k1=y, kp=y, density=RHO))]
+    O.step()
+    p = O.interactions[0, 1].phys
+    hm = 2 / (1 / x + 1 / y)
+    f = max(abs(c) for c in p.normalForce)  # norm() squares: underflows at 1e-300
+    check(abs(p.k1 - hm) <= 1e-15 * hm and abs(p.kp - y) <= 1e-15 * y and math.isfinite(p.k2) and math.isfinite(f) and f > 0,
+          f"mixing k1 = {x:g} with {y:g}", f"k1 {p.k1:.6g} (harmonic mean {hm:.6g}), kp {p.kp:.6g}, k2 {p.k2:.6g}, |F| {f:.3g}")
+
+# 4 and 11. density and young, and rejected assignments that leave everything as it was.
+for kw in (dict(density=0), dict(density=-1), dict(density=float("nan")), dict(density=float("inf")), dict(young=0),
+           dict(young=-1e9), dict(young=float("nan"))):
+    name = next(iter(kw))
+    try:
+        MesoMat(**kw)
+        check(False, f"MesoMat({kw}) rejected", "accepted")
+    except ValueError as e:
+        check(str(e).startswith(name + " = "), f"MesoMat({kw}) rejected, naming it", str(e))
+m = MesoMat(density=1234.0, young=2e9)
+for name, value in (("density", -3.0), ("young", float("inf"))):
+    try:
+        setattr(m, name, value)
+        check(False, f"{name} = {value} on assignment rejected", "accepted")
+    except ValueError:
+        check(m.density == 1234.0 and m.young == 2e9, f"{name} = {value} on assignment rejected, value kept")
+rng = np.random.default_rng(7)
+changed = 0
+for _ in range(500):
+    angle = float(rng.uniform(0, 1.5))
+    m = MesoMat(frictionAngle=angle, density=1500.0, k1=100, kp=500)
+    before = (m.frictionAngle, m.density, m.k1, m.kp)
+    try:
+        m.updateAttrs({"density": 99.0, "frictionAngle": 0.2, "kp": -1.0})
+    except ValueError:
+        pass
+    changed += (m.frictionAngle, m.density, m.k1, m.kp) != before
+check(changed == 0, "a rejected updateAttrs leaves density, frictionAngle (bitwise), k1, kp as they were", f"{changed} of 500 changed")
+
+# 6. Spheres that start overlapped, at rest: the stored energy is the initial state. Fresh contact
+# at overlap d: force k1 d, unloading line k2(d) (linear interpolation), so E0 = (k1 d)^2 / (2 k2).
+k1, kp, phiF = 100.0, 500.0, 0.1
+a12 = A  # equal spheres: 2 a a/(a + a)
+d = 0.02 * A
+k2 = k1 + (kp - k1) * d / (kp / (kp - k1) * phiF * a12)
+E0 = (k1 * d) ** 2 / (2 * k2)
+tc = math.pi * math.sqrt(MASS / 2 / k2)
+for steps_per_contact in (100, 400):
+    two_spheres(MesoMat(k1=k1, kp=kp, phiF=phiF, density=RHO), overlap=d, dt=tc / steps_per_contact)
+    O.trackEnergy = True
+    O.step()
+    e1 = O.energy.total()
+    worst = 0.0
+    for _ in range(2 * steps_per_contact):
+        O.step()
+        worst = max(worst, abs(O.energy.total() - e1))
+    kin = sum(0.5 * b.state.mass * b.state.vel.squaredNorm() for b in O.bodies)
+    plastic = O.energy["mesoPlastic"]
+    # The trapezoidal work misses the kink where the force reaches zero between two steps: at most
+    # k2 dd^2 / 2 with dd = v dt, v^2 = 2 E0 / m_r, i.e. (omega dt)^2 E0 = (pi / steps)^2 E0.
+    tol = (math.pi / steps_per_contact) ** 2
+    apart = not O.interactions.has(0, 1) or not O.interactions[0, 1].isReal
+    check(apart and abs(plastic) <= tol * E0 and abs(e1 - E0) <= 1e-12 * E0 and worst <= 1e-9 * E0 and abs(kin - E0) <= tol * E0,
+          f"overlapped start, {steps_per_contact} steps per contact: energy stored, not dissipated",
+          f"mesoPlastic/E0 {plastic / E0:.1e}, E(step 1)/E0 - 1 {e1 / E0 - 1:.1e}, drift {worst / E0:.1e}, final E_kin/E0 - 1 {kin / E0 - 1:.1e}")
+
+
+# 7. The stable step against the integrator's own stability: YADE's leapfrog advances
+# v' = v (1 - g dt/m) - k x dt/m, x' = x + v' dt; stable while the spectral radius is <= 1.
+def leapfrog_bound(k, g, m):
+    def radius(dt):
+        c = g * dt / m
+        amp = np.array([[1 - k * dt * dt / m, dt * (1 - c)], [-k * dt / m, 1 - c]])
+        return max(abs(np.linalg.eigvals(amp)))
+    lo, hi = 0.0, 10 * math.sqrt(m / k)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if radius(mid) <= 1 + 1e-12 else (lo, mid)
+    return lo
+
+
+m_r = MASS / 2
+for gamma in (0.0, 3e-3):
+    ip2 = two_spheres(MesoMat(k1=100, kp=500, gammaN=gamma, density=RHO), overlap=1e-6)
+    O.step()
+    ref = leapfrog_bound(500, gamma, m_r)
+    check(abs(ip2.stableDt - ref) <= 1e-9 * ref, f"stableDt, normal kp, gamma0 = {gamma}", f"{ip2.stableDt:.9e} vs {ref:.9e}")
+# Rolling much stiffer than the normal law: v_r = a'(w1 - w2), torque a' f_r on each sphere, a' = a/2.
+I = 0.4 * MASS * A * A
+ip2 = two_spheres(MesoMat(k1=100, kp=500, kr=1e5, gammaR=1e-3, muR=0.1, density=RHO), overlap=1e-6, six=True)
+O.step()
+ref = leapfrog_bound(1e5, 1e-3, 1 / ((A / 2) ** 2 * 2 / I))
+check(abs(ip2.stableDt - ref) <= 1e-9 * ref, "stableDt, stiff rolling", f"{ip2.stableDt:.9e} vs {ref:.9e}")
+# Above the bound: one warning, naming the contact.
+ip2 = two_spheres(MesoMat(k1=100, kp=500, density=RHO), v=0.01, dt=1.0)
+ip2.stableDt  # inf before any contact
+O.dt = 1.5 * leapfrog_bound(500, 0, m_r)
+with Stderr() as err:
+    O.run(20, True)
+check("exceeds the stable step" in err.text and "#0+#1" in err.text, "O.dt above the stable step warns, naming the contact")
+ip2 = two_spheres(MesoMat(k1=100, kp=500, density=RHO), v=0.01)
+O.dt = 0.5 * leapfrog_bound(500, 0, m_r)
+with Stderr() as err:
+    O.run(20, True)
+check("exceeds" not in err.text, "O.dt below it: no warning")
+
+print(f"{len(failures)} FAILED: {failures}" if failures else "all passed")
+sys.exit(1 if failures else 0)
