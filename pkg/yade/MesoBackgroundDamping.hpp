@@ -9,8 +9,6 @@
 namespace yade {
 
 class MesoBackgroundDamping : public GlobalEngine {
-	std::vector<Vector3r> prevVel, prevAngVel, prevForce, prevTorque; // state when the previous drag was applied
-	std::vector<char>     hasPrev;
 	struct Neighbours {
 		Vector3r x = Vector3r::Zero(), v = Vector3r::Zero(), w = Vector3r::Zero(); // sums of positions, velocities, spins
 		int      n = 0;
@@ -27,6 +25,11 @@ public:
 		((Real,gammaB,0,,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s], finite."))
 		((Real,gammaBR,0,,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s], finite: torque $-\\gamma_{br}a^2(\\omega-\\omega_{ref})$."))
 		((std::string,reference,"lab",,"What the drag acts relative to: 'lab' (rest) or 'contacts' (the rigid motion of the body's contact neighbours)."))
+		((std::vector<Vector3r>,prevVel,,Attr::hidden,"Velocities when the previous drag was applied (energy tracking; saved, so that the booking goes on after O.load)."))
+		((std::vector<Vector3r>,prevAngVel,,Attr::hidden,"Spins when the previous drag was applied."))
+		((std::vector<Vector3r>,prevForce,,Attr::hidden,"The previous drag forces."))
+		((std::vector<Vector3r>,prevTorque,,Attr::hidden,"The previous drag torques."))
+		((std::vector<int>,hasPrev,,Attr::hidden,"Whether a body got a drag at the previous step (1) or not (0)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy"))
 	);
 	// clang-format on
