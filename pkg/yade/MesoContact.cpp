@@ -187,6 +187,45 @@ Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const s
 	return s.params;
 }
 
+boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool rotations) const
+{
+	auto meso = [](const shared_ptr<Material>& m, const char* name) {
+		const auto* mat = dynamic_cast<const MesoMat*>(m.get());
+		if (!mat) throw std::invalid_argument(std::string(name) + " must be a MesoMat, not " + (m ? m->getClassName() : std::string("None")));
+		return mat;
+	};
+	meso::PairParams p = meso::mixPair(meso(m1, "material1")->params(), meso(m2, "material2")->params());
+	p.leverFactor      = leverFactor;
+	meso::setMechanisms(p, rotations);
+	boost::python::dict d;
+	d["k1"]              = p.k1;
+	d["kp"]              = p.kp;
+	d["kc"]              = p.kc;
+	d["phiF"]            = p.phiF;
+	d["fa"]              = p.fa;
+	d["kca"]             = p.kca;
+	d["gammaN"]          = p.gammaN;
+	d["deltaA"]          = p.deltaA;
+	d["adhesion"]        = std::string(meso::adhesionName(p.adhesion));
+	d["k2Interpolation"] = std::string(meso::k2InterpolationName(p.k2Interpolation));
+	const struct {
+		const char*                name;
+		const meso::ElementParams& e;
+		bool                       acts;
+	} elements[] = { { "sliding", p.sliding, p.slides }, { "rolling", p.rolling, p.rolls }, { "twisting", p.twisting, p.twists } };
+	for (const auto& el : elements) {
+		boost::python::dict e;
+		e["k"]     = el.e.k;
+		e["gamma"] = el.e.gamma;
+		e["muS"]   = el.e.muS;
+		e["muD"]   = el.e.muD;
+		e["acts"]  = el.acts;
+		d[el.name] = e;
+	}
+	d["leverFactor"] = p.leverFactor;
+	return d;
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>& I)
 {
 	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;

@@ -9,6 +9,7 @@ import math
 from dataclasses import dataclass, field
 
 from . import params as _params
+from . import theory as _theory
 
 try:
     from yade import O
@@ -31,6 +32,8 @@ class PairScene:
     contact_time: float  # pi sqrt(m_r/kp) [s]
     material: object = None
     wall_top: float = None  # sphere-wall scenes: height of the wall's surface (the sphere moves along z) [m]
+    start_gap: float = 0.0  # surface gap at the start [m]
+    mixed: dict = None      # the pair's parameters, from the Ip2 (Ip2_MesoMat_MesoMat_MesoPhys.mixedParameters)
 
 
 @dataclass
@@ -44,16 +47,21 @@ class PairResult:
 
 
 def _materials(material, material2, density):
-    """The MesoMat objects of the two bodies (registered in O.materials) and the range of the
-    non-contact force of the pair, mixed as the Ip2 does (harmonic means of fa and kca)."""
+    """The MesoMat objects of the two bodies (registered in O.materials) and the parameters of
+    the pair, as the Ip2 mixes them (its own code: ``dominant`` included)."""
     m1 = _material(material, density)
     m2 = m1 if material2 is None else _material(material2, density)
     O.materials.append(m1)
     if m2 is not m1:
         O.materials.append(m2)
-    fa = _hm(m1.fa, m2.fa) if "none" not in (m1.adhesion, m2.adhesion) else 0.0
-    delta_a = -fa / _hm(m1.kca, m2.kca) if fa > 0 else 0.0
-    return m1, m2, delta_a
+    return m1, m2, _w.Ip2_MesoMat_MesoMat_MesoPhys().mixedParameters(m1, m2)
+
+
+def _check_step(dt, gap):
+    if dt is not None and not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt > 0):
+        raise ValueError(f"dt = {dt!r} is invalid: must be a finite number > 0 [s]")
+    if gap is not None and not (isinstance(gap, (int, float)) and math.isfinite(gap) and gap >= 0):
+        raise ValueError(f"gap = {gap!r} is invalid: must be a finite number >= 0 [m] (the pair starts apart)")
 
 
 def _material(material, density):
@@ -72,18 +80,21 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     material/material2: ``MesoMat`` or dict of its attributes (material2 defaults to material).
     The collider and the geometry functor are set to detect the pair at the gap where the
     non-contact force starts. dt defaults to the contact time of kp over steps_per_contact.
+    The scene replaces whatever O holds (O.reset(); O.tags survive).
     """
     _params._positive("radius1", radius1)
     _params._positive("v_inf", v_inf)
     radius2 = radius1 if radius2 is None else radius2
     _params._positive("radius2", radius2)
-    O.reset()
-    m1, m2, delta_a = _materials(material, material2, density)
+    _params._positive("steps_per_contact", steps_per_contact)
+    _check_step(dt, gap)
+    _reset()
+    m1, m2, mixed = _materials(material, material2, density)
+    delta_a = mixed["deltaA"]
     mass1, mass2 = _params.sphere_mass(radius1, m1.density), _params.sphere_mass(radius2, m2.density)
     m_r = _params.reduced_mass(mass1, mass2)
     a12 = _params.reduced_radius(radius1, radius2)
-    kp = _hm(m1.kp, m2.kp)
-    t_c = _params.contact_time(kp, m_r)
+    t_c = _params.contact_time(mixed["kp"], m_r)
     O.dt = dt if dt is not None else t_c / steps_per_contact
 
     start_gap = gap if gap is not None else -delta_a + 3.0 * v_inf * O.dt
@@ -103,11 +114,15 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
         _w.NewtonIntegrator(damping=0.0, gravity=(0, 0, 0)),
     ]
     O.trackEnergy = track_energy
-    return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1)
+    return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1, start_gap=start_gap, mixed=mixed)
 
 
-def _hm(x, y):
-    return 0.0 if x == 0 or y == 0 else 2.0 * x * y / (x + y)
+def _reset():
+    """O.reset() keeping O.tags (yade-batch puts the job's description and parameters there)."""
+    tags = {k: O.tags[k] for k in O.tags.keys()}
+    O.reset()
+    for k, v in tags.items():
+        O.tags[k] = v
 
 
 def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0, kind="box", six_d=False, dt=None,
@@ -128,10 +143,13 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
         raise ValueError(f"kind = {kind!r} is invalid: must be 'box', 'wall' or 'facet'")
     if six_d and kind == "wall":
         raise ValueError("six_d = True needs kind 'box' or 'facet': YADE has no ScGeom6D functor for Wall")
-    O.reset()
-    m, w, delta_a = _materials(material, wall_material, density)
+    _params._positive("steps_per_contact", steps_per_contact)
+    _check_step(dt, gap)
+    _reset()
+    m, w, mixed = _materials(material, wall_material, density)
+    delta_a = mixed["deltaA"]
     mass = _params.sphere_mass(radius, m.density)
-    t_c = _params.contact_time(_hm(m.kp, w.kp), mass)
+    t_c = _params.contact_time(mixed["kp"], mass)
     O.dt = dt if dt is not None else t_c / steps_per_contact
     start_gap = gap if gap is not None else -delta_a + 3.0 * max(v_inf, 1e-12) * O.dt
     factor = 1.0 + 1.2 * start_gap / radius
@@ -159,7 +177,8 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
         _w.NewtonIntegrator(damping=0.0, gravity=gravity),
     ]
     O.trackEnergy = track_energy
-    return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0)
+    return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0, start_gap=start_gap,
+                     mixed=mixed)
 
 
 def overlap(s):
@@ -179,7 +198,7 @@ def separation_speed(s):
     return (b2.vel - b1.vel).dot(n)
 
 
-def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0):
+def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, max_steps=2e7):
     """Runs the collision until the pair has separated beyond the non-contact range, or for
     max_contact_times contact times (then it is stuck).
 
@@ -187,15 +206,38 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0):
     into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further contact
     times; with viscosity that is the resting overlap. record=True keeps
     (t, delta, f_hysteretic, f_total) at every step.
+
+    Refused before it starts (ValueError): no approach (v_inf = 0), a step budget above
+    max_steps, an impact so hard that it would press the bodies more than the smaller radius
+    into each other (theory.max_overlap; the model, and YADE's geometry, stop making sense).
+    Checked after (RuntimeError): the pair never touched, or passed through each other.
     """
+    if not s.v_inf > 0:
+        raise ValueError(f"v_inf = {s.v_inf!r} is invalid for collide: the bodies must approach (> 0)")
+    p = s.mixed
+    v_i2 = s.v_inf ** 2 + (p["fa"] ** 2 / (p["kca"] * s.m_r) if p["adhesion"] == "reversible" and p["fa"] > 0 else 0.0)
+    d_max = _theory.max_overlap(math.sqrt(v_i2), p["k1"], p["kp"], p["phiF"], s.a12, s.m_r, p["fa"])
+    radius = min(r for r in s.radii if math.isfinite(r))
+    if d_max > radius:
+        raise ValueError(f"v_inf = {s.v_inf!r} is too fast for this pair: the collision would reach the overlap "
+                         f"{d_max:.3g} m, {d_max / radius:.3g} radii; the bodies would pass through each other")
+    approach = max(s.start_gap, -s.delta_a) / (s.v_inf * O.dt)
+    steps = int(max_contact_times * s.contact_time / O.dt) + int(approach) + 10
+    if steps > max_steps:
+        raise ValueError(f"max_steps = {max_steps:g} is too small: this collision may need {steps:.3g} steps ({approach:.3g} to "
+                         f"approach over the gap {max(s.start_gap, -s.delta_a):.3g} m at {s.v_inf:g} m/s, dt = {O.dt:.3g} s)")
     trace = []
     check_every = max(1, int(0.02 * s.contact_time / O.dt))
-    limit = O.iter + int(max_contact_times * s.contact_time / O.dt) + int(-s.delta_a / (s.v_inf * O.dt)) + 10
-    _DRIVER.update(scene=s, trace=trace if record else None, low=math.inf, separated=False)
+    limit = O.iter + steps
+    _DRIVER.update(scene=s, trace=trace if record else None, low=math.inf, separated=False, touched=False)
     watcher = _w.PyRunner(iterPeriod=1 if record else check_every, command=_COMMAND % "_watch()")
     O.engines = O.engines + [watcher]
     try:
         _run_until(limit)
+        if not _DRIVER["touched"] and not _touching(s):
+            raise RuntimeError(f"the pair never came into contact in {steps} steps (gap {s.start_gap:.3g} m, v_inf {s.v_inf:g} m/s)")
+        if _passed_through(s):
+            raise RuntimeError(f"the bodies passed through each other (v_inf = {s.v_inf:g} m/s, dt = {O.dt:.3g} s): no collision to report")
         if _DRIVER["separated"]:
             return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
         watcher.iterPeriod = 1
@@ -217,10 +259,24 @@ def _run_until(iteration):
     O.wait()
 
 
+def _touching(s):
+    i = O.interactions[s.ids[0], s.ids[1]] if O.interactions.has(s.ids[0], s.ids[1]) else None
+    return i is not None and i.isReal and i.phys.touched or overlap(s) > 0
+
+
+def _passed_through(s):
+    """The sphere centres have changed sides (sphere-sphere along x; a sphere below the wall)."""
+    if s.wall_top is not None:
+        return O.bodies[s.ids[1]].state.pos[2] < s.wall_top
+    return O.bodies[s.ids[1]].state.pos[0] < O.bodies[s.ids[0]].state.pos[0]
+
+
 def _watch():
     s = _DRIVER["scene"]
     if _DRIVER["trace"] is not None:
         _DRIVER["trace"].append(_sample(s))
+    if overlap(s) > 0:
+        _DRIVER["touched"] = True
     if overlap(s) < s.delta_a and separation_speed(s) > 0:
         _DRIVER["separated"] = True
         O.pause()

@@ -1,7 +1,7 @@
 """Parameter helpers for the meso-particle law (plain Python, SI units)."""
 import math
 
-from .theory import _nonnegative, _positive
+from .theory import _nonnegative, _positive, _positive_or_inf
 
 
 def sphere_mass(radius, density):
@@ -13,25 +13,24 @@ def sphere_mass(radius, density):
 
 def reduced_mass(m1, m2=math.inf):
     """m1 m2/(m1 + m2); against a wall (m2 = inf) the sphere's own mass [kg]."""
+    _positive("m1", m1)
+    _positive_or_inf("m2", m2)
     return m1 if math.isinf(m2) else m1 * m2 / (m1 + m2)
 
 
 def reduced_radius(a1, a2=math.inf):
     """a12 = 2 a1 a2/(a1 + a2); against a wall (a2 = inf) 2 a1 [m]."""
+    _positive("a1", a1)
+    _positive_or_inf("a2", a2)
     return 2.0 * a1 if math.isinf(a2) else 2.0 * a1 * a2 / (a1 + a2)
-
-
-def stiffnesses(k1, eta, beta):
-    """k1, kp, kc from the loading stiffness and the groups eta = (kp - k1)/k1, beta = kc/k1 [N/m]."""
-    _positive("k1", k1)
-    _nonnegative("eta", eta)
-    _nonnegative("beta", beta)
-    return {"k1": k1, "kp": k1 * (1.0 + eta), "kc": k1 * beta}
 
 
 def fa_from_alpha(alpha, k1, m_r, v_i):
     """Non-contact force from the adhesivity alpha = sqrt(fa^2/(k1 m_r v_i^2)) (Eq. 27c) [N]."""
     _nonnegative("alpha", alpha)
+    _positive("k1", k1)
+    _positive("m_r", m_r)
+    _nonnegative("v_i", v_i)
     return alpha * math.sqrt(k1 * m_r) * v_i
 
 
@@ -40,16 +39,6 @@ def contact_time(k, m_r):
     _positive("k", k)
     _positive("m_r", m_r)
     return math.pi * math.sqrt(m_r / k)
-
-
-def safe_time_step(kp, m_min, gamma=0.0, steps_per_contact=50):
-    """A stable, accurate time step: the stiffest contact (kp) resolved by steps_per_contact
-    steps for the smallest mass m_min, and short against the viscous time m_min/gamma [s]."""
-    _positive("steps_per_contact", steps_per_contact)
-    dt = contact_time(kp, m_min) / steps_per_contact
-    if gamma > 0:
-        dt = min(dt, 0.1 * m_min / gamma)
-    return dt
 
 
 def time_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
@@ -63,6 +52,7 @@ def time_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50
     """
     _positive("kp", kp)
     _positive("m_min", m_min)
+    _positive("steps_per_contact", steps_per_contact)
     for name, v in (("kt", kt), ("kr", kr), ("ko", ko), ("gamma", gamma)):
         _nonnegative(name, v)
     m_r = 0.5 * m_min

@@ -25,20 +25,33 @@ def _nonnegative(name, value):
         raise ValueError(f"{name} = {value!r} is invalid: must be a finite number >= 0")
 
 
-# --- dimensionless groups ----------------------------------------------------------------
-
-def plasticity(k1, kp):
-    """eta = (kp - k1)/k1 (Eq. 27a)."""
-    return (kp - k1) / k1
+def _positive_or_inf(name, value):
+    if not (isinstance(value, (int, float)) and value > 0):  # NaN fails too
+        raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
 
 
-def adhesivity(k1, kc):
-    """beta = kc/k1 (Eq. 27b)."""
-    return kc / k1
+def _groups(eta, beta=0.0, interpolation="linear"):
+    _nonnegative("eta", eta)
+    _nonnegative("beta", beta)
+    if interpolation not in K2_INTERPOLATIONS:
+        raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
 
+
+def _law(k1, kp, phiF, a12):
+    _positive("k1", k1)
+    if not (isinstance(kp, (int, float)) and math.isfinite(kp) and kp >= k1):
+        raise ValueError(f"kp = {kp!r} is invalid: must be a finite number >= k1")
+    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+        raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
+    _positive("a12", a12)
+
+
+# --- fa = 0, dimensionless: eta = (kp - k1)/k1, beta = kc/k1, chi = v_i/v_p (Eq. 27) -------
 
 def k2_over_k1(chi, eta, interpolation="linear"):
     """k2(deltaMax)/k1 at chi = deltaMax/deltaMax^p (Eq. 29; Eq. D.1 for 'sqrt'), capped at 1 + eta."""
+    _nonnegative("chi", chi)
+    _groups(eta, 0.0, interpolation)
     x = min(chi, 1.0)
     return 1.0 + eta * (math.sqrt(x) if interpolation == "sqrt" else x)
 
@@ -48,6 +61,7 @@ def k2_over_k1(chi, eta, interpolation="linear"):
 def en_squared(chi, eta, beta, interpolation="linear"):
     """Signed e_n^2 for fa = 0 (argument of the roots of Eqs. 32 and 33); negative means sticking."""
     _nonnegative("chi", chi)
+    _groups(eta, beta, interpolation)
     if chi <= 1.0:
         r = k2_over_k1(chi, eta, interpolation)  # k2/k1
         # E_f/E_i = k1/k2 - kc (k2 - k1)^2/(k1 k2 (k2 + kc))  (Eq. 21 with fa = 0)
@@ -61,7 +75,12 @@ def restitution_fa0(chi, eta, beta, interpolation="linear"):
 
 
 def low_velocity_restitution(chi, eta):
-    """Small-chi approximation e ~ 1 - eta chi/2 (Fig. 6)."""
+    """Small-chi approximation e ~ 1 - eta chi/2 (Fig. 6); only for eta chi/2 < 1 (beyond it the
+    line is negative and the approximation meaningless)."""
+    _nonnegative("chi", chi)
+    _groups(eta)
+    if not 0.5 * eta * chi < 1:
+        raise ValueError(f"chi = {chi!r} is invalid with eta = {eta!r}: the small-chi line needs eta chi/2 < 1")
     return 1.0 - 0.5 * eta * chi
 
 
@@ -74,11 +93,13 @@ def chi_c_b(eta, beta):
 
 def chi_c_c(eta, beta):
     """Upper end of the sticking window, Eq. 37."""
+    _groups(eta, beta)
     return math.sqrt(1.0 - 1.0 / (1.0 + eta) + beta * eta ** 2 / ((1.0 + eta) * (1.0 + beta + eta)))
 
 
 def beta_star(eta):
     """Smallest adhesivity for which pairs can stick, Eq. 40b (eta > 1)."""
+    _groups(eta)
     if not eta > 1:
         raise ValueError(f"eta = {eta!r} is invalid: beta* exists only for eta > 1")
     return 1.0 / (eta - 1.0)
@@ -98,13 +119,20 @@ def sticking_overlap(chi, eta, beta, interpolation="linear"):
 
 
 def max_sticking_overlap(eta, beta):
-    """delta_c(chi = 1)/deltaMax^p, Eq. 39."""
+    """delta_c(chi = 1)/deltaMax^p, Eq. 39 (where the pair sticks at chi = 1: beta eta^2 >= 1 + eta + beta)."""
+    _groups(eta, beta)
+    _positive("beta", beta)
+    if beta * eta ** 2 < 1.0 + eta + beta:
+        raise ValueError(f"beta = {beta!r} is invalid with eta = {eta!r}: the pair does not stick at chi = 1 (needs beta eta^2 >= 1 + eta + beta)")
     return math.sqrt((beta * eta ** 2 - (1.0 + eta + beta)) / (beta * (1.0 + eta) * (1.0 + eta + beta)))
 
 
 def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
     """Large-chi (chi <= 1, eta chi >> 1) asymptotes: (eta chi)^-1/2 (C.2), sqrt(1/(eta chi) - beta)
     (C.3); for 'sqrt' interpolation sqrt(eta)^-1 chi^-1/4-type decay (D.2)."""
+    _positive("chi", chi)
+    _groups(eta, beta, interpolation)
+    _positive("eta", eta)
     if interpolation == "sqrt":
         return 1.0 / math.sqrt(eta * math.sqrt(chi))
     return math.sqrt(max(1.0 / (eta * chi) - beta, 0.0))
@@ -113,6 +141,9 @@ def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
 def widened_kp(k1, kp, phiF, phiF_new):
     """Appendix A, Eq. A.3: limit stiffness kp' for a wider plastic range phiF' > phiF that keeps
     the low-overlap behaviour."""
+    _law(k1, kp, phiF, 1.0)
+    if not (isinstance(phiF_new, (int, float)) and 0 < phiF_new <= 1):
+        raise ValueError(f"phiF_new = {phiF_new!r} is invalid: must lie in (0, 1]")
     A = (kp - k1) ** 2 / kp
     B = phiF_new / phiF
     h = 0.5 * A * B
@@ -138,11 +169,14 @@ class PairOutcome:
 
 def delta_max_p(k1, kp, phiF, a12):
     """Limit overlap kp/(kp - k1) phiF a12, Eq. 10 [m] (inf when kp == k1)."""
+    _law(k1, kp, phiF, a12)
     return math.inf if kp == k1 else kp / (kp - k1) * phiF * a12
 
 
 def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
     """v_p of Eq. 19: 1/2 m_r v_p^2 = 1/2 k1 dmp^2 - fa dmp [m/s]."""
+    _positive("m_r", m_r)
+    _nonnegative("fa", fa)
     dmp = delta_max_p(k1, kp, phiF, a12)
     return math.sqrt(max(dmp * (k1 * dmp - 2.0 * fa), 0.0) / m_r)
 
@@ -157,10 +191,10 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
     """
     for name, v in (("v_inf", v_inf), ("k1", k1), ("phiF", phiF), ("a12", a12), ("m_r", m_r)):
         _positive(name, v)
+    _law(k1, kp, phiF, a12)
     _nonnegative("kc", kc)
     _nonnegative("fa", fa)
-    if not kp >= k1:
-        raise ValueError(f"kp = {kp!r} is invalid: must be >= k1")
+    _positive_or_inf("kca", kca)
     if adhesion not in ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
     if interpolation not in K2_INTERPOLATIONS:
@@ -193,7 +227,26 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
     return PairOutcome(v_f_inf / v_inf, v_f / v_i, v_i / v_inf, v_f_inf / v_f, v_i, d_max, v_p, E_f, "rebound", limit)
 
 
+def max_overlap(v_i, k1, kp, phiF, a12, m_r, fa=0.0):
+    """Largest overlap of a head-on collision with contact speed v_i, without viscosity [m]:
+    Eq. 20b on the loading branch k1; beyond deltaMax^p along the limit branch kp (delta - phiF a12)."""
+    _nonnegative("v_i", v_i)
+    _positive("m_r", m_r)
+    _nonnegative("fa", fa)
+    E_i = 0.5 * m_r * v_i ** 2
+    d = (fa + math.sqrt(fa * fa + k1 * m_r * v_i ** 2)) / k1  # Eq. 20b: 1/2 k1 d^2 - fa d = E_i
+    dmp = delta_max_p(k1, kp, phiF, a12)
+    if d <= dmp:
+        return d
+    d0p = phiF * a12  # kp/2 u^2 - fa u = R with u = delta - phiF a12
+    R = E_i - 0.5 * k1 * dmp ** 2 + 0.5 * kp * (dmp - d0p) ** 2 + fa * d0p
+    return d0p + (fa + math.sqrt(fa * fa + 2.0 * kp * R)) / kp
+
+
 def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
     """Approach speed at contact v_i that reaches deltaMax = chi deltaMax^p (inverse of Eq. 20b) [m/s]."""
+    _nonnegative("chi", chi)
+    _positive("m_r", m_r)
+    _nonnegative("fa", fa)
     d = chi * delta_max_p(k1, kp, phiF, a12)
     return math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)

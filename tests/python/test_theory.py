@@ -143,3 +143,74 @@ class DimensionalForm(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class OutsideTheDomain(unittest.TestCase):
+    """Every public function raises ValueError naming the argument outside its domain, instead of
+    returning a number (issue #14 item 9: e.g. restitution_fa0(0.5, -0.5, 0) gave 1.155)."""
+
+    inf, nan = math.inf, math.nan
+    calls = [
+        ("eta", theory.restitution_fa0, (0.5, -0.5, 0)),
+        ("beta", theory.restitution_fa0, (0.5, 2.0, -1)),
+        ("chi", theory.restitution_fa0, (nan, 2.0, 0)),
+        ("interpolation", theory.k2_over_k1, (0.5, 2.0, "cubic")),
+        ("interpolation", theory.en_squared, (0.5, 2.0, 0.1, "cubic")),
+        ("chi", theory.k2_over_k1, (-0.1, 2.0)),
+        ("chi", theory.low_velocity_restitution, (10, 4)),
+        ("eta", theory.low_velocity_restitution, (0.1, -1)),
+        ("eta", theory.chi_c_c, (-1, 0.5)),
+        ("beta", theory.chi_c_c, (2, nan)),
+        ("eta", theory.beta_star, (nan,)),
+        ("beta", theory.max_sticking_overlap, (2.0, 0.1)),  # does not stick at chi = 1
+        ("chi", theory.restitution_asymptote, (0, 2.0)),
+        ("interpolation", theory.restitution_asymptote, (0.5, 2.0, 0.0, "cubic")),
+        ("phiF_new", theory.widened_kp, (100, 500, 0.1, 0)),
+        ("kp", theory.widened_kp, (100, 50, 0.1, 0.2)),
+        ("phiF", theory.delta_max_p, (100, 500, 1.5, 1e-3)),
+        ("a12", theory.delta_max_p, (100, 500, 0.1, -1e-3)),
+        ("m_r", theory.plastic_limit_velocity, (100, 500, 0.1, 1e-3, 0)),
+        ("fa", theory.plastic_limit_velocity, (100, 500, 0.1, 1e-3, 1e-6, -1)),
+        ("kp", theory.pair_collision, (0.1, 100, inf, 0, 0.1, 1e-3, 1e-6)),
+        ("kp", theory.pair_collision, (0.1, 100, nan, 0, 0.1, 1e-3, 1e-6)),
+        ("phiF", theory.pair_collision, (0.1, 100, 500, 0, 0, 1e-3, 1e-6)),
+        ("kca", theory.pair_collision, (0.1, 100, 500, 0, 0.1, 1e-3, 1e-6, 1e-4, nan, "reversible")),
+        ("chi", theory.impact_velocity_for_chi, (-1, 100, 500, 0.1, 1e-3, 1e-6)),
+        ("m1", params.reduced_mass, (-1, 2)),
+        ("m2", params.reduced_mass, (1, nan)),
+        ("a1", params.reduced_radius, (0, 1)),
+        ("v_i", params.fa_from_alpha, (0.4, 100, 1e-6, -1)),
+        ("steps_per_contact", params.time_step, (500, 1e-6), {"steps_per_contact": -50}),
+    ]
+
+    def test_each_call_names_its_argument(self):
+        for name, f, args, *kw in self.calls:
+            with self.subTest(f=f.__name__, args=args):
+                with self.assertRaises(ValueError) as c:
+                    f(*args, **(kw[0] if kw else {}))
+                self.assertTrue(str(c.exception).startswith(name), str(c.exception))
+
+    def test_inside_the_domain_still_answers(self):
+        self.assertAlmostEqual(theory.low_velocity_restitution(0.1, 4), 0.8)
+        self.assertAlmostEqual(theory.max_sticking_overlap(9.0, 0.5) ** 2,
+                               (0.5 * 81 - 10.5) / (0.5 * 10 * 10.5))
+        self.assertEqual(params.reduced_mass(2.0), 2.0)  # against a wall
+
+
+class MaxOverlap(unittest.TestCase):
+    """theory.max_overlap against the work integral of the loading force, summed here."""
+
+    def test_work_integral(self):
+        k1, kp, phiF, a12, m_r = 100.0, 500.0, 0.1, 1e-3, 4e-6
+        dmp = kp / (kp - k1) * phiF * a12
+        for fa in (0.0, 2e-5):
+            for v in (0.05, 0.3, 1.0):  # below and above v_p
+                def work(d, n=20000):
+                    h, w = d / n, 0.0
+                    for j in range(n):
+                        x = (j + 0.5) * h
+                        w += h * ((k1 * x if x <= dmp else kp * (x - phiF * a12)) - fa)
+                    return w
+                E = 0.5 * m_r * v * v
+                d = theory.max_overlap(v, k1, kp, phiF, a12, m_r, fa)
+                self.assertAlmostEqual(work(d) / E, 1.0, delta=1e-6, msg=f"v {v}, fa {fa}")

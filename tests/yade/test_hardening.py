@@ -207,5 +207,41 @@ with Stderr() as err:
     O.run(20, True)
 check("exceeds" not in err.text, "O.dt below it: no warning")
 
+# 8 and 12. The pair drivers check their arguments and their own results.
+from mesocontact import pair  # noqa: E402
+
+mat = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)
+
+
+def refused(label, exc, name, f, *args, **kw):
+    try:
+        f(*args, **kw)
+        check(False, label, "no exception")
+    except exc as e:
+        check(name in str(e), label, str(e)[:110])
+
+
+for dt in (0, -1e-7, float("nan"), float("inf")):
+    refused(f"pair.build(dt={dt}) refused", ValueError, "dt = ", pair.build, 1e-3, 0.05, mat, dt=dt)
+refused("pair.build(gap=-1e-3) refused", ValueError, "gap = ", pair.build, 1e-3, 0.05, mat, gap=-1e-3)
+refused("pair.collide at 100 m/s refused (tunnelling)", ValueError, "too fast", lambda: pair.collide(pair.build(1e-3, 100.0, mat)))
+refused("pair.collide with gap = 1 m refused (budget)", ValueError, "max_steps", lambda: pair.collide(pair.build(1e-3, 0.05, mat, gap=1.0)))
+jump = dict(mat, fa=1e-5, kca=50.0, adhesion="jumpIn")
+refused("pair.collide at 1e-9 m/s, jump-in, refused (budget)", ValueError, "max_steps", lambda: pair.collide(pair.build(1e-3, 1e-9, jump)))
+refused("pair.collide after build_wall(v_inf=0) refused", ValueError, "v_inf", lambda: pair.collide(pair.build_wall(1e-3, 0.0, mat)))
+s = pair.build(1e-3, 0.05, mat, gap=2e-5)
+O.bodies[0].state.vel, O.bodies[1].state.vel = (0, 0, 0), (0, 1e-2, 0)  # sideways: they never meet
+refused("a pair that never touches is reported", RuntimeError, "never came into contact", pair.collide, s, max_contact_times=3)
+# The start gap and the separation test come from the Ip2's own mixing (a dominant wall here).
+wall = MesoMat(k1=100.0, kp=500.0, fa=4e-5, kca=100.0, adhesion="reversible", dominant=True, density=RHO)
+s = pair.build_wall(1e-3, 0.05, dict(mat, fa=1e-5, kca=50.0, adhesion="reversible"), wall_material=wall)
+O.run(5, True)
+i = O.interactions[s.ids]
+check(i.isReal and s.delta_a == i.phys.deltaA == -4e-5 / 100.0, "pair.build_wall: delta_a of a dominant wall is the contact's deltaA",
+      f"{s.delta_a} vs {i.phys.deltaA}")
+O.tags["description"] = "job 1"
+pair.build(1e-3, 0.05, mat)
+check(O.tags["description"] == "job 1", "pair.build keeps O.tags (yade-batch's description)")
+
 print(f"{len(failures)} FAILED: {failures}" if failures else "all passed")
 sys.exit(1 if failures else 0)
