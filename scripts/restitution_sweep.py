@@ -1,13 +1,17 @@
 # The main job: restitution sweeps and force-overlap loops of the meso-particle law in YADE,
 # regenerating Figs. 5-8 of the paper (CSV + PNG).
 #   yade -n -x scripts/restitution_sweep.py [OUTPUT_DIR]      (default: ./results)
+import argparse
 import os
 import sys
 import time
 
 from mesocontact import figures
 
-outdir = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "results")
+parser = argparse.ArgumentParser(prog="yade -n -x scripts/restitution_sweep.py",
+                                 description="Figs. 5-8 of the long paper: YADE pair collisions over the closed form (CSV + PNG).")
+parser.add_argument("outdir", nargs="?", default="results", help="output directory (default: ./results)")
+outdir = os.path.abspath(parser.parse_args(sys.argv[1:]).outdir)
 os.makedirs(outdir, exist_ok=True)
 t0 = time.time()
 print(f"writing to {outdir}", flush=True)

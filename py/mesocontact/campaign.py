@@ -1,20 +1,25 @@
 """Figures 16-19 of the long paper (Appendix F) from the tablet tests (inside ``yade``).
 
 Each figure function runs its tests from the cached unconfined start (stages.ensure: made once,
-reused), writes a CSV and a JSON per run and a JSON and PNG per figure, prints progress, and
-returns a summary dict. ``quick=True``: a 216-particle tablet and one cycle, for the test suite.
+reused), prints progress and returns a summary dict. Results are bundles (outputs.Bundle: whole
+or absent, whatever stops the job): each run in ``runs/<run>/`` (``<run>.csv``: iter, Dx,
+F/(kp d0); ``<run>.json``: its description and peaks), each figure in ``<figure>/`` (its JSON and
+PNG with copies of the runs it plots). ``quick=True``: a 216-particle tablet and one cycle, for
+the test suite, under ``<out>/quick/`` (quick and full results never share a name).
 
 Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.crossing_time).
 ``rates`` runs one amplitude at three periods, each 4x the last; the figures run FAST and the
 4x slower SLOW, the pair where the peak force of every cycle agrees within 5 %.
 """
 import json
+import math
 import os
 import time
 
 from yade import O
 from yade import wrapper as _w
 
+from . import outputs as _out
 from . import snapshots as _snap
 from . import stages as _stages
 from . import tablet as _tablet
@@ -47,9 +52,22 @@ def run_name(mode, amplitude, period, prefix=""):
     return f"{prefix}{mode}-Dx{amplitude:g}-P{period:g}"
 
 
+def root(outdir, quick=False):
+    """Where the results of a campaign (quick: of its quick mode) go."""
+    return os.path.join(outdir, "quick") if quick else outdir
+
+
+def run_dir(outdir, name, quick=False):
+    return os.path.join(root(outdir, quick), "runs", name)
+
+
 def read_csv(path):
     with open(path) as f:
         return [tuple(float(x) for x in line.split(",")) for line in f.read().split("\n")[1:] if line]
+
+
+def _csv_text(rows, header="iter,Dx,F_over_kp_d0"):
+    return header + "\n" + "".join(f"{int(r[0])},{r[1]!r},{r[2]!r}\n" for r in rows)
 
 
 def cycle_peaks(mode, rows, steps_per_cycle):
@@ -66,28 +84,33 @@ def cycle_peaks(mode, rows, steps_per_cycle):
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
-    description, peaks per cycle). A run whose two files exist is read back, not repeated.
-    Returns (description, rows)."""
+    description, peaks per cycle) in the bundle runs/<name>/. A complete bundle is read back, not
+    repeated (unless a hook must see the run). Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
-    csv, js = (os.path.join(outdir, name + ext) for ext in (".csv", ".json"))
-    if os.path.exists(csv) and os.path.exists(js) and hook is None:
-        with open(js) as f:
-            return json.load(f), read_csv(csv)
+    where = run_dir(outdir, name, quick)
+    if hook is None and _out.complete(where):
+        with open(os.path.join(where, name + ".json")) as f:
+            return json.load(f), read_csv(os.path.join(where, name + ".csv"))
     cfg = QUICK if quick else FULL
     t0 = time.time()
     prepare(outdir, quick, progress)
-    test = _uni.Test(progress=progress)
-    rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
-                       on_record=hook(test) if hook else None)
+    bundle = _out.Bundle(where)
+    try:
+        test = _uni.Test(progress=progress)
+        rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
+                           on_record=hook(test, bundle.tmp) if hook else None)
+    except BaseException:
+        bundle.discard()
+        raise
     info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": cfg["cycles"],
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
             "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0])}
-    _uni.write_csv(csv, rows)
-    with open(js, "w") as f:
-        json.dump(info, f, indent=1)
+    with bundle:
+        bundle.write_text(name + ".csv", _csv_text(rows))
+        bundle.write_json(name + ".json", info)
     if progress:
         print(f"{name}: {info['wall_clock_s']:.0f} s, peaks {['%.4g' % x for x in info['peaks']]}", flush=True)
     return info, rows
@@ -112,16 +135,18 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
                 continue
             hook = None
             if snapshot_amplitude == amplitude and k == 0:
-                hook = lambda test, a=amplitude: _cycle_snapshots(outdir, mode, a, test)
+                hook = lambda test, where, a=amplitude: _cycle_snapshots(where, mode, a, test)
             info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, prefix, hook)
             runs[info["name"]] = info
             data[info["name"]] = rows
-    fig = (figure or ("fig16" if mode == "tension" else "fig18")) + ("-quick" if quick else "")
+    fig = figure or ("fig16" if mode == "tension" else "fig18")
     summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
                "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
-    with open(os.path.join(outdir, fig + ".json"), "w") as f:
-        json.dump(summary, f, indent=1)
-    plot_cycles(mode, amplitudes, periods, runs, data, os.path.join(outdir, fig + ".png"), quick)
+    with _out.Bundle(os.path.join(root(outdir, quick), fig)) as b:
+        for name in runs:
+            b.copy_from(run_dir(outdir, name, quick))
+        b.write_json(fig + ".json", summary)
+        plot_cycles(mode, amplitudes, periods, runs, data, b.path(fig + ".png"), quick)
     return summary
 
 
@@ -134,7 +159,7 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
         peaks = {}
         for period in periods:
             name = run_name(mode, amplitude, period)
-            if period not in RATE_PERIODS and not os.path.exists(os.path.join(outdir, name + ".json")):
+            if period not in RATE_PERIODS and not _out.complete(run_dir(outdir, name, quick)):
                 continue  # a slower period only where it was run (it is long)
             info, _ = run_cycles(outdir, mode, amplitude, period, quick, progress)
             runs[info["name"]] = info
@@ -146,17 +171,16 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
             for p1, p2 in zip(periods, periods[1:]):
                 row[f"change_P{p1:g}_P{p2:g}"] = abs(peaks[p1][c] / peaks[p2][c] - 1) if p2 in peaks else ""
             table.append(row)
-    tag = "rates-quick" if quick else "rates"
-    with open(os.path.join(outdir, tag + ".csv"), "w") as f:
-        keys = list(table[0])
-        f.write(",".join(keys) + "\n")
-        for row in table:
-            f.write(",".join(str(row[k]) for k in keys) + "\n")
+    keys = list(table[0])
+    text = ",".join(keys) + "\n" + "".join(",".join(str(row[k]) for k in keys) + "\n" for row in table)
     summary = {"amplitude": amplitude, "periods_crossings": list(periods), "table": table, "runs": runs,
                "criterion": "peak force of every cycle within 5 % between a period and the next (4x slower)"}
-    with open(os.path.join(outdir, tag + ".json"), "w") as f:
-        json.dump(summary, f, indent=1)
-    _plot_rates(table, periods, os.path.join(outdir, tag + ".png"))
+    with _out.Bundle(os.path.join(root(outdir, quick), "rates")) as b:
+        for name in runs:
+            b.copy_from(run_dir(outdir, name, quick))
+        b.write_text("rates.csv", text)
+        b.write_json("rates.json", summary)
+        _plot_rates(table, periods, b.path("rates.png"))
     return summary
 
 
@@ -181,8 +205,8 @@ def timestep_check(outdir, quick=False, factors=(0.5, 1.0, 2.0), amplitude=0.2, 
         ref = [q for q in out["runs"] if q["mode"] == r["mode"] and q["factor"] == min(factors)][0]
         r["peak_change_vs_smallest"] = abs(r["peak"] / ref["peak"] - 1)
         r["final_F_change_vs_smallest"] = abs(r["final_F"] - ref["final_F"])
-    with open(os.path.join(outdir, "timestep-quick.json" if quick else "timestep.json"), "w") as f:
-        json.dump(out, f, indent=1)
+    with _out.Bundle(os.path.join(root(outdir, quick), "timestep")) as b:
+        b.write_json("timestep.json", out)
     return out
 
 
@@ -206,8 +230,8 @@ def drag_share(outdir, quick=False, amplitude=0.2, period=FAST, progress=True):
     none = out["runs"]["none"]["peak"]
     for label in ("lab", "contacts"):
         out["runs"][label]["drag_share_of_peak"] = 1 - none / out["runs"][label]["peak"]
-    with open(os.path.join(outdir, "drag-share-quick.json" if quick else "drag-share.json"), "w") as f:
-        json.dump(out, f, indent=1)
+    with _out.Bundle(os.path.join(root(outdir, quick), "drag-share")) as b:
+        b.write_json("drag-share.json", out)
     return out
 
 
@@ -233,7 +257,7 @@ def _plot_rates(table, periods, png):
 
 
 def _cycle_snapshots(outdir, mode, amplitude, test):
-    """A record hook writing snapshots at the start, at the peaks and at the returns."""
+    """A record hook writing snapshots at the start, at the peaks and at the returns into outdir."""
     state = {"next": 0}
     tag = "fig19" if mode == "compression" else "fig16-snap"
     win = _snap.window(margin=1.5, stretch=0.5 * amplitude if mode == "tension" else 0.0)  # one frame for all panels
@@ -287,7 +311,9 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     after that (no drag acts on a detached half moving as a body: it must vanish)."""
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress)
-    tag = "fig17-quick" if quick else "fig17"
+    tag = "fig17"
+    bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
+    where = bundle.tmp
     test = _uni.Test(progress=progress)
     win = _snap.window(margin=1.0, stretch=0.5 * until)
     marks = list(dx_marks)
@@ -299,9 +325,9 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         dx = row[1]
         if marks and dx >= marks[0]:
             label = f"{tag}-{len(events['snapshots']):02d}"
-            _snap.png(os.path.join(outdir, label + ".png"), f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}",
+            _snap.png(os.path.join(where, label + ".png"), f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}",
                       win=win)
-            _snap.vtk(os.path.join(outdir, tag), len(events["snapshots"]))
+            _snap.vtk(os.path.join(where, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         if len(t.rows) % check_every == 0:
             if events["first_gap_Dx"] is None:
@@ -315,8 +341,11 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                 events["last_contact_Dx"] = dx
 
     t0 = time.time()
-    rows = test.pull(speed, until=until, on_record=hook)
-    _uni.write_csv(os.path.join(outdir, tag + ".csv"), rows)
+    try:
+        rows = test.pull(speed, until=until, on_record=hook)
+    except BaseException:
+        bundle.discard()
+        raise
     after = [r[2] for r in rows if events["last_contact_Dx"] is not None and r[1] > events["last_contact_Dx"] + 0.05]
     summary = dict(events, speed=speed, until=until, t_cross=test.t_cross, L0=test.L0, quick=quick,
                    wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows),
@@ -326,9 +355,10 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                    rms_force_after_last_contact=(sum(f * f for f in after) / len(after)) ** 0.5 if after else None,
                    gap_criterion=f"a crack of >= {GAP_AREA:g} d0^2 seen >= 3 d0 behind the front face, "
                                  "in the central 60 % of the height, between the walls")
-    with open(os.path.join(outdir, tag + ".json"), "w") as f:
-        json.dump(summary, f, indent=1)
-    _plot_pull(rows, events, os.path.join(outdir, tag + ".png"))
+    with bundle:
+        bundle.write_text(tag + ".csv", _csv_text(rows))
+        bundle.write_json(tag + ".json", summary)
+        _plot_pull(rows, events, bundle.path(tag + ".png"))
     return summary
 
 
@@ -370,8 +400,25 @@ def main(figure, argv):
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
     p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
     a = p.parse_args(argv)
-    amps = tuple(float(x) for x in a.amplitudes.split(",")) if a.amplitudes else None
-    periods = tuple(float(x) for x in a.periods.split(","))
+    n = a.n or (_stages.QUICK_N if a.quick else FULL["n"])
+    if not 8 <= n <= 10 ** 6:
+        p.error(f"--n {n} is invalid: between 8 and 1000000 particles")
+    side = n ** (1 / 3)  # the sample's length in d0, roughly
+    mode = {"fig18": "compression", "fig19": "compression"}.get(figure, "tension")
+    amps = _numbers(p, "--amplitudes", a.amplitudes, 0, 0.5 * side if mode == "compression" else side,
+                    f"a {mode} amplitude in d0 (the sample is about {side:.3g} d0 long)") if a.amplitudes else None
+    slow = _numbers(p, "--slow-amplitudes", a.slow_amplitudes, 0, side, "an amplitude in d0") if a.slow_amplitudes else None
+    periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
+    _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
+    if a.kc_over_kp is not None and not (math.isfinite(a.kc_over_kp) and 0 <= a.kc_over_kp <= 100):
+        p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
+    try:  # an unwritable --out fails now, not after the computation
+        os.makedirs(a.out, exist_ok=True)
+        _out.write_atomic(os.path.join(a.out, ".writable"), "")
+        os.remove(os.path.join(a.out, ".writable"))
+    except OSError as e:
+        p.error(f"--out {a.out}: not writable ({e.strerror})")
+    _out.sweep(a.out)
     t0 = time.time()
     if figure == "prepare":
         info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
@@ -383,7 +430,6 @@ def main(figure, argv):
     elif figure == "rates":
         out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods)
     elif figure in ("fig16", "fig18"):
-        slow = tuple(float(x) for x in a.slow_amplitudes.split(",")) if a.slow_amplitudes else None
         out = cyclic("tension" if figure == "fig16" else "compression", a.out, amps, a.quick, periods,
                      slow_amplitudes=slow)
     elif figure == "fig19":
@@ -397,20 +443,43 @@ def main(figure, argv):
     print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
 
 
+def _numbers(parser, option, text, low, high, what):
+    """Comma-separated numbers in (low, high], or the parser's error naming the option."""
+    values = []
+    for x in text.split(","):
+        try:
+            v = float(x)
+        except ValueError:
+            parser.error(f"{option} {text}: {x!r} is not a number")
+        if not (math.isfinite(v) and low < v <= high):
+            parser.error(f"{option} {text}: {x} is invalid: must lie in ({low:g}, {high:g}], {what}")
+        values.append(v)
+    return tuple(values)
+
+
 def report(outdir, docsdir):
     """Copies a campaign's data and figures (CSV, JSON, PNG; not the saved states or VTK) from
-    ``outdir`` into ``docsdir``, with the snapshot series side by side (fig17-snapshots.png,
+    ``outdir`` into ``docsdir``: the stages' descriptions, every complete bundle (runs/*, the
+    figures) flattened, the snapshot series side by side (fig17-snapshots.png,
     fig19-snapshots.png) and the states of the kc study (kc-*/) in one table (kc-study.csv)."""
     import glob
     import shutil
     os.makedirs(docsdir, exist_ok=True)
-    for ext in ("csv", "json", "png"):
-        for f in glob.glob(os.path.join(outdir, f"*.{ext}")) + glob.glob(os.path.join(outdir, f"*.yade.gz.{ext}")):
-            shutil.copy(f, docsdir)
-    for tag in ("fig17", "fig19-compression-Dx0.3"):
-        pngs = sorted(glob.glob(os.path.join(outdir, f"{tag}-[0-9][0-9].png")))
+    for f in glob.glob(os.path.join(outdir, "*.yade.gz.json")):
+        shutil.copy(f, docsdir)
+    bundles = sorted(glob.glob(os.path.join(outdir, "runs", "*"))) + sorted(
+        d for d in glob.glob(os.path.join(outdir, "*")) if os.path.isdir(d) and _out.complete(d))
+    for d in bundles:
+        if not _out.complete(d):
+            print(f"report: {d} is incomplete, left out", flush=True)
+            continue
+        for f in os.listdir(d):
+            if f.rsplit(".", 1)[-1] in ("csv", "json", "png") and f != _out.MANIFEST:
+                shutil.copy(os.path.join(d, f), docsdir)
+    for fig, tag in (("fig17", "fig17"), ("fig19", "fig19-compression-Dx0.3")):
+        pngs = sorted(glob.glob(os.path.join(outdir, fig, f"{tag}-[0-9][0-9].png")))
         if pngs:
-            _snap.montage(pngs, os.path.join(docsdir, tag.split("-")[0] + "-snapshots.png"), ncols=4 if len(pngs) > 6 else 3)
+            _snap.montage(pngs, os.path.join(docsdir, fig + "-snapshots.png"), ncols=4 if len(pngs) > 6 else 3)
     rows = []
     for js in sorted(glob.glob(os.path.join(outdir, "kc-*", "released.yade.gz.json"))):
         with open(js) as f:
@@ -421,9 +490,8 @@ def report(outdir, docsdir):
                          s["coordination_with_walls"], s["rattlers"], s["kinetic_energy_ratio"]]
                         + [s["wall_stress"][w] for w in _tablet.WALLS] + s["side"])
     if rows:
-        with open(os.path.join(docsdir, "kc-study.csv"), "w") as f:
-            f.write("material,kc_over_kp,stage,solid_fraction,coordination,coordination_with_walls,rattlers,"
-                    "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in _tablet.WALLS) + ",Lx,Ly,Lz\n")
-            for r in rows:
-                f.write(",".join(str(x) for x in r) + "\n")
+        _out.write_atomic(os.path.join(docsdir, "kc-study.csv"),
+                          "material,kc_over_kp,stage,solid_fraction,coordination,coordination_with_walls,rattlers,"
+                          "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in _tablet.WALLS) + ",Lx,Ly,Lz\n"
+                          + "".join(",".join(str(x) for x in r) + "\n" for r in rows))
     return rows

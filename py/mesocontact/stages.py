@@ -9,8 +9,9 @@ Two stages, each a saved simulation with a JSON description beside it in one dir
 ``ensure(stage, outdir, ...)`` loads the stage into ``O`` and returns its description, making it
 (and the stage before it) first if the directory does not hold it. It holds a lock on the
 directory while it looks and makes, so two jobs asking at once make a stage once: the second
-waits and loads what the first saved. Files are written under temporary names and renamed, so
-a half-written state is never loaded.
+waits and loads what the first saved. Files are written under temporary names and renamed (the
+description last), so a half-written state is never loaded; a state without its description,
+a truncated file or a file that is not the tablet described is removed and made again.
 """
 import fcntl
 import json
@@ -49,15 +50,48 @@ def _config(quick, material, kc_over_kp, n):
     return {"n": int(n), "material": material, "kc_over_kp": kc}
 
 
+class _Unreadable(Exception):
+    """A stage file that cannot be used (truncated, not a tablet): made again."""
+
+
 def _load(p, config):
-    with open(p + ".json") as f:
-        info = json.load(f)
-    built = info["built"]
-    have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"]}
+    try:
+        with open(p + ".json") as f:
+            info = json.load(f)
+        built = info["built"]
+        have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"]}
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
     if any(abs(have[k] - config[k]) > 1e-12 if k == "kc_over_kp" else have[k] != config[k] for k in config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
-    O.load(p)
+    try:
+        O.load(p)
+    except RuntimeError as e:
+        raise _Unreadable(f"{p}: {e}")
+    n = len(_tablet.sphere_ids())
+    if n != config["n"] or not {"left", "right"} <= set(_tablet.wall_ids()):
+        raise _Unreadable(f"{p}: not the tablet its JSON describes ({n} spheres, walls {sorted(_tablet.wall_ids())})")
     return info
+
+
+def _try_load(p, config, progress):
+    """The stage if its files are whole and usable; None (the files removed) if not."""
+    if not os.path.exists(p + ".json"):
+        if os.path.exists(p):  # a state without its description: left by a stopped job
+            os.remove(p)
+        return None
+    if not os.path.exists(p):
+        os.remove(p + ".json")
+        return None
+    try:
+        return _load(p, config)
+    except _Unreadable as e:
+        if progress:
+            print(f"stage {p} unusable ({e}): made again", flush=True)
+        for f in (p, p + ".json"):
+            if os.path.exists(f):
+                os.remove(f)
+        return None
 
 
 def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True):
@@ -66,8 +100,9 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
     config = _config(quick, material, kc_over_kp, n)
     p = path(stage, outdir, quick)
     with _locked(outdir):
-        if os.path.exists(p) and os.path.exists(p + ".json"):
-            return _load(p, config)
+        info = _try_load(p, config, progress)
+        if info is not None:
+            return info
         if stage == "released":
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
@@ -75,8 +110,9 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
                                    progress=progress)
     info = ensure("released", outdir, quick, material, kc_over_kp, n, progress)
     with _locked(outdir):
-        if os.path.exists(p) and os.path.exists(p + ".json"):  # made meanwhile by another job
-            return _load(p, config)
+        made = _try_load(p, config, progress)  # made meanwhile by another job
+        if made is not None:
+            return made
         if progress:
             print(f"making the unconfined start {p}", flush=True)
         info = dict(info, unconfined=_uni.make_unconfined(progress=progress))

@@ -326,12 +326,12 @@ def _release(goal, steps, progress, chunk=1000):
 def save_atomic(path, info):
     """O.save to ``path`` and the description to ``path + '.json'``, each written under a
     temporary name and renamed, the JSON last: a reader that finds the JSON finds both whole."""
-    tmp = f"{path[:-len('.yade.gz')]}.tmp{os.getpid()}.yade.gz"
+    tmp = f"{path[:-len('.yade.gz')]}.tmp-{os.getpid()}-state.yade.gz"  # outputs.sweep knows the pattern
     O.save(tmp)
     os.replace(tmp, path)
-    with open(path + f".tmp{os.getpid()}", "w") as f:
+    with open(path + f".tmp-{os.getpid()}-json", "w") as f:
         json.dump(info, f, indent=1)
-    os.replace(path + f".tmp{os.getpid()}", path + ".json")
+    os.replace(path + f".tmp-{os.getpid()}-json", path + ".json")
 
 
 def make_adhesive_walls(wall_ids):

@@ -213,10 +213,3 @@ class Test:
                 print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
                       flush=True)
         return self.rows
-
-
-def write_csv(path, rows, header="iter,Dx,F_over_kp_d0"):
-    with open(path, "w") as f:
-        f.write(header + "\n")
-        for r in rows:
-            f.write(",".join(repr(x) for x in r) + "\n")

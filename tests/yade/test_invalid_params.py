@@ -68,6 +68,7 @@ except ValueError as e:
 ip2 = Ip2_MesoMat_MesoMat_MesoPhys(leverArm="a12")
 try:
     ip2.leverArm = "x"
+    failures.append("leverArm = 'x' on assignment: no exception")
 except ValueError:
     pass
 if ip2.leverArm != "a12":

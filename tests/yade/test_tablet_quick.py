@@ -13,7 +13,7 @@ import tempfile
 import numpy as np
 from yade import O, utils
 from yade import wrapper as w
-from mesocontact import campaign, snapshots, tablet, uniaxial
+from mesocontact import campaign, outputs, snapshots, tablet, uniaxial
 
 failures = []
 
@@ -54,6 +54,23 @@ for missing in (False, True):
 out = tempfile.mkdtemp(prefix="tablet-quick-")
 
 # 2. Preparation: the full law from the start, targets reached and static.
+info = campaign.prepare(out, quick=True)
+# Stage files that cannot be used are made again, not loaded: a truncated state, a truncated
+# description, a state without its description.
+from mesocontact import stages  # noqa: E402
+
+p_unc = stages.path("unconfined", out, quick=True)
+for damage in ("truncated state", "truncated JSON", "no JSON"):
+    if damage == "truncated state":
+        data = open(p_unc, "rb").read()
+        open(p_unc, "wb").write(data[: len(data) // 2])
+    elif damage == "truncated JSON":
+        open(p_unc + ".json", "w").write('{"built": {"n": 2')
+    else:
+        os.remove(p_unc + ".json")
+    again = campaign.prepare(out, quick=True, progress=False)
+    check(len(tablet.sphere_ids()) == info["built"]["n"] and all(again["built"][k] == info["built"][k] for k in ("n", "material", "kc_over_kp")) and os.path.exists(p_unc + ".json"),
+          f"stage with a {damage}: made again and loaded")
 info = campaign.prepare(out, quick=True)
 particles = [m for m in O.materials if m.label == "particles"][0]
 check(abs(particles.kc - 0.2 * tablet.KP) < 1e-12 and particles.muR == 0.2 and particles.frictionAngle > 0,
@@ -108,7 +125,7 @@ for mode in ("tension", "compression"):
         run = summary["runs"][name]
         check(abs(run["final_Dx"]) < 1e-9, f"{name}: back to zero strain (Dx = {run['final_Dx']:.1e})")
         check(abs(run["max_abs_Dx"] / amp - 1) < 1e-3, f"{name}: amplitude reached ({run['max_abs_Dx']:.5f})")
-        rows = campaign.read_csv(os.path.join(out, name + ".csv"))
+        rows = campaign.read_csv(os.path.join(campaign.run_dir(out, name, quick=True), name + ".csv"))
         check(all(math.isfinite(x) for r in rows for x in r), f"{name}: {len(rows)} finite records")
         peak = max(range(len(rows)), key=lambda k: abs(rows[k][1]))
         if mode == "tension":
@@ -120,7 +137,11 @@ for mode in ("tension", "compression"):
             check(slope > 0, f"{name}: re-loading branch slope dF/du = {slope:.3g} > 0")
         else:
             check(max(r[2] for r in rows[:peak + 1]) > 0, f"{name}: compressive force on the way in ({run['peaks']})")
-    check(os.path.exists(os.path.join(out, ("fig16" if mode == "tension" else "fig18") + "-quick.png")), f"{mode}: figure written")
+    fig = "fig16" if mode == "tension" else "fig18"
+    figdir = os.path.join(campaign.root(out, quick=True), fig)
+    check(outputs.complete(figdir) and os.path.exists(os.path.join(figdir, fig + ".png"))
+          and all(os.path.exists(os.path.join(figdir, n + ".csv")) for n in summary["runs"]),
+          f"{mode}: figure bundle complete, with its runs' CSV")
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
@@ -133,8 +154,10 @@ f_mean, f_rms = pull["mean_force_after_last_contact"], pull["rms_force_after_las
 # them would show as a steady mean (the lab-frame drag gave about the peak itself).
 check(f_mean is not None and abs(f_mean) < 0.02 * abs(pull["max_tension"]),
       f"pull: detached halves force-free on average: mean F = {f_mean:.2e} (rms {f_rms:.1e}, peak tension {pull['max_tension']:.3g})")
-pngs = sorted(glob.glob(os.path.join(out, "fig17-quick-0*.png")))
-vtks = sorted(glob.glob(os.path.join(out, "fig17-quick-spheres-*.vtk")))
+fig17 = os.path.join(campaign.root(out, quick=True), "fig17")
+check(outputs.complete(fig17), "pull: fig17 bundle complete")
+pngs = sorted(glob.glob(os.path.join(fig17, "fig17-0*.png")))
+vtks = sorted(glob.glob(os.path.join(fig17, "fig17-spheres-*.vtk")))
 check(len(pngs) == len(campaign.FIG17_DX) == len(vtks), f"pull: {len(pngs)} PNG and {len(vtks)} VTK snapshots")
 check(open(vtks[-1]).readline().startswith("# vtk DataFile"), "VTK snapshot is legacy VTK")
 import matplotlib

@@ -1,0 +1,63 @@
+# ctest (inside yade, run from the build tree): the command lines check their values before
+# any work starts (issue #14 item 18): each bad value ends the script with an error naming the
+# option, within seconds, and leaves nothing behind; --help prints the usage.
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import mesocontact  # noqa: E402  (the source tree's package: the scripts lie beside it)
+
+scripts = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__)))), "scripts")
+launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
+failures = []
+
+
+def run(script, *args):
+    t0 = time.time()
+    p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(scripts, script), *args], capture_output=True, text=True,
+                       timeout=120)
+    return p.returncode, p.stdout + p.stderr, time.time() - t0
+
+
+tmp = tempfile.mkdtemp(prefix="cli-")
+out = os.path.join(tmp, "out")
+cases = [
+    ("tablet_fig16.py", ["--amplitudes", "inf"], "--amplitudes"),
+    ("tablet_fig16.py", ["--amplitudes", "abc"], "--amplitudes"),
+    ("tablet_fig16.py", ["--amplitudes", "-0.1"], "--amplitudes"),
+    ("tablet_fig18.py", ["--quick", "--amplitudes", "10"], "--amplitudes"),  # the quick sample is about 6 d0 long
+    ("tablet_fig16.py", ["--periods", "1e-6"], "--periods"),
+    ("tablet_fig16.py", ["--periods", "nan"], "--periods"),
+    ("tablet_fig17.py", ["--speed", "0"], "--speed"),
+    ("tablet_prepare.py", ["--kc-over-kp", "-1"], "--kc-over-kp"),
+    ("tablet_prepare.py", ["--n", "3"], "--n"),
+]
+for script, args, option in cases:
+    rc, text, secs = run(script, *args, "--out", out)
+    ok = rc != 0 and option in text and secs < 60 and not os.path.exists(os.path.join(out, "released.yade.gz"))
+    last = [line for line in text.splitlines() if option in line][-1:] or text.splitlines()[-1:]
+    print(("ok   " if ok else "FAIL ") + f"{script} {' '.join(args)}: rc {rc}, {secs:.0f} s: {last[0] if last else ''}", flush=True)
+    if not ok:
+        failures.append(f"{script} {' '.join(args)}")
+# An --out that cannot be written fails at once.
+blocker = os.path.join(tmp, "file")
+open(blocker, "w").close()
+rc, text, secs = run("tablet_fig16.py", "--out", os.path.join(blocker, "sub"))
+ok = rc != 0 and "--out" in text and "not writable" in text
+print(("ok   " if ok else "FAIL ") + f"unwritable --out: rc {rc}, {secs:.0f} s", flush=True)
+if not ok:
+    failures.append("unwritable --out")
+# --help prints the usage and runs nothing (it used to create a folder "--help" and run the job).
+os.chdir(tmp)
+rc, text, secs = run("restitution_sweep.py", "--help")
+ok = rc == 0 and "usage" in text and not os.path.exists(os.path.join(tmp, "--help")) and "Fig. 5:" not in text
+print(("ok   " if ok else "FAIL ") + f"restitution_sweep.py --help: rc {rc}, {secs:.0f} s, folder '--help': {os.path.exists('--help')}", flush=True)
+if not ok:
+    failures.append("restitution_sweep --help")
+
+if failures:
+    print(f"{len(failures)} FAILED: {failures}")
+    sys.exit(1)
+print("all passed")
