@@ -1,4 +1,5 @@
 #include "MesoBackgroundDamping.hpp"
+#include "PyChecks.hpp"
 #include <core/Interaction.hpp>
 #include <core/Scene.hpp>
 #include <core/State.hpp>
@@ -23,6 +24,35 @@ void MesoBackgroundDamping::validate() const
 	}
 	if (reference != "lab" && reference != "contacts")
 		throw std::invalid_argument("MesoBackgroundDamping.reference = '" + reference + "' is invalid: must be 'lab' or 'contacts'");
+}
+
+void MesoBackgroundDamping::postLoad(MesoBackgroundDamping&)
+{
+	try {
+		validate();
+	} catch (const std::invalid_argument&) {
+		gammaB    = validGammaB;
+		gammaBR   = validGammaBR;
+		reference = validReference;
+		throw;
+	}
+	validGammaB    = gammaB;
+	validGammaBR   = gammaBR;
+	validReference = reference;
+}
+
+void MesoBackgroundDamping::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)
+{
+	using pychecks::Kind;
+	static const pychecks::Field fields[] = { { "gammaB", Kind::Number }, { "gammaBR", Kind::Number }, { "reference", Kind::Text } };
+	pychecks::checkKeywords(kw, fields);
+}
+
+void MesoBackgroundDamping::registerChecked(boost::python::object& cls)
+{
+	pychecks::checked(cls, "gammaB", &MesoBackgroundDamping::gammaB);
+	pychecks::checked(cls, "gammaBR", &MesoBackgroundDamping::gammaBR);
+	pychecks::checked(cls, "reference", &MesoBackgroundDamping::reference);
 }
 
 void MesoBackgroundDamping::sumNeighbours()

@@ -17,20 +17,27 @@ class MesoBackgroundDamping : public GlobalEngine {
 	std::vector<char>       isSphere;
 	void                    validate() const; // throws std::invalid_argument naming the attribute and value
 	void                    sumNeighbours();
+	Real                    validGammaB = 0, validGammaBR = 0;
+	std::string             validReference = "lab";
 
 public:
-	void action() override;
+	void        action() override;
+	void        postLoad(MesoBackgroundDamping&); // validates an assignment; a refused one is undone
+	void        pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
+	static void registerChecked(boost::python::object& cls);
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(MesoBackgroundDamping,GlobalEngine,"Viscous background damping of [Luding2008]_: every dynamic body gets the force $-\\gamma_b\\,(v-v_{ref})$ and, if it is a sphere of radius $a$, the torque $-\\gamma_{br}\\,a^2(\\omega-\\omega_{ref})$ (the form with the right units; the paper leaves it open). Not YADE's non-viscous :yref:`NewtonIntegrator.damping`. Put it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`.\n\nWith ``reference='lab'`` the reference is rest ($v_{ref}=\\omega_{ref}=0$): a drag against the surrounding medium, which also slows a free gas (useful while preparing a packing). With ``reference='contacts'`` it is the rigid motion of the body's mechanical contact neighbours (overlap > 0): $\\omega_{ref}=\\bar\\omega$, $v_{ref}=\\bar v+\\bar\\omega\\times(x-\\bar x)$, the bars averaging the neighbours' spins, positions and velocities (for a non-spherical neighbour such as a wall, its contact point and that point's velocity). A cluster translating and rotating as a rigid body, or a layer moving with a wall, feels no drag; a body rattling among resting neighbours feels $-\\gamma_b v$; a body without contacts feels none.\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>` the work of the drag is 'mesoBackground' in ``O.energy``, booked consistently with the leapfrog kinetic energy.",
-		((Real,gammaB,0,,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s], finite."))
-		((Real,gammaBR,0,,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s], finite: torque $-\\gamma_{br}a^2(\\omega-\\omega_{ref})$."))
-		((std::string,reference,"lab",,"What the drag acts relative to: 'lab' (rest) or 'contacts' (the rigid motion of the body's contact neighbours)."))
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoBackgroundDamping,GlobalEngine,"Viscous background damping of [Luding2008]_: every dynamic body gets the force $-\\gamma_b\\,(v-v_{ref})$ and, if it is a sphere of radius $a$, the torque $-\\gamma_{br}\\,a^2(\\omega-\\omega_{ref})$ (the form with the right units; the paper leaves it open). Not YADE's non-viscous :yref:`NewtonIntegrator.damping`. Put it after :yref:`InteractionLoop` and before :yref:`NewtonIntegrator`.\n\nWith ``reference='lab'`` the reference is rest ($v_{ref}=\\omega_{ref}=0$): a drag against the surrounding medium, which also slows a free gas (useful while preparing a packing). With ``reference='contacts'`` it is the rigid motion of the body's mechanical contact neighbours (overlap > 0): $\\omega_{ref}=\\bar\\omega$, $v_{ref}=\\bar v+\\bar\\omega\\times(x-\\bar x)$, the bars averaging the neighbours' spins, positions and velocities (for a non-spherical neighbour such as a wall, its contact point and that point's velocity). A cluster translating and rotating as a rigid body, or a layer moving with a wall, feels no drag; a body rattling among resting neighbours feels $-\\gamma_b v$; a body without contacts feels none.\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>` the work of the drag is 'mesoBackground' in ``O.energy``, booked consistently with the leapfrog kinetic energy.",
+		((Real,gammaB,0,Attr::triggerPostLoad,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s], finite (checked on assignment)."))
+		((Real,gammaBR,0,Attr::triggerPostLoad,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s], finite: torque $-\\gamma_{br}a^2(\\omega-\\omega_{ref})$."))
+		((std::string,reference,"lab",Attr::triggerPostLoad,"What the drag acts relative to: 'lab' (rest) or 'contacts' (the rigid motion of the body's contact neighbours)."))
 		((std::vector<Vector3r>,prevVel,,Attr::hidden,"Velocities when the previous drag was applied (energy tracking; saved, so that the booking goes on after O.load)."))
 		((std::vector<Vector3r>,prevAngVel,,Attr::hidden,"Spins when the previous drag was applied."))
 		((std::vector<Vector3r>,prevForce,,Attr::hidden,"The previous drag forces."))
 		((std::vector<Vector3r>,prevTorque,,Attr::hidden,"The previous drag torques."))
 		((std::vector<int>,hasPrev,,Attr::hidden,"Whether a body got a drag at the previous step (1) or not (0)."))
-		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy"))
+		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy")),
+		/*ctor*/,
+		/*py*/; MesoBackgroundDamping::registerChecked(_classObj)
 	);
 	// clang-format on
 };

@@ -1,4 +1,5 @@
 #include "MesoContact.hpp"
+#include "PyChecks.hpp"
 #include <core/BodyContainer.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -18,17 +19,46 @@ namespace {
 	// The numeric attributes of MesoMat and the core parameters they are (frictionAngle and the
 	// mode names are converted, below).
 	struct Field {
+		const char* name;
 		Real MesoMat::*attr;
 		double meso::MaterialParams::*param;
 	};
-	const Field numericFields[] = { { &MesoMat::k1, &meso::MaterialParams::k1 },         { &MesoMat::kp, &meso::MaterialParams::kp },
-		                        { &MesoMat::kc, &meso::MaterialParams::kc },         { &MesoMat::phiF, &meso::MaterialParams::phiF },
-		                        { &MesoMat::fa, &meso::MaterialParams::fa },         { &MesoMat::kca, &meso::MaterialParams::kca },
-		                        { &MesoMat::gammaN, &meso::MaterialParams::gammaN }, { &MesoMat::phiD, &meso::MaterialParams::phiD },
-		                        { &MesoMat::kt, &meso::MaterialParams::kt },         { &MesoMat::gammaT, &meso::MaterialParams::gammaT },
-		                        { &MesoMat::kr, &meso::MaterialParams::kr },         { &MesoMat::gammaR, &meso::MaterialParams::gammaR },
-		                        { &MesoMat::muR, &meso::MaterialParams::muR },       { &MesoMat::ko, &meso::MaterialParams::ko },
-		                        { &MesoMat::gammaO, &meso::MaterialParams::gammaO }, { &MesoMat::muO, &meso::MaterialParams::muO } };
+	const Field numericFields[] = { { "k1", &MesoMat::k1, &meso::MaterialParams::k1 },
+		                        { "kp", &MesoMat::kp, &meso::MaterialParams::kp },
+		                        { "kc", &MesoMat::kc, &meso::MaterialParams::kc },
+		                        { "phiF", &MesoMat::phiF, &meso::MaterialParams::phiF },
+		                        { "fa", &MesoMat::fa, &meso::MaterialParams::fa },
+		                        { "kca", &MesoMat::kca, &meso::MaterialParams::kca },
+		                        { "gammaN", &MesoMat::gammaN, &meso::MaterialParams::gammaN },
+		                        { "phiD", &MesoMat::phiD, &meso::MaterialParams::phiD },
+		                        { "kt", &MesoMat::kt, &meso::MaterialParams::kt },
+		                        { "gammaT", &MesoMat::gammaT, &meso::MaterialParams::gammaT },
+		                        { "kr", &MesoMat::kr, &meso::MaterialParams::kr },
+		                        { "gammaR", &MesoMat::gammaR, &meso::MaterialParams::gammaR },
+		                        { "muR", &MesoMat::muR, &meso::MaterialParams::muR },
+		                        { "ko", &MesoMat::ko, &meso::MaterialParams::ko },
+		                        { "gammaO", &MesoMat::gammaO, &meso::MaterialParams::gammaO },
+		                        { "muO", &MesoMat::muO, &meso::MaterialParams::muO } };
+	using pychecks::Kind;
+	const pychecks::Field mesoMatKeywords[]
+	        = { { "k1", Kind::Number },     { "kp", Kind::Number },         { "kc", Kind::Number },     { "phiF", Kind::Number },
+		    { "fa", Kind::Number },     { "kca", Kind::Number },        { "gammaN", Kind::Number }, { "phiD", Kind::Number },
+		    { "kt", Kind::Number },     { "gammaT", Kind::Number },     { "kr", Kind::Number },     { "gammaR", Kind::Number },
+		    { "muR", Kind::Number },    { "ko", Kind::Number },         { "gammaO", Kind::Number }, { "muO", Kind::Number },
+		    { "density", Kind::Number }, { "young", Kind::Number },     { "frictionAngle", Kind::Number },
+		    { "adhesion", Kind::Text }, { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag } };
+}
+
+void MesoMat::registerChecked(boost::python::object& cls)
+{
+	for (const Field& f : numericFields)
+		pychecks::checked(cls, f.name, f.attr);
+	pychecks::checked(cls, "adhesion", &MesoMat::adhesion);
+	pychecks::checked(cls, "k2Interpolation", &MesoMat::k2Interpolation);
+	pychecks::checked(cls, "dominant", &MesoMat::dominant);
+	pychecks::checked(cls, "frictionAngle", &MesoMat::getFrictionAngle, &MesoMat::setFrictionAngle);
+	pychecks::checked(cls, "density", &MesoMat::getDensity, &MesoMat::setDensity);
+	pychecks::checked(cls, "young", &MesoMat::getYoung, &MesoMat::setYoung);
 }
 
 namespace {
@@ -87,6 +117,12 @@ void MesoMat::postLoad(MesoMat&)
 	}
 }
 
+void MesoMat::updateAttrsChecked(const boost::python::dict& d)
+{
+	pychecks::checkKeywords(d, mesoMatKeywords);
+	pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
+}
+
 void MesoMat::setFrictionAngle(Real a)
 {
 	frictionAngle = a;
@@ -107,6 +143,7 @@ void MesoMat::setYoung(Real y)
 
 void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)
 {
+	pychecks::checkKeywords(kw, mesoMatKeywords); // a wrong type named before any is applied
 	// Apply all keywords first and check once, so that kp >= k1 or fa with kca can be given in any order.
 	deferChecks = true;
 	try {
@@ -157,6 +194,12 @@ void Ip2_MesoMat_MesoMat_MesoPhys::postLoad(Ip2_MesoMat_MesoMat_MesoPhys&)
 		leverArm              = leverFactor == 2 ? "a12" : "reduced";
 		throw std::invalid_argument("leverArm = '" + bad + "' is invalid: must be 'reduced' or 'a12'");
 	}
+}
+
+void Ip2_MesoMat_MesoMat_MesoPhys::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)
+{
+	static const pychecks::Field fields[] = { { "leverArm", pychecks::Kind::Text } };
+	pychecks::checkKeywords(kw, fields);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #pragma once
 #include "../core/NormalLaw.hpp"
 #include "../core/Tangential.hpp"
+#include "PyChecks.hpp"
 
 #include <core/Dispatching.hpp>
 #include <pkg/common/ElastMat.hpp>
@@ -38,6 +39,8 @@ public:
 	Real                        getYoung() const { return young; }
 	void                        setYoung(Real y);
 	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
+	static void          registerChecked(boost::python::object& cls); // attributes that name themselves in a type error
+	void                 updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
 		((Real,k1,1e2,Attr::triggerPostLoad,"Plastic (initial) loading stiffness $k_1$ [N/m], > 0."))
@@ -63,6 +66,8 @@ public:
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 		.add_property("density",&MesoMat::getDensity,&MesoMat::setDensity,"Density of the material [kg/m³], finite and > 0 (checked on assignment).")
 		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law, read by :yref:`PWaveTimeStep`.")
+		.def("updateAttrs",&MesoMat::updateAttrsChecked,(boost::python::arg("attrs")),"Sets several attributes at once: a wrong type (TypeError) or an invalid value (ValueError) names the attribute and leaves every attribute as it was.");
+		MesoMat::registerChecked(_classObj)
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(MesoMat, FrictMat);
@@ -218,6 +223,7 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
 	void postLoad(Ip2_MesoMat_MesoMat_MesoPhys&);
+	void pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	// Gives a live contact its bodies' present materials, keeping its history; throws
 	// std::invalid_argument if that would change the hysteretic normal law or the contact class.
 	void adoptMaterials(const shared_ptr<Interaction>& I);
@@ -230,7 +236,8 @@ public:
 		((Real,stableDt,std::numeric_limits<Real>::infinity(),(Attr::readonly|Attr::noSave),"Smallest stable time step of the contacts this functor has made [s]: per contact the leapfrog bound $(2/\\omega)(\\sqrt{1+\\zeta^2}-\\zeta)$ of its stiffest element (normal $k_p$ with $\\gamma_0$ on the reduced mass; sliding, rolling and torsion with the spins' inertia). When O.dt exceeds it at a new contact, a warning names the contact, once per functor.")),
 		/*ctor*/,
 		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'twisting' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
-		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.")
+		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.");
+		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm)
 	);
 	// clang-format on
 	FUNCTOR2D(MesoMat, MesoMat);

@@ -381,9 +381,16 @@ def _plot_pull(rows, events, png):
     plt.close(fig)
 
 
-def main(figure, argv):
-    """Command line of the tablet scripts (prepare, rates, fig16 ... fig19)."""
+FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19")
+
+
+def parse_args(figure, argv):
+    """The checked options of a tablet script: argparse's error (SystemExit 2, the option named)
+    for any value outside its range, an unwritable --out included, before any work starts.
+    Returns (namespace, amplitudes, slow_amplitudes, periods)."""
     import argparse
+    if figure not in FIGURES:
+        raise ValueError(f"figure = {figure!r} is invalid: one of {FIGURES}")
     p = argparse.ArgumentParser(prog=f"yade -n -x scripts/tablet_{figure}.py",
                                 description=f"Appendix F, {figure}: writes CSV, JSON, PNG (and VTK) into --out.")
     p.add_argument("--quick", action="store_true", help="216 particles, one cycle (for tests)")
@@ -418,6 +425,12 @@ def main(figure, argv):
         os.remove(os.path.join(a.out, ".writable"))
     except OSError as e:
         p.error(f"--out {a.out}: not writable ({e.strerror})")
+    return a, amps, slow, periods
+
+
+def main(figure, argv):
+    """Command line of the tablet scripts (prepare, rates, fig16 ... fig19)."""
+    a, amps, slow, periods = parse_args(figure, argv)
     _out.sweep(a.out)
     t0 = time.time()
     if figure == "prepare":

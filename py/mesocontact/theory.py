@@ -8,6 +8,7 @@ Two layers:
   eta = (kp - k1)/k1, the adhesivity beta = kc/k1 and the scaled velocity chi = v_i/v_p;
 - the dimensional restitution of a pair with non-contact adhesion (Eqs. 16-25), in SI units.
 """
+import functools
 import math
 from dataclasses import dataclass
 
@@ -30,6 +31,31 @@ def _positive_or_inf(name, value):
         raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
 
 
+def _in_range(f):
+    """Arguments inside the domain whose result leaves floating point (e.g. v_i = 1e300) raise
+    ValueError naming them, not OverflowError or a NaN."""
+    names = f.__code__.co_varnames[:f.__code__.co_argcount]
+
+    @functools.wraps(f)
+    def checked(*args, **kw):
+        def fail(why):
+            given = ", ".join(f"{n}={v!r}" for n, v in list(zip(names, args)) + list(kw.items()))
+            raise ValueError(f"{names[0]}: arguments ({given}) out of floating-point range: {why}") from None
+        try:
+            r = f(*args, **kw)
+        except (OverflowError, ZeroDivisionError) as e:
+            fail(e)
+        except ValueError as e:  # math's "math domain error" names nothing; the checks' own messages stay
+            if str(e) == "math domain error":
+                fail(e)
+            raise
+        values = [getattr(r, k) for k in r.__dataclass_fields__] if hasattr(r, "__dataclass_fields__") else [r]
+        if any(isinstance(v, float) and math.isnan(v) for v in values):
+            fail("the result is NaN")
+        return r
+    return checked
+
+
 def _groups(eta, beta=0.0, interpolation="linear"):
     _nonnegative("eta", eta)
     _nonnegative("beta", beta)
@@ -48,6 +74,7 @@ def _law(k1, kp, phiF, a12):
 
 # --- fa = 0, dimensionless: eta = (kp - k1)/k1, beta = kc/k1, chi = v_i/v_p (Eq. 27) -------
 
+@_in_range
 def k2_over_k1(chi, eta, interpolation="linear"):
     """k2(deltaMax)/k1 at chi = deltaMax/deltaMax^p (Eq. 29; Eq. D.1 for 'sqrt'), capped at 1 + eta."""
     _nonnegative("chi", chi)
@@ -58,6 +85,7 @@ def k2_over_k1(chi, eta, interpolation="linear"):
 
 # --- fa = 0: restitution, sticking window, sticking overlap -------------------------------
 
+@_in_range
 def en_squared(chi, eta, beta, interpolation="linear"):
     """Signed e_n^2 for fa = 0 (argument of the roots of Eqs. 32 and 33); negative means sticking."""
     _nonnegative("chi", chi)
@@ -69,11 +97,13 @@ def en_squared(chi, eta, beta, interpolation="linear"):
     return 1.0 - (1.0 - en_squared(1.0, eta, beta, interpolation)) / chi ** 2
 
 
+@_in_range
 def restitution_fa0(chi, eta, beta, interpolation="linear"):
     """e(chi) for fa = 0: Eq. 32 (chi <= 1) and Eq. 33 (chi > 1); 0 where the pair sticks."""
     return math.sqrt(max(en_squared(chi, eta, beta, interpolation), 0.0))
 
 
+@_in_range
 def low_velocity_restitution(chi, eta):
     """Small-chi approximation e ~ 1 - eta chi/2 (Fig. 6); only for eta chi/2 < 1 (beyond it the
     line is negative and the approximation meaningless)."""
@@ -84,6 +114,7 @@ def low_velocity_restitution(chi, eta):
     return 1.0 - 0.5 * eta * chi
 
 
+@_in_range
 def chi_c_b(eta, beta):
     """Lower end of the sticking window, Eq. 34 (requires beta > 0)."""
     _positive("eta", eta)
@@ -91,12 +122,14 @@ def chi_c_b(eta, beta):
     return (1.0 + math.sqrt(1.0 + 4.0 * beta * (1.0 + beta))) / (2.0 * beta * eta)
 
 
+@_in_range
 def chi_c_c(eta, beta):
     """Upper end of the sticking window, Eq. 37."""
     _groups(eta, beta)
     return math.sqrt(1.0 - 1.0 / (1.0 + eta) + beta * eta ** 2 / ((1.0 + eta) * (1.0 + beta + eta)))
 
 
+@_in_range
 def beta_star(eta):
     """Smallest adhesivity for which pairs can stick, Eq. 40b (eta > 1)."""
     _groups(eta)
@@ -105,6 +138,7 @@ def beta_star(eta):
     return 1.0 / (eta - 1.0)
 
 
+@_in_range
 def sticking_overlap(chi, eta, beta, interpolation="linear"):
     """delta_c/deltaMax^p of a sticking pair, Eqs. 36 and 38: (chi/sqrt(beta)) sqrt(-e_n^2).
 
@@ -118,6 +152,7 @@ def sticking_overlap(chi, eta, beta, interpolation="linear"):
     return chi / math.sqrt(beta) * math.sqrt(-e2)
 
 
+@_in_range
 def max_sticking_overlap(eta, beta):
     """delta_c(chi = 1)/deltaMax^p, Eq. 39 (where the pair sticks at chi = 1: beta eta^2 >= 1 + eta + beta)."""
     _groups(eta, beta)
@@ -127,6 +162,7 @@ def max_sticking_overlap(eta, beta):
     return math.sqrt((beta * eta ** 2 - (1.0 + eta + beta)) / (beta * (1.0 + eta) * (1.0 + eta + beta)))
 
 
+@_in_range
 def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
     """Large-chi (chi <= 1, eta chi >> 1) asymptotes: (eta chi)^-1/2 (C.2), sqrt(1/(eta chi) - beta)
     (C.3); for 'sqrt' interpolation sqrt(eta)^-1 chi^-1/4-type decay (D.2)."""
@@ -138,6 +174,7 @@ def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
     return math.sqrt(max(1.0 / (eta * chi) - beta, 0.0))
 
 
+@_in_range
 def widened_kp(k1, kp, phiF, phiF_new):
     """Appendix A, Eq. A.3: limit stiffness kp' for a wider plastic range phiF' > phiF that keeps
     the low-overlap behaviour."""
@@ -167,12 +204,14 @@ class PairOutcome:
     plastic_limit: bool  # the limit branch was reached (v_i >= v_p)
 
 
+@_in_range
 def delta_max_p(k1, kp, phiF, a12):
     """Limit overlap kp/(kp - k1) phiF a12, Eq. 10 [m] (inf when kp == k1)."""
     _law(k1, kp, phiF, a12)
     return math.inf if kp == k1 else kp / (kp - k1) * phiF * a12
 
 
+@_in_range
 def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
     """v_p of Eq. 19: 1/2 m_r v_p^2 = 1/2 k1 dmp^2 - fa dmp [m/s]."""
     _positive("m_r", m_r)
@@ -181,6 +220,7 @@ def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
     return math.sqrt(max(dmp * (k1 * dmp - 2.0 * fa), 0.0) / m_r)
 
 
+@_in_range
 def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhesion="none",
                    interpolation="linear"):
     """Closed-form outcome of a head-on collision without viscosity (Eqs. 16-25, 17b, 18b).
@@ -227,10 +267,12 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
     return PairOutcome(v_f_inf / v_inf, v_f / v_i, v_i / v_inf, v_f_inf / v_f, v_i, d_max, v_p, E_f, "rebound", limit)
 
 
+@_in_range
 def max_overlap(v_i, k1, kp, phiF, a12, m_r, fa=0.0):
     """Largest overlap of a head-on collision with contact speed v_i, without viscosity [m]:
     Eq. 20b on the loading branch k1; beyond deltaMax^p along the limit branch kp (delta - phiF a12)."""
     _nonnegative("v_i", v_i)
+    _law(k1, kp, phiF, a12)
     _positive("m_r", m_r)
     _nonnegative("fa", fa)
     E_i = 0.5 * m_r * v_i ** 2
@@ -243,6 +285,7 @@ def max_overlap(v_i, k1, kp, phiF, a12, m_r, fa=0.0):
     return d0p + (fa + math.sqrt(fa * fa + 2.0 * kp * R)) / kp
 
 
+@_in_range
 def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
     """Approach speed at contact v_i that reaches deltaMax = chi deltaMax^p (inverse of Eq. 20b) [m/s]."""
     _nonnegative("chi", chi)

@@ -140,6 +140,39 @@ for _ in range(500):
     changed += (m.frictionAngle, m.density, m.k1, m.kp) != before
 check(changed == 0, "a rejected updateAttrs leaves density, frictionAngle (bitwise), k1, kp as they were", f"{changed} of 500 changed")
 
+# 13. Wrong types name the attribute (TypeError), in the constructor, on assignment and in
+# updateAttrs (which then changes nothing); Boost.Python's own message named none.
+from yade.wrapper import MesoBackgroundDamping  # noqa: E402
+
+for label, make in (("MesoMat(k1='abc')", lambda: MesoMat(k1="abc")), ("MesoMat(kp=None)", lambda: MesoMat(kp=None)),
+                    ("MesoMat(adhesion=0)", lambda: MesoMat(adhesion=0)), ("MesoMat(dominant='yes')", lambda: MesoMat(dominant="yes")),
+                    ("MesoMat(density=[1])", lambda: MesoMat(density=[1])),
+                    ("Ip2(leverArm=3)", lambda: Ip2_MesoMat_MesoMat_MesoPhys(leverArm=3)),
+                    ("MesoBackgroundDamping(gammaB='x')", lambda: MesoBackgroundDamping(gammaB="x"))):
+    name = label.split("(")[1].split("=")[0]
+    try:
+        make()
+        check(False, f"{label} refused", "accepted")
+    except TypeError as e:
+        check(str(e).startswith(name + " = "), f"{label}: TypeError naming it", str(e))
+m = MesoMat(k1=10.0, kp=50.0, kc=5.0)
+for name, value in (("k1", "abc"), ("kp", True), ("adhesion", 0), ("frictionAngle", None), ("young", "1e9")):
+    try:
+        setattr(m, name, value)
+        check(False, f"m.{name} = {value!r} refused", "accepted")
+    except TypeError as e:
+        check(str(e).startswith(name + " = ") and (m.k1, m.kp) == (10.0, 50.0), f"m.{name} = {value!r}: TypeError naming it", str(e))
+try:
+    m.updateAttrs({"kc": 7.0, "gammaO": None})
+    check(False, "updateAttrs with a wrong type refused", "accepted")
+except TypeError as e:
+    check(str(e).startswith("gammaO = ") and m.kc == 5.0, "updateAttrs with a wrong type: names it, changes nothing", f"{e}; kc {m.kc}")
+try:
+    MesoBackgroundDamping(gammaB=1.0).gammaB = -1.0
+    check(False, "gammaB = -1 on assignment refused", "accepted")
+except ValueError as e:
+    check("gammaB = -1" in str(e), "gammaB = -1 on assignment refused, naming it", str(e))
+
 # 6. Spheres that start overlapped, at rest: the stored energy is the initial state. Fresh contact
 # at overlap d: force k1 d, unloading line k2(d) (linear interpolation), so E0 = (k1 d)^2 / (2 k2).
 k1, kp, phiF = 100.0, 500.0, 0.1

@@ -1,0 +1,105 @@
+// Python attributes whose wrong type is reported with the attribute's name. Boost.Python's own
+// converters say only "Python argument types in None.None(MesoMat, str) did not match ...".
+// The YADE-registered property is replaced by one that takes any object and checks it (its
+// docstring is kept); constructors check their keywords the same way (checkKeywords).
+#pragma once
+#include <boost/python.hpp>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace yade { namespace pychecks {
+
+	enum class Kind { Number, Text, Flag };
+
+	inline std::string describe(const boost::python::object& v)
+	{
+		const std::string repr = boost::python::extract<std::string>(boost::python::str(v.attr("__repr__")()));
+		const std::string type = boost::python::extract<std::string>(v.attr("__class__").attr("__name__"));
+		return repr + " (" + type + ")";
+	}
+
+	// A wrong type is a TypeError, as Python's own functions raise it (a wrong value stays a ValueError).
+	[[noreturn]] inline void typeError(const std::string& message)
+	{
+		PyErr_SetString(PyExc_TypeError, message.c_str());
+		boost::python::throw_error_already_set();
+		throw std::logic_error("unreachable"); // throw_error_already_set does not return
+	}
+
+	// True is a number to Python; k1 = True is surely a slip, so it is refused as a number.
+	inline double number(const char* name, const boost::python::object& v)
+	{
+		boost::python::extract<double> x(v);
+		if (PyBool_Check(v.ptr()) || !x.check()) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a number");
+		return x();
+	}
+
+	inline std::string text(const char* name, const boost::python::object& v)
+	{
+		boost::python::extract<std::string> x(v);
+		if (!PyUnicode_Check(v.ptr()) || !x.check()) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a string");
+		return x();
+	}
+
+	inline bool flag(const char* name, const boost::python::object& v)
+	{
+		if (!PyBool_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be True or False");
+		return v.ptr() == Py_True;
+	}
+
+	inline void check(const char* name, Kind kind, const boost::python::object& v)
+	{
+		if (kind == Kind::Number) number(name, v);
+		else if (kind == Kind::Text) text(name, v);
+		else flag(name, v);
+	}
+
+	struct Field {
+		const char* name;
+		Kind        kind;
+	};
+
+	// Checks the types of the constructor's keywords that are in fields (others are left to YADE).
+	template <std::size_t N> void checkKeywords(const boost::python::dict& kw, const Field (&fields)[N])
+	{
+		for (const Field& f : fields)
+			if (kw.has_key(f.name)) check(f.name, f.kind, kw[f.name]);
+	}
+
+	inline void replaceProperty(boost::python::object& cls, const char* name, const boost::python::object& get, const boost::python::object& set)
+	{
+		const boost::python::object doc = cls.attr(name).attr("__doc__");
+		boost::python::setattr(cls, name, boost::python::import("builtins").attr("property")(get, set, boost::python::object(), doc));
+	}
+
+	template <class T> T convert(const char* name, const boost::python::object& v)
+	{
+		if constexpr (std::is_same_v<T, bool>) return flag(name, v);
+		else if constexpr (std::is_same_v<T, std::string>) return text(name, v);
+		else return static_cast<T>(number(name, v));
+	}
+
+	// The attribute of class C, set through a checked value; postLoad follows, as for YADE's
+	// triggerPostLoad attributes (it validates the value and restores the old one if it is refused).
+	template <class C, class T> void checked(boost::python::object& cls, const char* name, T C::*attr)
+	{
+		namespace bp = boost::python;
+		auto get     = [attr](const C& c) { return c.*attr; };
+		auto set     = [name, attr](C& c, const bp::object& v) {
+                        c.*attr = convert<T>(name, v);
+                        c.callPostLoad();
+		};
+		replaceProperty(cls, name, bp::make_function(get, bp::default_call_policies(), boost::mpl::vector<T, const C&>()),
+		                bp::make_function(set, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
+	}
+
+	// The same for a property with its own getter and setter.
+	template <class C, class T> void checked(boost::python::object& cls, const char* name, T (C::*get)() const, void (C::*set)(T))
+	{
+		namespace bp = boost::python;
+		auto setter  = [name, set](C& c, const bp::object& v) { (c.*set)(convert<T>(name, v)); };
+		replaceProperty(cls, name, bp::make_function(get), bp::make_function(setter, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
+	}
+
+}} // namespace yade::pychecks

@@ -1,0 +1,213 @@
+# Adversarial inputs against the plugin and the package (issue #14): material parameters and
+# their types (constructor and assignment), the Ip2 and the background drag, the theory
+# functions, damaged save files and the tablet scripts' command-line values. Each input ends in
+# one of: rejected clearly (ValueError/TypeError or argparse's error naming what is wrong),
+# accepted and ran clean (finite state after a short collision, or a finite result), or other
+# (anything else: the count that must be 0). A crash ends the script (the count is then moot).
+#   yade -j1 -n -x scripts/fuzz_inputs.py [--n N] [--seed S] [--out FILE.json]
+# N inputs per category (default 200; the ctest smoke runs a few). Reproducible from the seed.
+import argparse
+import contextlib
+import io
+import json
+import math
+import os
+import random
+import sys
+import tempfile
+
+from yade import O, utils
+from yade import wrapper as w
+
+from mesocontact import campaign, params, theory
+
+ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/fuzz_inputs.py")
+ap.add_argument("--n", type=int, default=200, help="inputs per category")
+ap.add_argument("--seed", type=int, default=2026)
+ap.add_argument("--out", default=None, help="JSON summary (default: print only)")
+args = ap.parse_args(sys.argv[1:])
+rng = random.Random(args.seed)
+
+NUMBERS = ["k1", "kp", "kc", "phiF", "fa", "kca", "gammaN", "phiD", "kt", "gammaT", "kr", "gammaR", "muR", "ko", "gammaO", "muO",
+           "density", "young", "frictionAngle"]
+TEXTS = {"adhesion": ("none", "reversible", "jumpIn"), "k2Interpolation": ("linear", "sqrt")}
+NAMES = NUMBERS + list(TEXTS) + ["dominant"]
+BAD = [0.0, -1.0, -1e-300, float("nan"), float("inf"), -float("inf"), 1e300, 1e155, 1e-320, "abc", None, True, [1.0], {}, 3 + 0j]
+tally = {}
+others = []
+
+
+def count(category, outcome, detail=""):
+    tally.setdefault(category, {"rejected clearly": 0, "accepted and ran clean": 0, "other": 0})
+    tally[category][outcome] += 1
+    if outcome == "other":
+        others.append(f"{category}: {detail}")
+
+
+def value_for(name):
+    """A plausible value most of the time, an adversarial one otherwise."""
+    if rng.random() < 0.35:
+        return rng.choice(BAD + ["jump-in", "cubic", "", 0, 1])
+    if name in TEXTS:
+        return rng.choice(TEXTS[name])
+    if name == "dominant":
+        return rng.random() < 0.2
+    if name == "frictionAngle":
+        return rng.uniform(0, 1.5)
+    if name in ("phiF", "phiD"):
+        return rng.uniform(0.01, 1)
+    if name == "density":
+        return 10 ** rng.uniform(2, 4)
+    if name == "young":
+        return 10 ** rng.uniform(6, 11)
+    return 10 ** rng.uniform(-6, 4) if rng.random() < 0.8 else 0.0
+
+
+def names_it(e, names):
+    """The message starts with a parameter's name (for a rule between two parameters, e.g. kca
+    for fa > 0, it names the other one too) and mentions one of those given."""
+    m = str(e).replace("MesoBackgroundDamping.", "")
+    return any(m.startswith((n + " ", n + ":")) for n in set(NAMES) | set(names)) and any(n in m for n in names)
+
+
+def clean_collision(mat):
+    """A short head-on collision of two spheres of this material: finite state throughout."""
+    O.reset()
+    m = O.materials.append(mat)
+    O.bodies.append([utils.sphere((0, 0, 0), 1e-3, material=m), utils.sphere((2.0005e-3, 0, 0), 1e-3, material=m)])
+    O.bodies[1].state.vel = (-0.05, 0, 0)
+    ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys()
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(aabbEnlargeFactor=1.2)]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=1.2)], [ip2], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.NewtonIntegrator(damping=0)]
+    O.dt = 1e-7
+    O.step()
+    if math.isfinite(ip2.stableDt):  # the user's job: a stable step (the law warns otherwise)
+        O.dt = min(O.dt, 0.5 * ip2.stableDt)
+    O.run(200, True)
+    return all(math.isfinite(x) for b in O.bodies for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
+
+
+@contextlib.contextmanager
+def quiet_fd2():
+    """The law's time-step warnings go to fd 2 from C++: to a file, not the terminal."""
+    sys.stderr.flush()
+    saved, sink = os.dup(2), tempfile.TemporaryFile()
+    os.dup2(sink.fileno(), 2)
+    try:
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+
+
+with quiet_fd2():
+    # 1. Constructor keywords.
+    for _ in range(args.n * 3):
+        kw = {n: value_for(n) for n in rng.sample(NAMES, rng.randint(1, 8))}
+        try:
+            mat = w.MesoMat(**kw)
+        except (ValueError, TypeError) as e:
+            count("MesoMat(**kw)", "rejected clearly" if names_it(e, kw) else "other", f"{kw}: {e}")
+            continue
+        except Exception as e:  # noqa: BLE001 (what the fuzz is for)
+            count("MesoMat(**kw)", "other", f"{kw}: {type(e).__name__}: {e}")
+            continue
+        count("MesoMat(**kw)", "accepted and ran clean" if clean_collision(mat) else "other", f"{kw}: non-finite state")
+    # 2. Assignment and updateAttrs: a refused value leaves every attribute as it was.
+    for _ in range(args.n):
+        mat = w.MesoMat(k1=100.0, kp=500.0, kc=50.0, density=2000.0)
+        before = {n: getattr(mat, n) for n in NAMES}
+        kw = {n: value_for(n) for n in rng.sample(NAMES, rng.randint(1, 3))}
+        try:
+            if len(kw) == 1:
+                setattr(mat, *next(iter(kw.items())))
+            else:
+                mat.updateAttrs(kw)
+        except (ValueError, TypeError) as e:
+            after = {n: getattr(mat, n) for n in NAMES}
+            same = all(after[n] == before[n] or (after[n] != after[n] and before[n] != before[n]) for n in NAMES)
+            count("assignment", "rejected clearly" if names_it(e, kw) and same else "other", f"{kw}: {e}; unchanged {same}")
+            continue
+        count("assignment", "accepted and ran clean" if clean_collision(mat) else "other", f"{kw}: non-finite state")
+    # 3. The functor and the engine.
+    for _ in range(args.n // 2):
+        kw = rng.choice([{"leverArm": rng.choice(["reduced", "a12", "x", 3, None])},
+                         {"gammaB": value_for("gammaN"), "gammaBR": value_for("gammaN")},
+                         {"reference": rng.choice(["lab", "contacts", "world", 0])}])
+        cls = w.Ip2_MesoMat_MesoMat_MesoPhys if "leverArm" in kw else w.MesoBackgroundDamping
+        try:
+            cls(**kw)
+            count("Ip2/MesoBackgroundDamping", "accepted and ran clean")
+        except (ValueError, TypeError) as e:
+            count("Ip2/MesoBackgroundDamping", "rejected clearly" if names_it(e, kw) else "other", f"{kw}: {e}")
+    # 4. The theory functions.
+    funcs = [(theory.restitution_fa0, ("chi", "eta", "beta")), (theory.chi_c_c, ("eta", "beta")),
+             (theory.max_sticking_overlap, ("eta", "beta")), (theory.low_velocity_restitution, ("chi", "eta")),
+             (theory.pair_collision, ("v_inf", "k1", "kp", "kc", "phiF", "a12", "m_r")),
+             (theory.plastic_limit_velocity, ("k1", "kp", "phiF", "a12", "m_r")), (params.time_step, ("kp", "m_min")),
+             (theory.max_overlap, ("v_i", "k1", "kp", "phiF", "a12", "m_r"))]
+    for _ in range(args.n):
+        f, names = rng.choice(funcs)
+        a = [rng.choice(BAD[:9]) if rng.random() < 0.3 else 10 ** rng.uniform(-3, 1) for _ in names]
+        if f in (theory.pair_collision, theory.plastic_limit_velocity, theory.max_overlap) and rng.random() < 0.7:
+            a[names.index("phiF")] = rng.uniform(0.01, 1)
+        try:
+            r = f(*a)
+            vals = [getattr(r, k) for k in ("e", "en", "delta_max")] if hasattr(r, "e") else [r]
+            ok = all(isinstance(v, float) and math.isfinite(v) for v in vals)
+            count("theory", "accepted and ran clean" if ok else "other", f"{f.__name__}{tuple(a)} = {vals}")
+        except ValueError as e:
+            count("theory", "rejected clearly" if names_it(e, list(names) + ["interpolation"]) else "other", f"{f.__name__}{tuple(a)}: {e}")
+    # 5. Damaged save files: a truncated or edited file is refused by O.load or loads a valid scene.
+    tmp = tempfile.mkdtemp(prefix="fuzz-")
+    clean_collision(w.MesoMat(k1=100.0, kp=500.0, kt=50.0, kr=20.0, muR=0.1, frictionAngle=0.3))
+    good = os.path.join(tmp, "good.xml")
+    O.save(good)
+    text = open(good).read()
+    for k in range(args.n // 2):
+        if k % 2:
+            damaged = text[: rng.randint(0, len(text) - 1)]
+        else:  # a number of a material or contact replaced
+            tags = ["k1", "kp", "kc", "phiF", "density", "deltaMax", "tangential", "radius1", "kt"]
+            tag = rng.choice(tags)
+            bad = rng.choice(["-1", "nan", "inf", "0", "1e308", "abc"])
+            damaged = text.replace(f"<{tag}>", f"<{tag}>{bad}", 1) if rng.random() < 0.5 else \
+                __import__("re").sub(f"<{tag}>[^<]*<", f"<{tag}>{bad}<", text, count=1)
+        path = os.path.join(tmp, f"d{k}.xml")
+        open(path, "w").write(damaged)
+        try:
+            O.load(path)
+        except Exception:  # noqa: BLE001 (refused: the scene stays as it was)
+            count("save files", "rejected clearly")
+            continue
+        try:
+            O.run(50, True)
+            ok = all(math.isfinite(x) for b in O.bodies for x in tuple(b.state.pos) + tuple(b.state.vel))
+        except Exception as e:  # noqa: BLE001
+            ok = False
+            damaged = str(e)
+        count("save files", "accepted and ran clean" if ok else "other", f"file {k}: loaded, then not clean")
+    # 6. Command-line values of the tablet scripts (checked before any work).
+    for _ in range(args.n // 2):
+        fig = rng.choice(campaign.FIGURES)
+        opt = rng.choice(["--amplitudes", "--periods", "--speed", "--kc-over-kp", "--n", "--slow-amplitudes"])
+        val = rng.choice(["0.1", "0.2,0.3", "inf", "nan", "-1", "abc", "1e-6", "10", "3", "1e9", "0", "0.05,x"])
+        argv = ["--out", os.path.join(tmp, "cli"), opt, val] + (["--quick"] if rng.random() < 0.5 else [])
+        err = io.StringIO()
+        try:
+            with contextlib.redirect_stderr(err):
+                campaign.parse_args(fig, argv)
+            count("CLI values", "accepted and ran clean")
+        except SystemExit as e:
+            msg = err.getvalue()
+            count("CLI values", "rejected clearly" if e.code == 2 and opt.split("=")[0] in msg else "other", f"{fig} {argv}: {msg}")
+
+total = {k: sum(v[k] for v in tally.values()) for k in ("rejected clearly", "accepted and ran clean", "other")}
+summary = {"command": "yade -j1 -n -x scripts/fuzz_inputs.py " + " ".join(sys.argv[1:]), "seed": args.seed,
+           "inputs": sum(total.values()), "total": total, "by_category": tally, "others": others[:50]}
+print(json.dumps(summary, indent=1))
+if args.out:
+    with open(args.out, "w") as f:
+        json.dump(summary, f, indent=1)
+sys.exit(1 if total["other"] else 0)
