@@ -31,7 +31,7 @@ struct ElementParams {
 	bool   active() const { return k > 0 || gamma > 0; }
 };
 
-// What a material declares (MODEL.md §2); SI units.
+// What a material declares (docs/model.md §2); SI units.
 struct MaterialParams {
 	double          k1     = 1e2;  // plastic loading stiffness [N/m]
 	double          kp     = 5e2;  // elastic limit stiffness [N/m], >= k1
@@ -64,7 +64,7 @@ void validate(const MaterialParams& m);
 // Harmonic mean 2xy/(x+y) (0 if either is 0), without overflow for any finite x, y >= 0; x for x == y.
 double harmonicMean(double x, double y);
 
-// The parameters of one material pair (MODEL.md §8): the same for every contact of that pair,
+// The parameters of one material pair (docs/model.md §8): the same for every contact of that pair,
 // so YADE contacts share one copy (a contact's memory is what bulk runs pay for, per step).
 struct PairParams {
 	// Hot: what Law2::go() reads every step, flags first.

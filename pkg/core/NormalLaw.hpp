@@ -1,4 +1,4 @@
-// The normal force of the meso-particle law (MODEL.md §3–5): hysteretic contact force with the
+// The normal force of the meso-particle law (docs/model.md §3–5): hysteretic contact force with the
 // exact history update, non-contact adhesion, viscous damping, and the per-contact energy
 // bookkeeping. Header-only so that it inlines into Law2::go(); no YADE here.
 #pragma once
@@ -65,7 +65,7 @@ MESO_INLINE double deltaMaxThrough(const PairParams& p, const PairGeometry& g, d
 	return g.deltaMaxP() * s * s;
 }
 
-// Hysteretic contact force at overlap delta; updates the history first (MODEL.md §3 order).
+// Hysteretic contact force at overlap delta; updates the history first (docs/model.md §3 order).
 MESO_HOT double hystereticForce(const PairParams& p, const PairGeometry& g, NormalHistory& h, double delta)
 {
 	if (delta <= 0) { // mechanical contact over: the next one starts new

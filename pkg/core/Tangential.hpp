@@ -1,4 +1,4 @@
-// Sliding, rolling and torsion resistance of Luding 2008 (LUDING2008.md): one spring-dashpot-
+// Sliding, rolling and torsion resistance of Luding 2008 (docs/model.md §10): one spring-dashpot-
 // Coulomb element used three times, plus the contact kinematics. Header-only; Eigen, no YADE.
 #pragma once
 #include <Eigen/Core>
@@ -40,7 +40,7 @@ MESO_HOT double magnitude(double v) { return std::abs(v); }
 MESO_HOT double squared(const Vec3& v) { return dot(v, v); }
 MESO_HOT double squared(double v) { return v * v; }
 
-// One step of the spring-dashpot-Coulomb element (LUDING2008.md, steps 1-4), V = Vec3 or double.
+// One step of the spring-dashpot-Coulomb element (docs/model.md §10), V = Vec3 or double.
 // The spring is advanced by v dt first (so the force belongs to this step's configuration, as
 // the normal law does), then the trial force -k xi - gamma v is compared with the Coulomb limit;
 // beyond it the force is the dynamic limit muD * level along the trial direction and the spring
@@ -109,7 +109,7 @@ struct ContactRotation {
 MESO_INLINE void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
 // Arms from the centres to the contact point (a - delta/2 for a sphere, 0 for a wall, box or
-// facet) and the lever arm a'_12 of rolling and torsion (LUDING2008.md).
+// facet) and the lever arm a'_12 of rolling and torsion (docs/model.md §10).
 struct ContactArms {
 	double arm1 = 0, arm2 = 0, lever = 0;
 };

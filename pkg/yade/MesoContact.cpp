@@ -299,7 +299,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	// Law2::go() relies on it: a pair with tangential mechanisms gets the class that holds the springs.
 	auto phys        = p.tangential ? shared_ptr<MesoPhys>(new MesoTangentialPhys()) : shared_ptr<MesoPhys>(new MesoPhys());
 	phys->pairParams = params;
-	// Against a wall, box or facet a12 is the limit 2 a of the formula (MODEL.md §1); the radii
+	// Against a wall, box or facet a12 is the limit 2 a of the formula (docs/model.md §1); the radii
 	// those geometries report are not used, they differ between YADE's Ig2 functors.
 	phys->geometry               = meso::pairGeometry(p, sphereRadius(I->getId1(), scene), sphereRadius(I->getId2(), scene));
 	phys->kn                     = p.kp;

@@ -1,7 +1,7 @@
 """Closed-form theory of the meso-particle contact model (Singh, Magnanimo & Luding).
 
 Equation numbers are those of the long paper ("A contact model for sticking of adhesive
-meso-particles"); see MODEL.md §6. Plain Python (math only): importable anywhere.
+meso-particles"); see docs/model.md §6. Plain Python (math only): importable anywhere.
 
 Two layers:
 - dimensionless forms for fa = 0 (Eqs. 32-40, Appendix A, C, D) in terms of the plasticity

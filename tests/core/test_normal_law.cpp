@@ -1,5 +1,5 @@
 // Every branch and transition of the hysteretic normal law, the adhesion modes and the energy
-// bookkeeping, against values derived by hand from MODEL.md §3–5 (not from the code under test).
+// bookkeeping, against values derived by hand from docs/model.md §3–5 (not from the code under test).
 #include "NormalLaw.hpp"
 #include <gtest/gtest.h>
 #include <cmath>

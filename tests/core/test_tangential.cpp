@@ -1,5 +1,5 @@
 // The spring-dashpot-Coulomb element, the rotation of springs with the contact and the contact
-// kinematics, against hand-derived values (LUDING2008.md).
+// kinematics, against hand-derived values (docs/model.md §10).
 #include "Tangential.hpp"
 #include <gtest/gtest.h>
 #include <cmath>

@@ -1,5 +1,5 @@
-"""The closed-form theory against the reference values of MODEL.md §6 and against an
-independent numerical integration of the force law written here from MODEL.md §3-4."""
+"""The closed-form theory against the reference values of docs/model.md §6 and against an
+independent numerical integration of the force law written here from docs/model.md §3-4."""
 import math
 import unittest
 
@@ -60,7 +60,7 @@ def integrate_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf,
 
 
 class ReferenceValues(unittest.TestCase):
-    """MODEL.md §6, eta = 4, beta = 1."""
+    """docs/model.md §6, eta = 4, beta = 1."""
 
     def test_sticking_window(self):
         self.assertAlmostEqual(theory.chi_c_b(4, 1), 0.5, places=12)

@@ -1,4 +1,4 @@
-# ctest (inside yade): pair collisions against the closed form, MODEL.md §6, over all four
+# ctest (inside yade): pair collisions against the closed form, docs/model.md §6, over all four
 # regimes; eta = 4, beta = 1 and three parameter sets of our own (unequal radii, unlike
 # materials); fa > 0 in both adhesion modes; both k2 interpolations; sticking overlaps.
 import math
