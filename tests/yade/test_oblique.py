@@ -69,7 +69,7 @@ def rigid_rotation(steps_per_contact, rate):
     i = O.interactions[s.ids[0], s.ids[1]]
     b1, b2 = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
     at_rest = b1.vel.norm() + b2.vel.norm() < 1e-8 and i.isReal and isinstance(i.geom, wr.ScGeom6D)
-    level = i.phys.hystereticForce + i.phys.kc * i.geom.penetrationDepth
+    level = i.phys.hystereticForce + i.phys.viscousForce + i.phys.kc * i.geom.penetrationDepth  # the Coulomb level
     omega = Vector3(0.3, -0.5, 0.8) * rate  # rad/s, about an axis oblique to the normal
     c = 0.5 * (b1.pos + b2.pos)
     for b in (b1, b2):

@@ -56,7 +56,8 @@ for moment in ("loading", "kc-branch", "tail"):
         direct = snapshot()
         O.load(path)
         loaded_hist = snapshot()[1]
-        loaded_class = type(O.interactions[0, 1].phys).__name__
+        if moment == "loading" and ext == ".yade.gz":  # checked with the shared parameters below
+            loaded_class = type(O.interactions[0, 1].phys).__name__
         for _ in range(3000):
             O.step()
         resumed = snapshot()
