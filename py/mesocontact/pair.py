@@ -9,6 +9,7 @@ import math
 from dataclasses import dataclass, field
 
 from . import params as _params
+from . import scene as _scene
 from . import theory as _theory
 
 try:
@@ -88,7 +89,7 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     _params._positive("radius2", radius2)
     _params._positive("steps_per_contact", steps_per_contact)
     _check_step(dt, gap)
-    _reset()
+    _scene.reset()
     m1, m2, mixed = _materials(material, material2, density)
     delta_a = mixed["deltaA"]
     mass1, mass2 = _params.sphere_mass(radius1, m1.density), _params.sphere_mass(radius2, m2.density)
@@ -117,14 +118,6 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1, start_gap=start_gap, mixed=mixed)
 
 
-def _reset():
-    """O.reset() keeping O.tags (yade-batch puts the job's description and parameters there)."""
-    tags = {k: O.tags[k] for k in O.tags.keys()}
-    O.reset()
-    for k, v in tags.items():
-        O.tags[k] = v
-
-
 def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0, kind="box", six_d=False, dt=None,
                steps_per_contact=2000, track_energy=False, spin=(0, 0, 0), tangential_velocity=(0, 0, 0), gap=None,
                gravity=(0, 0, 0)):
@@ -145,7 +138,7 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
         raise ValueError("six_d = True needs kind 'box' or 'facet': YADE has no ScGeom6D functor for Wall")
     _params._positive("steps_per_contact", steps_per_contact)
     _check_step(dt, gap)
-    _reset()
+    _scene.reset()
     m, w, mixed = _materials(material, wall_material, density)
     delta_a = mixed["deltaA"]
     mass = _params.sphere_mass(radius, m.density)

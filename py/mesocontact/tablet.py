@@ -29,6 +29,7 @@ except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.tablet needs YADE: run it inside `yade`") from _exc
 
 from . import params as _params
+from . import scene as _scene
 
 D0 = 0.01          # mean primary-particle diameter [mm]
 DENSITY = 2.0      # 2000 kg/m^3 in mg/mm^3
@@ -136,7 +137,7 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF"
     radii = _radii(int(n), rel_std, rng)
     volume = sum(4.0 / 3.0 * math.pi * r ** 3 for r in radii)
     side = (volume / solid_fraction) ** (1.0 / 3.0)
-    O.reset()
+    _scene.reset()
     O.materials.append(_w.MesoMat(**mould_material(material)))
     O.materials.append(_w.MesoMat(**particles))
     thick = 0.5 * D0

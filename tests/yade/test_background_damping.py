@@ -104,15 +104,21 @@ check(np.abs(f[:9]).max() <= 1e-12 * GB * 0.1 and np.abs(t[:9]).max() <= 1e-12 *
       f"layer moving with its wall: no drag (|F| <= {np.abs(f[:9]).max():.1e})")
 check(np.abs(f[9]).max() == 0 and np.abs(t[9]).max() == 0, "a sphere without contacts: no drag")
 
-# Bad attributes are rejected, naming them.
+# Bad attributes are rejected, naming them: in the constructor and on assignment (where the
+# engine keeps its previous value).
 for attr, value in (("gammaB", -1.0), ("gammaB", math.inf), ("gammaBR", math.nan), ("reference", "walls")):
-    O.reset()
-    O.engines = [w.MesoBackgroundDamping(**{attr: value})]
     try:
-        O.step()
-        check(False, f"{attr} = {value!r} rejected")
-    except Exception as e:
-        check(attr in str(e) and "invalid" in str(e), f"{attr} = {value!r} rejected: {e}")
+        w.MesoBackgroundDamping(**{attr: value})
+        check(False, f"{attr} = {value!r} rejected by the constructor")
+    except ValueError as e:
+        check(attr in str(e) and "invalid" in str(e), f"{attr} = {value!r} rejected by the constructor: {e}")
+    engine = w.MesoBackgroundDamping(gammaB=1.0, gammaBR=2.0, reference="contacts")
+    try:
+        setattr(engine, attr, value)
+        check(False, f"{attr} = {value!r} rejected on assignment")
+    except ValueError as e:
+        kept = (engine.gammaB, engine.gammaBR, engine.reference) == (1.0, 2.0, "contacts")
+        check(attr in str(e) and kept, f"{attr} = {value!r} rejected on assignment, the engine unchanged: {e}")
 
 # Decay: a sphere held between two fixed spheres (overlap 1e-9 mm, no tangential mechanisms)
 # moving across the line of centres and spinning about it, among neighbours at rest.
