@@ -8,19 +8,13 @@
 #   (1 - gamma dt/m)^N, within 1e-3 (the sandwich's contact force across the line of centres
 #   stays below 1e-4 of the drag).
 import math
-import sys
 
 import numpy as np
 from yade import O, Vector3, utils
 from yade import wrapper as w
+from harness import check, finish
 
-failures = []
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
 
 
 R, GB, GBR = 0.005, 2e-4, 5e-5  # the tablet's units: mm, us, mg
@@ -142,7 +136,4 @@ check(abs(b.vel[1] / expect_v - 1) < 1e-3, f"velocity fluctuation decays at gamm
 check(abs(b.angVel[0] / expect_w - 1) < 1e-3, f"spin fluctuation decays at gamma_br a^2/I: w/w_leapfrog - 1 = {b.angVel[0] / expect_w - 1:.1e}")
 check(b.vel[1] / v0 < 0.5, f"and it did decay (v/v0 = {b.vel[1] / v0:.3f})")
 
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

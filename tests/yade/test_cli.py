@@ -3,15 +3,14 @@
 # option, within seconds, and leaves nothing behind; --help prints the usage.
 import os
 import subprocess
-import sys
 import tempfile
 import time
 
 import mesocontact  # noqa: E402  (the source tree's package: the scripts lie beside it)
+from harness import failures, finish
 
 scripts = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__)))), "scripts")
 launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
-failures = []
 
 
 def run(script, *args):
@@ -57,7 +56,4 @@ print(("ok   " if ok else "FAIL ") + f"restitution_sweep.py --help: rc {rc}, {se
 if not ok:
     failures.append("restitution_sweep --help")
 
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

@@ -2,12 +2,11 @@
 # to 1e-4 of the initial kinetic energy at every step of a collision, with every mechanism
 # of the normal law on; and the hysteretic dissipation of a rebound equals the closed form
 # E_i (1 - e^2).
-import sys
 
 from yade import O
 from mesocontact import pair, params, theory
+from harness import failures, finish
 
-failures = []
 r = 1.1e-3
 m_r = params.sphere_mass(r, 2000) / 2
 fa = params.fa_from_alpha(0.42, 100, m_r, 0.01)
@@ -83,7 +82,4 @@ for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"
           ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0), flush=True)
     if not ok:
         failures.append(label)
-if failures:
-    print(f"{len(failures)} FAILED")
-    sys.exit(1)
-print("all passed")
+finish()

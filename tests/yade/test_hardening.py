@@ -18,14 +18,9 @@ from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom6D, Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator,
                           MesoMat, MesoPhys, MesoTangentialPhys)
+from harness import check, finish
 
-failures = []
 
-
-def check(ok, label, detail=""):
-    print(("ok   " if ok else "FAIL ") + label + (f": {detail}" if detail else ""), flush=True)
-    if not ok:
-        failures.append(label)
 
 
 A, RHO = 1e-3, 2000.0
@@ -276,5 +271,4 @@ O.tags["description"] = "job 1"
 pair.build(1e-3, 0.05, mat)
 check(O.tags["description"] == "job 1", "pair.build keeps O.tags (yade-batch's description)")
 
-print(f"{len(failures)} FAILED: {failures}" if failures else "all passed")
-sys.exit(1 if failures else 0)
+finish()

@@ -7,12 +7,11 @@
 # - stick (mu >= (kt/k1)(v_t/v_n)): the contact-point tangential velocity is exactly reversed;
 # - slide (v_t >> v_n): the tangential impulse is mu (1 + e_n) m v_n with e_n = 1.
 import math
-import sys
 
 from yade import O, Vector3, Quaternion
 from mesocontact import pair, params
+from harness import failures, finish
 
-failures = []
 r, k1 = 1e-3, 1e4
 m = params.sphere_mass(r, 2000)
 kt = 2.0 / 7.0 * k1
@@ -95,7 +94,4 @@ print(("ok   " if ok else "FAIL ") + f"rigid rotation by 1 rad of a stuck pair (
       f"max |f_r| = {fast[1]:.1e}, |f_o| = {fast[2]:.1e}")
 if not ok:
     failures.append("rigid rotation")
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

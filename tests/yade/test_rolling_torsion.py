@@ -5,12 +5,11 @@
 #     rolling (kr) and torsion (ko): the spring torques at small angles.
 # level = f_n + kc delta; a' = a - delta/2 is the lever arm against a wall ('reduced').
 import math
-import sys
 
 from yade import O, Vector3, wrapper as w
 from mesocontact import pair, params
+from harness import failures, finish
 
-failures = []
 r = 1e-3
 m = params.sphere_mass(r, 2000)
 I = 0.4 * m * r * r
@@ -104,7 +103,4 @@ for label, axis, k_spring, mu in (("rolling", 1, mat["kr"], mat["muR"]), ("torsi
           f"rel. error {err:.1e}", flush=True)
     if not ok:
         failures.append(label + " spring")
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

@@ -3,18 +3,17 @@
 # binary and XML formats, at three moments: loading, on the -kc branch after a history
 # reset, and in the pull-off tail after contact.
 import os
-import sys
 import tempfile
 
 from yade import O
 from mesocontact import pair, params, theory
+from harness import failures, finish
 
 r = 1.1e-3
 m_r = params.sphere_mass(r, 2000) / 2
 fa = params.fa_from_alpha(0.42, 100, m_r, 0.01)
 mat = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=1e-4)
 v = 1.5 * theory.plastic_limit_velocity(100, 500, 0.1, r, m_r, fa)
-failures = []
 
 
 def snapshot():
@@ -163,7 +162,4 @@ for reference in ("lab", "contacts"):
           f"(mesoBackground {direct.get('mesoBackground', 0):.9e} / {resumed.get('mesoBackground', 0):.9e})", flush=True)
     if not ok:
         failures.append(f"background drag energy after load ({reference})")
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

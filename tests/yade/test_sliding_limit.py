@@ -4,12 +4,11 @@
 # beyond the limit it accelerates at (F - mu_d (f_n + kc delta))/m. Rotation is blocked so the
 # sphere slides (a free sphere would roll).
 import math
-import sys
 
 from yade import O, wrapper as w
 from mesocontact import pair, params, theory
+from harness import failures, finish
 
-failures = []
 RAMP = {}
 
 
@@ -78,7 +77,4 @@ for label, mat in cases:
           f"sliding |f_t| / (mu_d level) - 1 = {dyn_err:.1e}; acceleration rel. error = {acc_err:.1e}", flush=True)
     if not ok:
         failures.append(label)
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

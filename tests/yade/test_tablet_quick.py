@@ -7,21 +7,15 @@
 import glob
 import math
 import os
-import sys
 import tempfile
 
 import numpy as np
 from yade import O, utils
 from yade import wrapper as w
 from mesocontact import campaign, outputs, snapshots, tablet, uniaxial
+from harness import check, finish
 
-failures = []
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
 
 
 # 1. The crack measures on known pictures (seen from -y). A ring of 12 touching spheres encloses
@@ -172,7 +166,4 @@ for p in (pngs[0], pngs[-1]):
           f"{os.path.basename(p)}: a picture of shaded spheres ({coloured.mean():.0%} coloured, {shades} shades, red {red:.0%}, blue {blue:.1%})")
 check(len({mpimg.imread(p).shape for p in pngs}) == 1, "pull snapshots share one frame")
 
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

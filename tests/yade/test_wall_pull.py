@@ -1,10 +1,9 @@
 # ctest (inside yade): an adhesive wall pulls a sphere along when it moves away.
-import sys
 
 from yade import O
 from mesocontact import pair
+from harness import failures, finish
 
-failures = []
 r = 1e-3
 # An adhesive wall pulls a sphere: settle on a box, then move the box down slowly.
 mat = dict(k1=1e3, kp=5e3, kc=1e3, phiF=0.1, fa=2e-3, kca=1e3, adhesion="jumpIn", gammaN=0.1)
@@ -17,7 +16,4 @@ ok = O.interactions.has(s.ids[0], s.ids[1]) and abs(ball.vel[2] - (-0.01)) < 1e-
 print(("ok   " if ok else "FAIL ") + f"adhesive wall pulling: sphere velocity {ball.vel[2]:.5f} m/s following the wall's -0.01 m/s")
 if not ok:
     failures.append("wall pull")
-if failures:
-    print(f"{len(failures)} FAILED: {failures}")
-    sys.exit(1)
-print("all passed")
+finish()

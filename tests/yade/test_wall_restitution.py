@@ -2,11 +2,11 @@
 # (closed form with a12 = 2a and the sphere's mass as m_r) to |de| <= 1e-3 in all four regimes,
 # for boxes (ScGeom and ScGeom6D), walls and facets, with the wall's own material mixed in.
 import math
-import sys
 
 from mesocontact import pair, params, theory
+from harness import failures, finish
 
-failures, worst, regimes = [], 0.0, set()
+worst, regimes = 0.0, set()
 r = 1.1e-3
 m = params.sphere_mass(r, 2000)
 base = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)
@@ -57,7 +57,4 @@ print(f"worst |de| = {worst:.2e}; regimes seen: {sorted(regimes)}")
 needed = {"low-velocity sticking", "rebound", "high-velocity sticking", "second rebound"}
 if not needed <= regimes:
     failures.append(f"regimes not covered: {needed - regimes}")
-if failures:
-    print(f"{len(failures)} FAILED")
-    sys.exit(1)
-print("all passed")
+finish()
