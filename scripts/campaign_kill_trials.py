@@ -101,8 +101,7 @@ def main():
                                                           for p in t["problems_before_sweep"]) for t in trials)}
     print(json.dumps({k: v for k, v in summary.items() if k != "trials"}, indent=1))
     if a.out:
-        with open(a.out, "w") as f:
-            json.dump(summary, f, indent=1)
+        outputs.write_atomic(a.out, json.dumps(summary, indent=1))
     ok = summary["problems_after_sweep"] == 0 and summary["incomplete_results_before_sweep"] == 0 and summary["other_job_failed"] == 0
     sys.exit(0 if ok else 1)
 

@@ -19,7 +19,7 @@ import tempfile
 from yade import O, utils
 from yade import wrapper as w
 
-from mesocontact import campaign, params, theory
+from mesocontact import campaign, outputs, params, theory
 
 ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/fuzz_inputs.py")
 ap.add_argument("--n", type=int, default=200, help="inputs per category")
@@ -208,6 +208,5 @@ summary = {"command": "yade -j1 -n -x scripts/fuzz_inputs.py " + " ".join(sys.ar
            "inputs": sum(total.values()), "total": total, "by_category": tally, "others": others[:50]}
 print(json.dumps(summary, indent=1))
 if args.out:
-    with open(args.out, "w") as f:
-        json.dump(summary, f, indent=1)
+    outputs.write_atomic(args.out, json.dumps(summary, indent=1))
 sys.exit(1 if total["other"] else 0)

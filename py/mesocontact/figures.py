@@ -2,6 +2,7 @@
 ``yade``). Each function writes a CSV of the simulated points and a PNG with the simulation
 over the theory, prints progress, and returns the rows."""
 import csv
+import io
 import math
 import os
 import time
@@ -11,7 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from . import pair, params, theory  # noqa: E402
+from . import outputs, pair, params, theory  # noqa: E402
 
 # Fig. 5-8 parameters (docs/model.md §9): k1 = 1e2, kp = 5e2, kc = 1e2 N/m, radius 1.1 mm, 2000 kg/m3.
 PAPER = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)
@@ -23,10 +24,11 @@ def _m_r():
 
 
 def _write_csv(path, header, rows):
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        w.writerows(rows)
+    text = io.StringIO(newline="")
+    w = csv.writer(text)
+    w.writerow(header)
+    w.writerows(rows)
+    outputs.write_atomic(path, text.getvalue())  # a stopped job leaves the old file or the new one
 
 
 def _progress(tag, i, n, t0):
@@ -66,7 +68,7 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     ax.set_title("Fig. 5: jump-in adhesion, η = 4, β = 1")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "fig5_restitution_adhesive.png"), dpi=150)
+    outputs.savefig_atomic(fig, os.path.join(outdir, "fig5_restitution_adhesive.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
                ["alpha", "fa_N", "zeta", "v_inf_m_s", "e_yade", "e_theory", "stuck"], rows)
@@ -103,7 +105,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "fig6_restitution.png"), dpi=150)
+    outputs.savefig_atomic(fig, os.path.join(outdir, "fig6_restitution.png"), dpi=150)
     plt.close(fig)
 
     lo, hi = theory.chi_c_b(eta, beta), theory.chi_c_c(eta, beta)
@@ -119,7 +121,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "fig8_sticking_overlap.png"), dpi=150)
+    outputs.savefig_atomic(fig, os.path.join(outdir, "fig8_sticking_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig6_restitution.csv"),
                ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
@@ -155,7 +157,7 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "fig7_force_overlap.png"), dpi=150)
+    outputs.savefig_atomic(fig, os.path.join(outdir, "fig7_force_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),
                ["chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)

@@ -35,6 +35,14 @@ def write_atomic(path, text):
     os.replace(tmp, path)
 
 
+def savefig_atomic(fig, path, **kw):
+    """A matplotlib figure saved under a temporary name (same extension), then renamed."""
+    root, ext = os.path.splitext(path)
+    tmp = f"{root}.tmp-{os.getpid()}-{uuid.uuid4().hex[:8]}{ext}"
+    fig.savefig(tmp, **kw)
+    os.replace(tmp, path)
+
+
 def _on_sigterm(signum, frame):
     for d in list(_OPEN):
         shutil.rmtree(d, ignore_errors=True)

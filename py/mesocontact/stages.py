@@ -66,8 +66,8 @@ def _load(p, config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
     try:
         O.load(p)
-    except RuntimeError as e:
-        raise _Unreadable(f"{p}: {e}")
+    except (RuntimeError, MemoryError) as e:  # MemoryError: a file of an earlier version of the plugin's classes
+        raise _Unreadable(f"{p}: {type(e).__name__}: {e}")
     n = len(_tablet.sphere_ids())
     if n != config["n"] or not {"left", "right"} <= set(_tablet.wall_ids()):
         raise _Unreadable(f"{p}: not the tablet its JSON describes ({n} spheres, walls {sorted(_tablet.wall_ids())})")
