@@ -7,7 +7,7 @@
 
 from yade import O, utils, Vector3
 from yade import wrapper as w
-from harness import failures, finish
+from harness import check, finish
 
 a1, a2 = 1.0e-3, 0.7e-3
 delta = 0.06 * a2
@@ -41,9 +41,7 @@ for lever in ("reduced", "a12"):
     err = max((got1 - expect1).norm(), (got2 - expect2).norm()) / scale
     parts = fT.norm() > 0 and i.phys.rollingForce.norm() > 0 and abs(i.phys.twistForce) > 0
     ok = parts and err <= 1e-12 and abs(i.phys.leverArm / lever_arm - 1) <= 1e-14 and abs(d / delta - 1) < 0.01
-    print(("ok   " if ok else "FAIL ") + f"leverArm '{lever}': delta/a2 = {d / a2:.4f}, torques against arm_i = a_i - delta/2, "
-          f"a' = {lever_arm:.6e}: rel. error {err:.1e} (|T1| {got1.norm():.3e}); sliding {fT.norm():.2e}, rolling "
-          f"{i.phys.rollingForce.norm():.2e}, torsion {abs(i.phys.twistForce):.2e}", flush=True)
-    if not ok:
-        failures.append(lever)
+    check(ok, f"leverArm '{lever}'", f"delta/a2 = {d / a2:.4f}, torques against arm_i = a_i - delta/2, a' = {lever_arm:.6e}: "
+          f"rel. error {err:.1e} (|T1| {got1.norm():.3e}); sliding {fT.norm():.2e}, rolling {i.phys.rollingForce.norm():.2e}, "
+          f"torsion {abs(i.phys.twistForce):.2e}")
 finish()

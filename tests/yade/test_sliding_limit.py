@@ -7,7 +7,7 @@ import math
 
 from yade import O, wrapper as w
 from mesocontact import pair, params, theory
-from harness import failures, finish
+from harness import check, failures, finish
 
 RAMP = {}
 
@@ -72,9 +72,7 @@ for label, mat in cases:
     acc_err = abs(acc - acc_th) / acc_th
     dyn_err = abs(ph.shearForce.norm() - mu_d * lv) / (mu_d * lv)
     ok = stat_err <= 1e-3 and onset_err <= 1e-3 and acc_err <= 1e-3 and dyn_err <= 1e-3
-    print(("ok   " if ok else "FAIL ") + f"{label}: level f_n + kc delta = {level:.4e} N (kc delta = {ph.kc * i.geom.penetrationDepth:.4e}); "
+    check(ok, label, f"level f_n + kc delta = {level:.4e} N (kc delta = {ph.kc * i.geom.penetrationDepth:.4e}); "
           f"peak |f_t| / (mu_s level) - 1 = {stat_err:.1e}; applied pull at the peak / (mu_s level) - 1 = {onset_err:.1e}; "
-          f"sliding |f_t| / (mu_d level) - 1 = {dyn_err:.1e}; acceleration rel. error = {acc_err:.1e}", flush=True)
-    if not ok:
-        failures.append(label)
+          f"sliding |f_t| / (mu_d level) - 1 = {dyn_err:.1e}; acceleration rel. error = {acc_err:.1e}")
 finish()
