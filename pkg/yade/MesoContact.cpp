@@ -368,6 +368,17 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 	return true;
 }
 
+void Law2_ScGeom_MesoPhys_Meso::warnLateDetection(const Interaction* I, Real delta, Real deltaA)
+{
+	if (!rangeWarned.exchange(true))
+		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2()
+		          << " with reversible non-contact adhesion was first seen already in contact (overlap " << delta
+		          << " m), so its pull-in over the range " << -deltaA
+		          << " m was missed: detect pairs at that gap (Bo1_Sphere_Aabb.aabbEnlargeFactor and "
+		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.pair sets them). "
+		          << "(Warned once.)" << std::endl;
+}
+
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	const auto* geom = static_cast<const ScGeom*>(ig.get());
@@ -385,6 +396,10 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
 	const Real vn = meso::dot(relVel, n); // d(delta)/dt
+	// The pull-in of reversible adhesion acts across the gap: a pair first seen in contact, which was
+	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing).
+	if (std::isnan(phys->lastDelta) && p.adhesion == meso::Adhesion::Reversible && delta > 0 && delta - vn * scene->dt > p.deltaA) [[unlikely]]
+		warnLateDetection(I, delta, p.deltaA);
 
 	meso::NormalForce f;
 	if (scene->trackEnergy) {

@@ -109,7 +109,7 @@ public:
 		.add_property("delta0P",&MesoPhys::getDelta0P,"Plastic overlap $\\phi_f a_{12}$ on the limit branch (Eq. 11) [m].")
 		.add_property("deltaA",&MesoPhys::getDeltaA,"Range of the non-contact force $-f_a/k_{ca}$ (0 without adhesion) [m].")
 		.add_property("a12",&MesoPhys::getA12,"Reduced radius $2a_1a_2/(a_1+a_2)$ ($2a$ against a wall) [m].")
-		.add_property("touched",&MesoPhys::getTouched,"Whether the pair has been in mechanical contact (starts the jump-in adhesion).")
+		.add_property("touched",&MesoPhys::getTouched,"For 'jumpIn' adhesion: whether the pair has been in mechanical contact (it starts the adhesive force). Kept only for that mode: False for 'none' and 'reversible'.")
 		.add_property("k1",&MesoPhys::getK1,"Mixed loading stiffness [N/m].")
 		.add_property("kp",&MesoPhys::getKp,"Mixed limit stiffness [N/m].")
 		.add_property("kc",&MesoPhys::getKc,"Mixed adhesive stiffness [N/m].")
@@ -251,7 +251,8 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	std::mutex        energyMutex;
 	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
 	void              registerEnergies(bool tangential);
-	std::atomic<bool> foreignWarned{ false };
+	std::atomic<bool> foreignWarned{ false }, rangeWarned{ false };
+	void              warnLateDetection(const Interaction* I, Real delta, Real deltaA); // adhesion needs detection at the gap
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
 
 public:

@@ -235,6 +235,18 @@ with Stderr() as err:
     O.run(20, True)
 check("exceeds" not in err.text, "O.dt below it: no warning")
 
+# #15: reversible adhesion without detection at the gap warns once; with it (pair.build) it does not.
+rev = dict(k1=100.0, kp=500.0, fa=1e-5, kca=50.0, adhesion="reversible", density=RHO)
+two_spheres(MesoMat(**rev), overlap=-5e-6, v=0.05, dt=1e-6)  # a gap beyond the range 2e-7; YADE's default detection
+with Stderr() as err:
+    O.run(300, True)
+check("pull-in over the range" in err.text and err.text.count("pull-in") == 1, "reversible adhesion detected only in contact: warned")
+from mesocontact import pair as _pair  # noqa: E402
+
+with Stderr() as err:
+    _pair.collide(_pair.build(A, 0.05, rev))
+check("pull-in" not in err.text, "reversible adhesion detected at the gap (pair.build): no warning")
+
 # 8 and 12. The pair drivers check their arguments and their own results.
 from mesocontact import pair  # noqa: E402
 
