@@ -116,28 +116,6 @@ double stableStep(double k, double gamma, double invMass)
 	return 2 / w / (std::sqrt(1 + z * z) + z); // = (2/w)(sqrt(1+z^2) - z), without the cancellation
 }
 
-double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1, double invInertia2,
-                  const char** which)
-{
-	double best = stableStep(p.kp, p.gammaN, invMass1 + invMass2);
-	*which      = "normal";
-	auto consider = [&](double dt, const char* name) {
-		if (dt < best) {
-			best   = dt;
-			*which = name;
-		}
-	};
-	if (p.slides) { // the contact point moves with both spheres' spins too (arms ~ radii)
-		const double inv = invMass1 + invMass2 + g.radius1 * g.radius1 * invInertia1 + g.radius2 * g.radius2 * invInertia2;
-		consider(stableStep(p.sliding.k, p.sliding.gamma, inv), "sliding");
-	}
-	const double lever = p.leverFactor * (g.radius1 > 0 && g.radius2 > 0 ? g.radius1 * g.radius2 / (g.radius1 + g.radius2) : std::max(g.radius1, g.radius2));
-	const double invRot = lever * lever * (invInertia1 + invInertia2); // v_r = a' (w1 - w2), torque a' f on each
-	if (p.rolls) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
-	if (p.twists) consider(stableStep(p.twisting.k, p.twisting.gamma, invRot), "torsion");
-	return best;
-}
-
 PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)
 {
 	const bool            one = mat1.dominant && !mat2.dominant, two = mat2.dominant && !mat1.dominant;

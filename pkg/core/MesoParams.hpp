@@ -115,11 +115,4 @@ PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2);
 // 2 m/gamma for a dashpot alone; +inf without either or for an infinite mass (invMass = 0) [s].
 double stableStep(double k, double gamma, double invMass);
 
-// The stable step of a contact (the smallest over its normal limit branch kp with gamma0 and the
-// sliding, rolling and torsion elements that act). invMass1/2: 1/m of each body, invInertia1/2:
-// 1/(smallest principal moment) (0 for a body that does not move); a12 radii from g. Names the
-// element that limits it in *which (normal, sliding, rolling, torsion).
-double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1, double invInertia2,
-                  const char** which);
-
 } // namespace meso

@@ -122,6 +122,31 @@ MESO_HOT ContactArms contactArms(const PairParams& p, const PairGeometry& g, dou
 	return c;
 }
 
+// The stable step of a contact (the smallest over its normal limit branch kp with gamma0 and the
+// sliding, rolling and torsion elements that act), at first touch (delta = 0). invMass1/2: 1/m of
+// each body, invInertia1/2: 1/(smallest principal moment) (0 for a body that does not move). Names
+// the element that limits it in *which (normal, sliding, rolling, torsion).
+MESO_INLINE double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1,
+                              double invInertia2, const char** which)
+{
+	double best = stableStep(p.kp, p.gammaN, invMass1 + invMass2);
+	*which      = "normal";
+	auto consider = [&](double dt, const char* name) {
+		if (dt < best) {
+			best   = dt;
+			*which = name;
+		}
+	};
+	const ContactArms arms = contactArms(p, g, 0.0);
+	if (p.slides) // the contact point moves with both spheres' spins too
+		consider(stableStep(p.sliding.k, p.sliding.gamma, invMass1 + invMass2 + arms.arm1 * arms.arm1 * invInertia1 + arms.arm2 * arms.arm2 * invInertia2),
+		         "sliding");
+	const double invRot = arms.lever * arms.lever * (invInertia1 + invInertia2); // v_r = a' (w1 - w2), torque a' f on each
+	if (p.rolls) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
+	if (p.twists) consider(stableStep(p.twisting.k, p.twisting.gamma, invRot), "torsion");
+	return best;
+}
+
 // Relative velocities at a contact of body 1 with body 2; n points from 1 to 2 (YADE's normal).
 struct ContactVelocities {
 	Vec3   sliding; // v_t: tangential velocity of 1 relative to 2 at the contact point [m/s]

@@ -17,8 +17,8 @@ class MesoBackgroundDamping : public GlobalEngine {
 	std::vector<char>       isSphere;
 	void                    validate() const; // throws std::invalid_argument naming the attribute and value
 	void                    sumNeighbours();
-	Real                    validGammaB = 0, validGammaBR = 0;
-	std::string             validReference = "lab";
+	Real                    validGammaB = 0, validGammaBR = 0; // the attributes as last validated (constructor, postLoad)
+	std::string             validReference;
 
 public:
 	void        action() override;
@@ -36,7 +36,7 @@ public:
 		((std::vector<Vector3r>,prevTorque,,Attr::hidden,"The previous drag torques."))
 		((std::vector<int>,hasPrev,,Attr::hidden,"Whether a body got a drag at the previous step (1) or not (0)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy")),
-		/*ctor*/,
+		/*ctor*/ validGammaB = gammaB; validGammaBR = gammaBR; validReference = reference;,
 		/*py*/; MesoBackgroundDamping::registerChecked(_classObj)
 	);
 	// clang-format on

@@ -40,13 +40,15 @@ namespace {
 		                        { "gammaO", &MesoMat::gammaO, &meso::MaterialParams::gammaO },
 		                        { "muO", &MesoMat::muO, &meso::MaterialParams::muO } };
 	using pychecks::Kind;
-	const pychecks::Field mesoMatKeywords[]
-	        = { { "k1", Kind::Number },     { "kp", Kind::Number },         { "kc", Kind::Number },     { "phiF", Kind::Number },
-		    { "fa", Kind::Number },     { "kca", Kind::Number },        { "gammaN", Kind::Number }, { "phiD", Kind::Number },
-		    { "kt", Kind::Number },     { "gammaT", Kind::Number },     { "kr", Kind::Number },     { "gammaR", Kind::Number },
-		    { "muR", Kind::Number },    { "ko", Kind::Number },         { "gammaO", Kind::Number }, { "muO", Kind::Number },
-		    { "density", Kind::Number }, { "young", Kind::Number },     { "frictionAngle", Kind::Number },
-		    { "adhesion", Kind::Text }, { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag } };
+	// The other attributes a MesoMat validates (numericFields are numbers too).
+	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
+		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag } };
+	void checkMesoMatKeywords(const boost::python::dict& kw)
+	{
+		for (const Field& f : numericFields)
+			if (kw.has_key(f.name)) pychecks::number(f.name, kw[f.name]);
+		pychecks::checkKeywords(kw, otherKeywords);
+	}
 }
 
 void MesoMat::registerChecked(boost::python::object& cls)
@@ -119,7 +121,7 @@ void MesoMat::postLoad(MesoMat&)
 
 void MesoMat::updateAttrsChecked(const boost::python::dict& d)
 {
-	pychecks::checkKeywords(d, mesoMatKeywords);
+	checkMesoMatKeywords(d);
 	pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
 }
 
@@ -143,7 +145,7 @@ void MesoMat::setYoung(Real y)
 
 void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)
 {
-	pychecks::checkKeywords(kw, mesoMatKeywords); // a wrong type named before any is applied
+	checkMesoMatKeywords(kw); // a wrong type named before any is applied
 	// Apply all keywords first and check once, so that kp >= k1 or fa with kca can be given in any order.
 	deferChecks = true;
 	try {
@@ -307,6 +309,25 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	phys->tangensOfFrictionAngle = p.sliding.muS;
 	I->phys                      = phys;
 	checkTimeStep(*phys, *I);
+	if (p.adhesion == meso::Adhesion::Reversible) checkDetection(*phys, *I);
+}
+
+void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const Interaction& I)
+{
+	// The pull-in of reversible adhesion acts across the gap: a pair made already in contact, which was
+	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing).
+	const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
+	if (!geom || !(geom->penetrationDepth > 0)) return;
+	Vector3r relVel = Body::byId(I.getId1(), scene)->state->vel - Body::byId(I.getId2(), scene)->state->vel;
+	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I.cellDist);
+	const Real before = geom->penetrationDepth - relVel.dot(geom->normal) * scene->dt; // the overlap a step ago
+	if (before > phys.pair().deltaA && !rangeWarned.exchange(true))
+		std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: contact #" << I.getId1() << "+#" << I.getId2()
+		          << " with reversible non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
+		          << " m), so its pull-in over the range " << -phys.pair().deltaA
+		          << " m was missed: detect pairs at that gap (Bo1_Sphere_Aabb.aabbEnlargeFactor and "
+		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.pair sets them). "
+		          << "(Warned once.)" << std::endl;
 }
 
 void Ip2_MesoMat_MesoMat_MesoPhys::checkTimeStep(const MesoPhys& phys, const Interaction& I)
@@ -368,17 +389,6 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 	return true;
 }
 
-void Law2_ScGeom_MesoPhys_Meso::warnLateDetection(const Interaction* I, Real delta, Real deltaA)
-{
-	if (!rangeWarned.exchange(true))
-		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2()
-		          << " with reversible non-contact adhesion was first seen already in contact (overlap " << delta
-		          << " m), so its pull-in over the range " << -deltaA
-		          << " m was missed: detect pairs at that gap (Bo1_Sphere_Aabb.aabbEnlargeFactor and "
-		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.pair sets them). "
-		          << "(Warned once.)" << std::endl;
-}
-
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
 	const auto* geom = static_cast<const ScGeom*>(ig.get());
@@ -396,10 +406,6 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	Vector3r        relVel = s1->vel - s2->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
 	const Real vn = meso::dot(relVel, n); // d(delta)/dt
-	// The pull-in of reversible adhesion acts across the gap: a pair first seen in contact, which was
-	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing).
-	if (std::isnan(phys->lastDelta) && p.adhesion == meso::Adhesion::Reversible && delta > 0 && delta - vn * scene->dt > p.deltaA) [[unlikely]]
-		warnLateDetection(I, delta, p.deltaA);
 
 	meso::NormalForce f;
 	if (scene->trackEnergy) {

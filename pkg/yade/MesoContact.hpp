@@ -21,7 +21,7 @@ namespace yade {
 class MesoMat : public FrictMat {
 	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
 	std::string          validAdhesion = "none", validK2Interpolation = "linear";
-	Real                 validFrictionAngle = 0.5, validDensity = 1000, validYoung = 1e9; // the bases' defaults
+	Real                 validFrictionAngle = 0, validDensity = 0, validYoung = 0; // set with valid (constructor, postLoad)
 	bool                 deferChecks   = false; // set while the constructor applies its keywords
 	meso::MaterialParams parse() const;         // throws std::invalid_argument naming the parameter
 	unsigned long        revisionCount = 0;     // counts accepted changes: contacts made before keep the parameters they had
@@ -62,7 +62,7 @@ public:
 		((Real,gammaO,0,Attr::triggerPostLoad,"Torsion dashpot $\\gamma_o$ [kg/s]."))
 		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-]."))
 		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
-		createIndex(); valid = parse();,
+		createIndex(); valid = parse(); validFrictionAngle = frictionAngle; validDensity = density; validYoung = young;,
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 		.add_property("density",&MesoMat::getDensity,&MesoMat::setDensity,"Density of the material [kg/m³], finite and > 0 (checked on assignment).")
 		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law, read by :yref:`PWaveTimeStep`.")
@@ -217,8 +217,9 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 	std::map<std::tuple<const Material*, const Material*, bool>, Shared> sharedParams;
 	std::mutex                                                         sharedMutex;
 	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
-	std::atomic<bool>          dtWarned{ false };
+	std::atomic<bool>          dtWarned{ false }, rangeWarned{ false };
 	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I); // updates stableDt, warns once
+	void                       checkDetection(const MesoPhys& phys, const Interaction& I); // reversible adhesion: warns once if made in contact
 
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
@@ -251,8 +252,7 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	std::mutex        energyMutex;
 	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
 	void              registerEnergies(bool tangential);
-	std::atomic<bool> foreignWarned{ false }, rangeWarned{ false };
-	void              warnLateDetection(const Interaction* I, Real delta, Real deltaA); // adhesion needs detection at the gap
+	std::atomic<bool> foreignWarned{ false };
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
 
 public:

@@ -202,14 +202,14 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
 
     Refused before it starts (ValueError): no approach (v_inf = 0), a step budget above
     max_steps, an impact so hard that it would press the bodies more than the smaller radius
-    into each other (theory.max_overlap; the model, and YADE's geometry, stop making sense).
+    into each other (theory.pair_collision's delta_max; the model, and YADE's geometry, stop making sense).
     Checked after (RuntimeError): the pair never touched, or passed through each other.
     """
     if not s.v_inf > 0:
         raise ValueError(f"v_inf = {s.v_inf!r} is invalid for collide: the bodies must approach (> 0)")
     p = s.mixed
-    v_i2 = s.v_inf ** 2 + (p["fa"] ** 2 / (p["kca"] * s.m_r) if p["adhesion"] == "reversible" and p["fa"] > 0 else 0.0)
-    d_max = _theory.max_overlap(math.sqrt(v_i2), p["k1"], p["kp"], p["phiF"], s.a12, s.m_r, p["fa"])
+    d_max = _theory.pair_collision(s.v_inf, p["k1"], p["kp"], p["kc"], p["phiF"], s.a12, s.m_r, p["fa"],
+                                   p["kca"] if p["fa"] > 0 else math.inf, p["adhesion"], p["k2Interpolation"]).delta_max
     radius = min(r for r in s.radii if math.isfinite(r))
     if d_max > radius:
         raise ValueError(f"v_inf = {s.v_inf!r} is too fast for this pair: the collision would reach the overlap "

@@ -28,6 +28,7 @@ try:
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.tablet needs YADE: run it inside `yade`") from _exc
 
+from . import outputs as _outputs
 from . import params as _params
 from . import scene as _scene
 
@@ -330,9 +331,7 @@ def save_atomic(path, info):
     tmp = f"{path[:-len('.yade.gz')]}.tmp-{os.getpid()}-state.yade.gz"  # outputs.sweep knows the pattern
     O.save(tmp)
     os.replace(tmp, path)
-    with open(path + f".tmp-{os.getpid()}-json", "w") as f:
-        json.dump(info, f, indent=1)
-    os.replace(path + f".tmp-{os.getpid()}-json", path + ".json")
+    _outputs.write_atomic(path + ".json", json.dumps(info, indent=1))
 
 
 def make_adhesive_walls(wall_ids):

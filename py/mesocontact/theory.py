@@ -197,7 +197,7 @@ class PairOutcome:
     eps_in: float       # pull-in factor v_i/v_i,inf (Eq. 17b; 1 for jump-in)
     eps_out: float      # pull-off factor v_f,inf/v_f (Eq. 18b; 0 if bound)
     v_contact: float    # relative velocity at first touch v_i [m/s]
-    delta_max: float    # largest overlap, Eq. 20b [m]
+    delta_max: float    # largest overlap: Eq. 20b below v_p, along the limit branch beyond (max_overlap) [m]
     v_p: float          # plastic-limit velocity, Eq. 19 [m/s]
     E_f: float          # kinetic energy at the end of contact, Eqs. 21/23e [J] (<= 0: sticks)
     regime: str         # 'sticking-contact', 'sticking-noncontact', 'rebound'
@@ -229,8 +229,8 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
     fa [N]. adhesion: 'none', 'reversible' (pull-in and pull-off along -kca delta - fa) or
     'jumpIn' (no pull-in; -fa from first touch; pull-off tail after contact).
     """
-    for name, v in (("v_inf", v_inf), ("k1", k1), ("phiF", phiF), ("a12", a12), ("m_r", m_r)):
-        _positive(name, v)
+    _positive("v_inf", v_inf)
+    _positive("m_r", m_r)
     _law(k1, kp, phiF, a12)
     _nonnegative("kc", kc)
     _nonnegative("fa", fa)
@@ -247,7 +247,7 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
 
     v_i = math.sqrt(v_inf ** 2 + tail / m_r) if adhesion == "reversible" else v_inf  # Eq. 17
     E_i = 0.5 * m_r * v_i ** 2
-    d_max = (fa + math.sqrt(fa * fa + k1 * m_r * v_i ** 2)) / k1  # Eq. 20b
+    d_max = max_overlap(v_i, k1, kp, phiF, a12, m_r, fa)  # Eq. 20b below v_p
     dmp = delta_max_p(k1, kp, phiF, a12)
     v_p = plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa)
     limit = d_max >= dmp
