@@ -1,0 +1,647 @@
+"""Calibration: the law's normal parameters from measured restitution e(v) (plain Python with
+numpy and scipy; no YADE). docs/calibration.md explains the method and what it showed.
+
+    from mesocontact import calibrate
+    d = calibrate.load_data("drops.csv")                       # columns v, e[, sigma] (SI)
+    f = calibrate.fit(d, radius=1e-3, density=2500, values=dict(k1=100))
+    print(f.report())
+
+The closed form (theory.pair_collision, every regime, both adhesion modes and k2 rules) makes a
+fit a least-squares problem of a few parameters: milliseconds per evaluation, seconds per fit
+with its intervals. e(v) depends on k1, kp, kc, phiF, fa (and kca, m_r, a12) only through five
+dimensionless groups (eta, beta, kca/k1, fa/(k1 phiF a12) and v/v_p, docs/model.md §2), so some
+parameter sets are undetermined by any e(v) data; the fit finds which from the Jacobian, in the
+logarithms of the free parameters, and says so.
+"""
+import csv
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from . import params as _params
+from . import theory as _theory
+
+PARAMETERS = ("k1", "kp", "kc", "phiF", "fa")
+AGAINST = ("particle", "wall")
+Z95 = 1.959963984540054           # two-sided 95 % quantile of the normal distribution
+UNDETERMINED_FACTOR = 10.0        # a 95 % interval reaching beyond this factor either way: not determined
+PROFILE_CHI2 = 3.841458820694124  # chi2 quantile (1 degree of freedom, 95 %): the profile interval's threshold
+PROFILE_STARTS = 6                # starts of each profile refit (the best fit's values and random ones)
+NULL_RCOND = 1e-7                 # singular values below this fraction of the largest: a direction the data cannot see
+
+
+class DataError(ValueError):
+    """Restitution data that cannot be fitted (the message names the problem and the row)."""
+
+
+@dataclass
+class Data:
+    v: np.ndarray                 # approach speeds v_inf [m/s]
+    e: np.ndarray                 # restitution (0: the pair stuck)
+    sigma: np.ndarray = None      # standard errors of e, or None (then estimated from the residuals)
+    source: str = ""
+
+
+def check_data(v, e, sigma=None, source="data"):
+    """Data with every value checked: v > 0 and finite, 0 <= e <= 1, sigma > 0."""
+    v, e = np.asarray(v, float), np.asarray(e, float)
+    if v.shape != e.shape or v.ndim != 1:
+        raise DataError(f"{source}: v and e must be two lists of the same length (got {v.shape} and {e.shape})")
+    if len(v) == 0:
+        raise DataError(f"{source}: no data points")
+    for name, x, ok, need in (("v", v, lambda a: np.isfinite(a) & (a > 0), "a finite speed > 0 [m/s] (the approach speed)"),
+                              ("e", e, lambda a: np.isfinite(a) & (a >= 0) & (a <= 1), "in [0, 1] (e = 0: the pair stuck)")):
+        bad = np.flatnonzero(~ok(x))
+        if bad.size:
+            raise DataError(f"{source}: {name} = {x[bad[0]]!r} at point {bad[0] + 1} is invalid: must be {need}")
+    if sigma is not None:
+        sigma = np.asarray(sigma, float)
+        if sigma.shape != v.shape:
+            raise DataError(f"{source}: sigma must have one value per point ({sigma.shape} for {v.shape})")
+        bad = np.flatnonzero(~(np.isfinite(sigma) & (sigma > 0)))
+        if bad.size:
+            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be a finite number > 0")
+    return Data(v, e, sigma, source)
+
+
+def load_data(path):
+    """Reads a CSV file with a header naming the columns v, e and optionally sigma (SI units;
+    lines starting with # are comments)."""
+    with open(path, newline="") as f:
+        lines = [ln for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+    if not lines:
+        raise DataError(f"{path}: no header and no data")
+    reader = csv.reader(lines)
+    header = [h.strip() for h in next(reader)]
+    for need in ("v", "e"):
+        if need not in header:
+            raise DataError(f"{path}: column {need!r} is missing (the header is {header}; needed: v, e and optionally sigma)")
+    cols = {name: [] for name in header}
+    for n, row in enumerate(reader, start=2):
+        if len(row) != len(header):
+            raise DataError(f"{path}: data row {n - 1} has {len(row)} values for {len(header)} columns")
+        for name, x in zip(header, row):
+            try:
+                cols[name].append(float(x))
+            except ValueError:
+                raise DataError(f"{path}: data row {n - 1}: {name} = {x.strip()!r} is not a number") from None
+    return check_data(cols["v"], cols["e"], cols.get("sigma"), source=str(path))
+
+
+def geometry(radius, density, against="particle"):
+    """(m_r, a12) of the collision the data come from: two equal spheres ('particle': m_r = m/2,
+    a12 = radius) or a sphere on a wall ('wall': m_r = m, a12 = 2 radius)."""
+    if against not in AGAINST:
+        raise ValueError(f"against = {against!r} is invalid: must be one of {AGAINST}")
+    m = _params.sphere_mass(radius, density)
+    return (0.5 * m, radius) if against == "particle" else (m, 2.0 * radius)
+
+
+@dataclass
+class Setup:
+    """What the data's collisions share: geometry and the law's fixed choices."""
+    m_r: float
+    a12: float
+    adhesion: str = "none"
+    kca: float = math.inf
+    interpolation: str = "linear"
+
+    def outcome(self, v, p):
+        return _theory.pair_collision(v, p["k1"], p["kp"], p["kc"], p["phiF"], self.a12, self.m_r,
+                                      p["fa"] if self.adhesion != "none" else 0.0, self.kca,
+                                      self.adhesion, self.interpolation)
+
+    def curve(self, v, p):
+        return np.array([self.outcome(float(x), p).e for x in np.atleast_1d(v)])
+
+
+# --- the fit's coordinates: unconstrained where possible, bounded where 0 is a value -----------
+
+def _to_x(name, p, scale):
+    if name == "k1":
+        return math.log(p["k1"])
+    if name == "kp":
+        return math.log(p["kp"] - p["k1"])
+    if name == "phiF":
+        return math.log(p["phiF"])
+    return p[name] / scale[name]  # kc, fa: linear, >= 0
+
+
+def _from_x(names, x, fixed, scale):
+    p = dict(fixed)
+    x = [float(xi) for xi in x]  # Python floats: the theory's range checks raise instead of numpy warning
+    for name, xi in zip(names, x):
+        if name not in ("kp",):
+            p[name] = math.exp(xi) if name in ("k1", "phiF") else xi * scale[name]
+    if "kp" in names:
+        p["kp"] = p["k1"] + math.exp(x[names.index("kp")])
+    return p
+
+
+def _bounds(names):
+    lo = [-np.inf if n in ("k1", "kp", "phiF") else 0.0 for n in names]
+    hi = [0.0 if n == "phiF" else np.inf for n in names]
+    return lo, hi
+
+
+@dataclass
+class Fit:
+    """A calibration: the fitted parameters, their intervals and what the data determine."""
+    params: dict                  # k1, kp, kc, phiF, fa (fitted or fixed) [SI]
+    free: list
+    setup: Setup
+    data: Data
+    ci95: dict                    # free parameter -> [low, high] from the Jacobian (delta method in log)
+    ci95_bootstrap: dict          # free parameter -> [low, high], 2.5/97.5 percentiles over resampled data
+    correlation: list             # between the logarithms of the free parameters (a tiny ridge keeps it finite)
+    undetermined: list            # free parameters the data do not fix
+    statements: list              # plain sentences on what the data do and do not determine
+    rms_residual: float
+    chi2_reduced: float           # with the data's sigma (None without)
+    regimes: dict                 # regime -> number of data points (with the fitted parameters)
+    starts: int
+    wall_clock_s: float
+    sigma_used: float             # the e error the intervals assume (given or estimated)
+    extra: dict = field(default_factory=dict)
+
+    def curve(self, v):
+        return self.setup.curve(v, self.params)
+
+    def to_json(self):
+        p = self.params
+        return {"k1": p["k1"], "kp": p["kp"], "kc": p["kc"], "phiF": p["phiF"], "fa": p["fa"],
+                "kca": self.setup.kca if math.isfinite(self.setup.kca) else None,
+                "adhesion": self.setup.adhesion, "k2Interpolation": self.setup.interpolation,
+                "m_r": self.setup.m_r, "a12": self.setup.a12, "free": self.free,
+                "ci95": _open_ends(self.ci95), "ci95_bootstrap": self.ci95_bootstrap,
+                "correlation": {"names": self.free, "matrix": self.correlation},
+                "undetermined": self.undetermined, "statements": self.statements,
+                "rms_residual": self.rms_residual, "chi2_reduced": self.chi2_reduced,
+                "sigma_used": self.sigma_used, "regimes": self.regimes, "n_points": int(len(self.data.v)),
+                "starts": self.starts, "wall_clock_s": self.wall_clock_s, **self.extra}
+
+    def report(self):
+        lines = [f"{len(self.data.v)} points, free: {', '.join(self.free)}; rms residual {self.rms_residual:.3g}"
+                 + (f", reduced chi2 {self.chi2_reduced:.3g}" if self.chi2_reduced is not None else "")
+                 + f"; {self.starts} starts, {self.wall_clock_s:.2f} s"]
+        for n in PARAMETERS:
+            if n == "fa" and self.setup.adhesion == "none":
+                continue
+            if n in self.free:
+                lo, hi = self.ci95[n]
+                b = self.ci95_bootstrap.get(n)
+                lines.append(f"  {n:5s} = {self.params[n]:.6g}   95 %: [{lo:.4g}, {hi:.4g}]"
+                             + (f"  bootstrap [{b[0]:.4g}, {b[1]:.4g}]" if b else "")
+                             + ("   UNDETERMINED" if n in self.undetermined else ""))
+            else:
+                lines.append(f"  {n:5s} = {self.params[n]:.6g}   (fixed)")
+        lines.append("  regimes: " + ", ".join(f"{k} {v}" for k, v in self.regimes.items()))
+        lines += ["  " + s for s in self.statements]
+        return "\n".join(lines)
+
+
+def _open_ends(ci):
+    """JSON has no infinity: an interval's open end (the data do not bound it) is null."""
+    return {n: [x if math.isfinite(x) else None for x in lohi] for n, lohi in ci.items()}
+
+
+def _residuals(names, fixed, scale, setup, data, w):
+    def fun(x):
+        try:
+            p = _from_x(names, x, fixed, scale)
+            return (setup.curve(data.v, p) - data.e) * w
+        except (ValueError, OverflowError):  # outside the law's domain (e.g. an impact beyond floating point): far from any data
+            return np.full(len(data.v), 10.0) * w
+    return fun
+
+
+def _starts(names, given, setup, data, n, rng):
+    """Starting points: the given values, then draws from grids of the dimensionless groups
+    (eta, beta, v_p over the data's range, the adhesivity alpha at the median speed)."""
+    k1 = given["k1"]
+    v_med = float(np.median(data.v))
+    out = [dict(given)]
+    etas, betas = (0.5, 2.0, 8.0, 30.0, 100.0), (0.0, 0.2, 1.0, 4.0)
+    vps = np.geomspace(data.v.min() / 3, 3 * data.v.max(), 5)
+    alphas = (0.0, 0.03, 0.1, 0.3, 1.0)
+    for _ in range(n - 1):
+        p = dict(given)
+        if "k1" in names:
+            p["k1"] = k1 * 10 ** rng.uniform(-1, 1)
+        eta = rng.choice(etas) if "kp" in names else (p["kp"] - p["k1"]) / p["k1"]
+        if "kp" in names:
+            p["kp"] = p["k1"] * (1 + eta)
+        if "kc" in names:
+            p["kc"] = p["k1"] * rng.choice(betas)
+        if "phiF" in names:
+            v_p = rng.choice(vps)
+            p["phiF"] = min(1.0, v_p / (math.sqrt(p["k1"] / setup.m_r) * (1 + eta) / max(eta, 1e-12) * setup.a12))
+        if "fa" in names:
+            p["fa"] = rng.choice(alphas) * math.sqrt(p["k1"] * setup.m_r) * v_med
+        out.append(p)
+    return out
+
+
+def _log_jacobian(names, p, setup, data, w):
+    """d residual / d log(parameter) for each free parameter (central differences; a parameter at
+    0 gets d/d(value) times a natural scale instead, flagged)."""
+    cols, at_zero = [], []
+    for n in names:
+        h = 1e-5
+        if p[n] > 0:
+            pl, ph = dict(p), dict(p)
+            pl[n], ph[n] = p[n] * math.exp(-h), p[n] * math.exp(h)
+            if n == "kp" and pl[n] <= p["k1"]:
+                pl[n] = p[n]
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / h)
+            elif n == "phiF" and ph[n] > 1:
+                ph[n] = p[n]
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / h)
+            else:
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / (2 * h))
+            at_zero.append(False)
+        else:
+            scale = p["k1"] if n == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))
+            ph = dict(p)
+            ph[n] = h * scale
+            cols.append((setup.curve(data.v, ph) - setup.curve(data.v, p)) * w / h)
+            at_zero.append(True)
+    return np.array(cols).T, at_zero
+
+
+def _identify(names, p, setup, data, w, s2):
+    """Covariance of the log parameters, 95 % intervals, correlation, the undetermined and why."""
+    J, at_zero = _log_jacobian(names, p, setup, data, w)
+    U, sv, Vt = np.linalg.svd(J, full_matrices=False)
+    null = sv < NULL_RCOND * max(sv.max(), 1e-300)
+    # var(log p_i) = s2 sum_k V_ki^2 / sv_k^2; a null direction makes it infinite for the
+    # parameters it involves
+    with np.errstate(divide="ignore"):
+        inv = np.where(null, np.inf, 1.0 / np.where(null, 1.0, sv) ** 2)
+    terms = np.where(Vt ** 2 > 1e-6, Vt ** 2 * inv[:, None], np.where(null[:, None], 0.0, Vt ** 2 * inv[:, None]))
+    var = s2 * terms.sum(axis=0)
+    sd = np.sqrt(var)
+    ridge = 1e-12 * max(float(np.max(sv)) ** 2, 1e-300)
+    C = np.linalg.inv(J.T @ J + ridge * np.eye(len(names)))
+    d = np.sqrt(np.diag(C))
+    corr = (C / np.outer(d, d)).tolist()
+    ci, undetermined = {}, []
+    for i, n in enumerate(names):
+        if at_zero[i]:  # d/d(value/scale): the interval's upper end from the linear sd
+            scale = p["k1"] if n == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))
+            ci[n] = [0.0, float(Z95 * sd[i] * scale) if math.isfinite(sd[i]) else math.inf]
+            if not math.isfinite(sd[i]):
+                undetermined.append(n)
+            continue
+        f = math.exp(Z95 * sd[i]) if sd[i] < 700 else math.inf
+        lo, hi = p[n] / f, p[n] * f
+        if n == "kp":
+            lo = max(lo, p["k1"])
+        if n == "phiF":
+            hi = min(hi, 1.0)
+        ci[n] = [lo, hi]
+        if not f < UNDETERMINED_FACTOR:
+            undetermined.append(n)
+    statements = []
+    colnorm = np.linalg.norm(J, axis=0)
+    for i, n in enumerate(names):
+        if n in undetermined and colnorm[i] <= 1e-6 * max(colnorm.max(), 1e-300):
+            statements.append(f"{n}: e(v) does not depend on it at the data's speeds (no point where it acts)")
+    # the weak directions: where moving the log parameters changes e by less than the noise over
+    # the interval factor
+    weak = [k for k in range(len(sv)) if sv[k] == 0 or math.sqrt(s2) / sv[k] * Z95 > math.log(UNDETERMINED_FACTOR)]
+    for k in weak:
+        v = Vt[k]
+        involved = [(names[i], v[i]) for i in range(len(names)) if abs(v[i]) > 0.05 * np.abs(v).max()]
+        if len(involved) < 2:
+            continue
+        ref = max(involved, key=lambda t: abs(t[1]))[1]
+        moves = ", ".join(f"{n} x lambda^{c / ref:+.2f}" for n, c in involved)
+        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; e(v) stays the same "
+                          f"(to the noise) along {moves}; fix one of them")
+    return ci, corr, undetermined, statements
+
+
+# a side of a parameter's interval that the data leave open
+_BOUND_END = {"k1": (0.0, math.inf), "kp": (None, math.inf), "kc": (0.0, math.inf), "phiF": (0.0, 1.0), "fa": (0.0, math.inf)}
+
+
+def _profile_values(m, p, setup, data):
+    """(side, value) pairs the profile test tries: the value divided and multiplied by
+    UNDETERMINED_FACTOR (kp through eta; phiF capped at 1; a parameter at 0 tried at a tenth of
+    its natural scale: beta = 0.1, alpha = 0.1 at the median speed)."""
+    f = UNDETERMINED_FACTOR
+    if m == "kp":
+        eta = p["kp"] / p["k1"] - 1
+        return [(-1, p["k1"] * (1 + eta / f)), (1, p["k1"] * (1 + eta * f))]
+    if m in ("kc", "fa") and p[m] <= 1e-12 * (p["k1"] if m == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))):
+        return [(1, 0.1 * (p["k1"] if m == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))))]
+    out = [(-1, p[m] / f)]
+    if m != "phiF" or p[m] < 1.0:
+        out.append((1, min(p[m] * f, 1.0) if m == "phiF" else p[m] * f))
+    return out
+
+
+def _regimes(setup, p, data):
+    counts = {}
+    for v in data.v:
+        o = setup.outcome(float(v), p)
+        key = ("sticking" if o.e == 0 else "rebound") + (" beyond v_p" if o.plastic_limit else " below v_p")
+        counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def _coverage_statements(setup, p, data, free):
+    """Which regimes the data miss, in words (the Jacobian says what that costs)."""
+    v_p = _theory.plastic_limit_velocity(p["k1"], p["kp"], p["phiF"], setup.a12, setup.m_r,
+                                         p["fa"] if setup.adhesion != "none" else 0.0)
+    out = []
+    if data.v.max() < v_p:
+        out.append(f"all points below v_p = {v_p:.4g} m/s: kp and phiF act only through eta chi = eta v/v_p "
+                   "(Eq. 32), and the limit branch is not seen")
+    if data.v.min() > v_p:
+        out.append(f"all points beyond v_p = {v_p:.4g} m/s: e^2 = 1 - (1 - e_p^2) (v_p/v)^2 (Eq. 33) fixes "
+                   "one combination of eta, beta and v_p")
+    if setup.adhesion != "none" and "fa" in free:
+        p0 = dict(p, fa=0.0)
+        de = np.abs(setup.curve(data.v, p) - setup.curve(data.v, p0))
+        if not np.any(de > 0.01):
+            out.append("no point where the non-contact force changes e by more than 0.01: "
+                       "fa needs slower collisions")
+    return out
+
+
+def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf, interpolation="linear",
+        free=None, values=None, starts=40, bootstrap=200, seed=0):
+    """Least-squares fit of the closed-form e(v) to data (a Data, or (v, e[, sigma])).
+
+    values: the fixed parameters' values and the free ones' starting guesses (k1 is always
+    needed: e(v) without adhesion cannot fix it, see the module's docstring); kc defaults to 0,
+    fa to 0. free: names among PARAMETERS (default kp, kc, phiF, and fa with adhesion).
+    Returns a Fit; raises ValueError naming what is wrong with the input."""
+    t0 = time.time()
+    if not isinstance(data, Data):
+        data = check_data(*data)
+    m_r, a12 = geometry(radius, density, against)
+    if adhesion not in _theory.ADHESION_MODES:
+        raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {_theory.ADHESION_MODES}")
+    setup = Setup(m_r, a12, adhesion, kca, interpolation)
+    free = list(free if free is not None else (("kp", "kc", "phiF") + (("fa",) if adhesion != "none" else ())))
+    for n in free:
+        if n not in PARAMETERS:
+            raise ValueError(f"free parameter {n!r} is unknown: must be among {PARAMETERS}")
+    if len(set(free)) != len(free):
+        raise ValueError(f"free = {free}: a parameter is named twice")
+    if adhesion == "none" and "fa" in free:
+        raise ValueError("free parameter 'fa' needs adhesion 'reversible' or 'jumpIn' (with adhesion 'none' fa does nothing)")
+    if adhesion != "none" and not (isinstance(kca, (int, float)) and kca > 0):
+        raise ValueError(f"kca = {kca!r} is invalid: must be > 0 with adhesion {adhesion!r} (inf allowed for 'jumpIn')")
+    if adhesion == "reversible" and not math.isfinite(kca):
+        raise ValueError("kca = inf is invalid with adhesion 'reversible': the pull-in range fa/kca needs a finite kca")
+    values = dict(values or {})
+    for n in values:
+        if n not in PARAMETERS:
+            raise ValueError(f"value given for unknown parameter {n!r}: must be among {PARAMETERS}")
+    values.setdefault("kc", 0.0)
+    values.setdefault("fa", 0.0)
+    missing = [n for n in PARAMETERS if n not in values and n not in free]
+    if "k1" not in values:
+        missing = ["k1"] + [n for n in missing if n != "k1"]
+    if missing:
+        raise ValueError(f"no value for {', '.join(missing)}: fixed parameters need a value (k1 also when free, as its "
+                         "starting guess; e(v) alone cannot fix the stiffness scale)")
+    if len(data.v) < len(free):
+        raise DataError(f"{data.source}: {len(data.v)} points cannot fix {len(free)} free parameters ({', '.join(free)})")
+    values.setdefault("kp", values["k1"] * 5.0)
+    values.setdefault("phiF", 0.1)
+    _theory._law(values["k1"], values["kp"], values["phiF"], a12)
+    if values["kp"] == values["k1"] and "kp" in free:
+        values["kp"] = values["k1"] * 1.5
+    scale = {"kc": values["k1"], "fa": math.sqrt(values["k1"] * m_r) * float(np.median(data.v))}
+    w = 1.0 / data.sigma if data.sigma is not None else np.ones(len(data.v))
+    fixed = {n: values[n] for n in PARAMETERS}
+    rng = np.random.default_rng(seed)
+
+    def solve(names, fix, d, w_, x0):
+        fun = _residuals(names, fix, scale, setup, d, w_)
+        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12)
+
+    def best_of(names, fix, starts_p, d=data, w_=w):
+        best = None
+        lo, hi = _bounds(names)
+        for p0 in starts_p:
+            try:
+                x0 = np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12)
+            except ValueError:  # a start outside the law's domain (kp <= k1 after k1 was moved)
+                continue
+            r = solve(names, fix, d, w_, x0)
+            if best is None or r.cost < best.cost:
+                best = r
+        return best
+
+    best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng))
+    p = _from_x(free, best.x, fixed, scale)
+    res = setup.curve(data.v, p) - data.e
+    n, k = len(data.v), len(free)
+    rms = float(np.sqrt(np.mean(res ** 2)))
+    if data.sigma is not None:
+        s2, chi2 = 1.0, float(np.sum((res / data.sigma) ** 2) / max(n - k, 1))
+        sigma_used = float(np.median(data.sigma))
+    else:
+        s2, chi2 = float(np.sum(res ** 2) / max(n - k, 1)), None
+        sigma_used = math.sqrt(s2)
+    ci, corr, undetermined, statements = _identify(free, p, setup, data, w, s2)
+    # The Jacobian is local: a ridge of equally good fits that ends at a kink (a point crossing
+    # v_p or the sticking window) looks determined there. The profile test is global: each
+    # parameter moved by UNDETERMINED_FACTOR either way, the others refitted; if that still fits
+    # within the 95 % profile threshold (chi2_1 = 3.84 in units of the noise), it is undetermined.
+    threshold = 2 * best.cost + PROFILE_CHI2 * s2  # least_squares' cost is SSR/2
+    open_sides = {}
+    for m in free:
+        others = [x for x in free if x != m]
+        for side, moved in _profile_values(m, p, setup, data):
+            fix = dict(p)
+            fix[m] = moved
+            if others:
+                first = dict(fix)
+                if m == "k1":  # the same groups at the new stiffness scale: the ridge's direction
+                    for x in ("kp", "kc"):
+                        if x in others:
+                            first[x] = p[x] * moved / p["k1"]
+                    if "phiF" in others:
+                        first["phiF"] = min(1.0, p["phiF"] * math.sqrt(p["k1"] / moved))
+                st = [first] + _starts(others, first, setup, data, PROFILE_STARTS, rng)[1:]
+                r = best_of(others, fix, st)
+                ssr = 2 * r.cost
+            else:
+                ssr = float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2))
+            if ssr <= threshold:
+                end = _BOUND_END[m][0 if side < 0 else 1]
+                ci[m][0 if side < 0 else 1] = p["k1"] if end is None else end
+                if m not in undetermined:
+                    undetermined.append(m)
+                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{(ssr - 2 * best.cost) / s2:.2f})")
+    for m, sides in open_sides.items():
+        statements.append(f"{m}: set to {' or '.join(sides)} with the others refitted it fits as well (in brackets: "
+                          f"the growth of the sum of squares in noise^2; 95 % threshold {PROFILE_CHI2:.2f})")
+    undetermined = [m for m in free if m in undetermined]
+    statements = _coverage_statements(setup, p, data, free) + statements
+    boot = {}
+    if bootstrap:
+        samples = []
+        for _ in range(bootstrap):
+            idx = rng.integers(0, n, n)
+            d = Data(data.v[idx], data.e[idx], None if data.sigma is None else data.sigma[idx])
+            r = solve(free, fixed, d, w[idx], best.x)
+            samples.append([_from_x(free, r.x, fixed, scale)[m] for m in free])
+        samples = np.array(samples)
+        boot = {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))]
+                for i, m in enumerate(free)}
+    return Fit(p, free, setup, data, ci, boot, corr, undetermined, statements, rms, chi2,
+               _regimes(setup, p, data), starts, time.time() - t0, sigma_used)
+
+
+# --- the law's parameters from other common inputs -------------------------------------------
+
+def from_groups(eta, beta, phiF, v_p, radius, density, against="particle"):
+    """k1, kp, kc, phiF that give plasticity eta, adhesivity beta, plasticity depth phiF and the
+    plastic-limit speed v_p (Eq. 19 with fa = 0) for the collision of `against`."""
+    _theory._groups(eta, beta)
+    _theory._positive("eta", eta)
+    _theory._positive("v_p", v_p)
+    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+        raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
+    m_r, a12 = geometry(radius, density, against)
+    k1 = m_r * (v_p * eta / ((1 + eta) * phiF * a12)) ** 2  # v_p = sqrt(k1/m_r) (1 + eta)/eta phiF a12
+    return {"k1": k1, "kp": (1 + eta) * k1, "kc": beta * k1, "phiF": phiF}
+
+
+def contact_duration(chi, eta, beta, interpolation="linear"):
+    """Time with positive overlap of a head-on collision below v_p (fa = 0), in units of
+    sqrt(m_r/k1): a quarter period on k1, the unloading on k2 down to the -kc branch (arccos),
+    then the pull along -kc delta back to delta = 0 (atanh). Raises ValueError if the pair sticks."""
+    if not 0 < chi <= 1:
+        raise ValueError(f"chi = {chi!r} is invalid: must lie in (0, 1] (below v_p)")
+    if _theory.en_squared(chi, eta, beta, interpolation) <= 0:
+        raise ValueError(f"chi = {chi!r} with eta = {eta!r}, beta = {beta!r}: the pair sticks, the contact does not end")
+    r = _theory.k2_over_k1(chi, eta, interpolation)
+    c = -beta * (r - 1) / (r + beta)          # cos of the k2 phase where f meets -kc delta
+    t = 0.5 * math.pi + math.acos(c) / math.sqrt(r)
+    y = (r - 1) / (r + beta) * math.sqrt(r) / math.sqrt(1 - c * c)  # delta_min / speed there (units delta_max, k1)
+    return t + (math.atanh(math.sqrt(beta) * y) / math.sqrt(beta) if beta > 0 else y)
+
+
+def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, against="particle",
+                                      interpolation="linear"):
+    """k1, kp, kc, phiF for a restitution e at the approach speed v (below v_p, fa = 0) with the
+    contact lasting t_c (time with positive overlap), for given eta and beta (what MercuryDPM's
+    users set from e and t_c for a linear spring). The speed is placed on the decreasing branch of
+    e(chi) below the sticking window."""
+    _theory._positive("t_c", t_c)
+    _theory._positive("v", v)
+    _theory._positive("eta", eta)
+    if not (isinstance(e, (int, float)) and 0 < e < 1):
+        raise ValueError(f"e = {e!r} is invalid: must lie in (0, 1)")
+    e_min = _theory.restitution_fa0(1.0, eta, beta, interpolation)
+    # the branch from chi = 0 (e = 1) down to the first chi where e = 0 or chi = 1
+    hi = 1.0
+    if beta > 0 and eta > 0:
+        try:
+            hi = min(1.0, _theory.chi_c_b(eta, beta))
+        except ValueError:
+            pass
+    if e < _theory.restitution_fa0(hi, eta, beta, interpolation):
+        raise ValueError(f"e = {e!r} is invalid with eta = {eta!r}, beta = {beta!r}: below v_p e stays above "
+                         f"{max(e_min, _theory.restitution_fa0(hi, eta, beta, interpolation)):.4g}")
+    lo = 0.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if _theory.restitution_fa0(mid, eta, beta, interpolation) > e:
+            lo = mid
+        else:
+            hi = mid
+    chi = 0.5 * (lo + hi)
+    m_r, a12 = geometry(radius, density, against)
+    k1 = m_r * (contact_duration(chi, eta, beta, interpolation) / t_c) ** 2
+    phiF = (v / chi) / (math.sqrt(k1 / m_r) * (1 + eta) / eta * a12)
+    if not 0 < phiF <= 1:
+        raise ValueError(f"t_c = {t_c!r} and v = {v!r} need phiF = {phiF:.4g}, outside (0, 1]: the overlap would exceed "
+                         "the particle's size")
+    return {"k1": k1, "kp": (1 + eta) * k1, "kc": beta * k1, "phiF": phiF, "chi": chi}
+
+
+# --- the fit run through YADE, and its picture -------------------------------------------------
+
+def material(params, adhesion="none", kca=math.inf, interpolation="linear", density=2000.0):
+    """The MesoMat attributes of a calibration (a dict for MesoMat(**...) or pair.build)."""
+    m = {"k1": params["k1"], "kp": params["kp"], "kc": params["kc"], "phiF": params["phiF"],
+         "adhesion": adhesion, "k2Interpolation": interpolation, "density": density}
+    if adhesion != "none":
+        m["fa"] = params["fa"]
+        if math.isfinite(kca):
+            m["kca"] = kca
+    return m
+
+
+def yade_check(fitted, velocities, radius, density, against="particle", progress=True):
+    """Pair collisions in YADE (inside ``yade``) with the fitted parameters at the given speeds:
+    a list of (v, e_yade, e_fitted_curve). fitted: calibration.json's dict."""
+    from . import pair  # needs YADE
+    kca = fitted["kca"] if fitted.get("kca") is not None else math.inf
+    mat = material(fitted, fitted["adhesion"], kca, fitted["k2Interpolation"], density)
+    setup = Setup(*geometry(radius, density, against), fitted["adhesion"], kca, fitted["k2Interpolation"])
+    out = []
+    for i, v in enumerate(velocities):
+        s = pair.build(radius, float(v), dict(mat)) if against == "particle" else \
+            pair.build_wall(radius, float(v), dict(mat), wall_material=dict(mat))
+        r = pair.collide(s, max_contact_times=15)
+        e_fit = float(setup.curve(float(v), fitted)[0])
+        out.append((float(v), float(r.e), e_fit))
+        if progress:
+            print(f"  YADE check {i + 1}/{len(velocities)}: v = {v:.4g} m/s  e_yade = {r.e:.5f}  e_fit = {e_fit:.5f}", flush=True)
+    return out
+
+
+def plot(fit, path, yade_points=None, truth=None):
+    """Data with error bars, the fitted curve, the YADE collisions, the regimes shaded."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from . import outputs as _out
+    d = fit.data
+    vv = np.geomspace(d.v.min() / 3, d.v.max() * 3, 600)
+    ee = fit.curve(vv)
+    p = fit.params
+    v_p = _theory.plastic_limit_velocity(p["k1"], p["kp"], p["phiF"], fit.setup.a12, fit.setup.m_r,
+                                         p["fa"] if fit.setup.adhesion != "none" else 0.0)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    stuck = ee == 0
+    edges = np.flatnonzero(np.diff(np.r_[0, stuck.astype(int), 0]))
+    for a, b in zip(edges[::2], edges[1::2]):
+        ax.axvspan(vv[a], vv[b - 1], color="0.85", lw=0, label="sticking" if a == edges[0] else None)
+    ax.axvspan(v_p, vv[-1], color="#fde7c8", lw=0, zorder=0, label=f"beyond v_p = {v_p:.3g} m/s")
+    ax.plot(vv, ee, "-", color="C0", label="fitted closed form")
+    if truth is not None:
+        ax.plot(vv, fit.setup.curve(vv, truth), ":", color="k", lw=1, label="true parameters")
+    if d.sigma is not None:
+        ax.errorbar(d.v, d.e, yerr=d.sigma, fmt="s", ms=4, color="C3", capsize=2, label="data")
+    else:
+        ax.plot(d.v, d.e, "s", ms=4, color="C3", label="data")
+    if yade_points:
+        ax.plot([x[0] for x in yade_points], [x[1] for x in yade_points], "o", mfc="none", color="C2", ms=8,
+                label="YADE, fitted parameters")
+    ax.set_xscale("log")
+    ax.set_xlim(vv[0], vv[-1])
+    ax.set_ylim(-0.03, 1.03)
+    ax.set_xlabel("approach speed v [m/s]")
+    ax.set_ylabel("restitution e")
+    txt = ", ".join(f"{n} = {p[n]:.3g}" for n in PARAMETERS if n != "fa" or fit.setup.adhesion != "none")
+    mode = "no adhesion" if fit.setup.adhesion == "none" else f"adhesion {fit.setup.adhesion!r}"
+    ax.set_title(f"{mode}; free: {', '.join(fit.free)}\n{txt} (N/m, N)", fontsize=9)
+    ax.legend(fontsize=8, loc="best")
+    fig.tight_layout()
+    _out.savefig_atomic(fig, path, dpi=120)
+    plt.close(fig)
