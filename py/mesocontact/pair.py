@@ -193,11 +193,13 @@ def separation_speed(s):
 
 def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, max_steps=2e7):
     """Runs the collision until the pair has separated beyond the non-contact range, or for
-    max_contact_times contact times (then it is stuck).
+    max_contact_times loading times (then it is stuck). The loading time is the half period
+    pi sqrt(m_r/k1) of the loading branch, the slowest elastic part of a contact (k1 <= k2 <= kp):
+    a plastic contact (kp >> k1) lasts many periods of kp.
 
     For a stuck pair, final_overlap is the lower turning point of the oscillation it settled
-    into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further contact
-    times; with viscosity that is the resting overlap. record=True keeps
+    into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further loading
+    times (a pair that leaves during them rebounded after all and is reported so); with viscosity that is the resting overlap. record=True keeps
     (t, delta, f_hysteretic, f_total) at every step.
 
     Refused before it starts (ValueError): no approach (v_inf = 0), a step budget above
@@ -215,7 +217,8 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
         raise ValueError(f"v_inf = {s.v_inf!r} is too fast for this pair: the collision would reach the overlap "
                          f"{d_max:.3g} m, {d_max / radius:.3g} radii; the bodies would pass through each other")
     approach = max(s.start_gap, -s.delta_a) / (s.v_inf * O.dt)
-    steps = int(max_contact_times * s.contact_time / O.dt) + int(approach) + 10
+    t_load = _params.contact_time(p["k1"], s.m_r)
+    steps = int(max_contact_times * t_load / O.dt) + int(approach) + 10
     if steps > max_steps:
         raise ValueError(f"max_steps = {max_steps:g} is too small: this collision may need {steps:.3g} steps ({approach:.3g} to "
                          f"approach over the gap {max(s.start_gap, -s.delta_a):.3g} m at {s.v_inf:g} m/s, dt = {O.dt:.3g} s)")
@@ -235,7 +238,9 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
             return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
         watcher.iterPeriod = 1
         watcher.command = _COMMAND % "_track_low()"
-        _run_until(O.iter + int(settle_contact_times * s.contact_time / O.dt))
+        _run_until(O.iter + int(settle_contact_times * t_load / O.dt))
+        if _DRIVER["separated"]:
+            return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
         return PairResult(0.0, True, _DRIVER["low"], O.iter, trace)
     finally:
         O.engines = [e for e in O.engines if e is not watcher]
@@ -272,7 +277,10 @@ def _watch():
         _DRIVER["touched"] = True
     if overlap(s) < s.delta_a and separation_speed(s) > 0:
         _DRIVER["separated"] = True
-        O.pause()
+        # end the run after this step through stopAtIter, not O.pause(): a pause from inside the
+        # loop lets O.wait() return while this step is still in Python, and the next O.reset()
+        # (pair.build) then deadlocks on YADE's thread lock against the GIL (seen under load)
+        O.stopAtIter = O.iter + 1
 
 
 def _track_low():
@@ -280,6 +288,9 @@ def _track_low():
     _DRIVER["low"] = min(_DRIVER["low"], overlap(s))
     if _DRIVER["trace"] is not None:
         _DRIVER["trace"].append(_sample(s))
+    if overlap(s) < s.delta_a and separation_speed(s) > 0:  # beyond every force, moving apart: free for good
+        _DRIVER["separated"] = True
+        O.stopAtIter = O.iter + 1
 
 
 def _sample(s):

@@ -22,7 +22,7 @@ def ramp_tick():
                   peak_level=st["ph"].hystereticForce + st["ph"].viscousForce + st["ph"].kc * st["i"].geom.penetrationDepth)
     if st["ball"].state.vel[0] > 20 * st["creep"]:
         st["slipped"] = True
-        O.pause()
+        O.stopAtIter = O.iter + 1  # not O.pause() from inside the loop (see pair._watch)
 
 
 r = 1e-3

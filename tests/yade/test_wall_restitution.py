@@ -53,6 +53,10 @@ sweep("wall, jumpIn", zetas, dict(base, fa=fa, kca=100.0, adhesion="jumpIn"), "w
 sweep("facet, fa = 0", [0.3, 0.7, 1.05, 2.0], dict(base), "facet")
 sweep("box, unlike wall material", [0.1, 0.5, 0.9, 1.5, 3.0], dict(base), "box",
       wall_mat=dict(k1=300.0, kp=2000.0, kc=50.0, phiF=0.2))
+# highly plastic (eta = 50, beta = 0.05): the contact lasts many periods of kp, and just below
+# the sticking window (chi_c^(b) = 0.42) the pair leaves slowly on the tensile branch
+sweep("box, eta = 50, near the window", [0.1, 0.3, 0.34, 0.4, 0.45, 1.5],
+      dict(k1=100.0, kp=5100.0, kc=5.0, phiF=0.02), "box")
 print(f"worst |de| = {worst:.2e}; regimes seen: {sorted(regimes)}")
 needed = {"low-velocity sticking", "rebound", "high-velocity sticking", "second rebound"}
 if not needed <= regimes:
