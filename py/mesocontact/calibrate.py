@@ -19,7 +19,7 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
+from scipy.optimize import brentq, least_squares
 
 from . import params as _params
 from . import theory as _theory
@@ -154,7 +154,7 @@ class Fit:
     free: list
     setup: Setup
     data: Data
-    ci95: dict                    # free parameter -> [low, high] from the Jacobian (delta method in log)
+    ci95: dict                    # free parameter -> [low, high], profile likelihood (the Jacobian's in extra)
     ci95_bootstrap: dict          # free parameter -> [low, high], 2.5/97.5 percentiles over resampled data
     correlation: list             # between the logarithms of the free parameters (a tiny ridge keeps it finite)
     undetermined: list            # free parameters the data do not fix
@@ -345,6 +345,17 @@ def _profile_values(m, p, setup, data):
     return out
 
 
+def _path(m, p, moved):
+    """The parameter's value a fraction t of the way from its fit to `moved`: geometric (kp
+    through eta), linear from 0 for a parameter at 0."""
+    if m == "kp":
+        e0, e1 = p["kp"] / p["k1"] - 1, moved / p["k1"] - 1
+        return lambda t: p["k1"] * (1 + e0 * (e1 / e0) ** t)
+    if p[m] <= 0:
+        return lambda t: t * moved
+    return lambda t: p[m] * (moved / p[m]) ** t
+
+
 def _regimes(setup, p, data):
     counts = {}
     for v in data.v:
@@ -455,35 +466,53 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         sigma_used = math.sqrt(s2)
     ci, corr, undetermined, statements = _identify(free, p, setup, data, w, s2)
     # The Jacobian is local: a ridge of equally good fits that ends at a kink (a point crossing
-    # v_p or the sticking window) looks determined there. The profile test is global: each
-    # parameter moved by UNDETERMINED_FACTOR either way, the others refitted; if that still fits
-    # within the 95 % profile threshold (chi2_1 = 3.84 in units of the noise), it is undetermined.
-    threshold = 2 * best.cost + PROFILE_CHI2 * s2  # least_squares' cost is SSR/2
+    # v_p or the sticking window) looks determined there, and near kinks its linear intervals
+    # are too narrow. So the intervals are profile-likelihood intervals: each end is where the
+    # sum of squares, the others refitted, has grown by PROFILE_CHI2 noise^2 (chi2 of one degree
+    # of freedom at 95 %), searched up to UNDETERMINED_FACTOR either way; a side still inside
+    # the threshold there is open and the parameter undetermined.
+    ssr_min = 2 * best.cost  # least_squares' cost is SSR/2
+    ci_jacobian = {m: list(v) for m, v in ci.items()}
     open_sides = {}
-    for m in free:
+
+    def profile(m, value, starts_p):
+        fix = dict(p)
+        fix[m] = value
         others = [x for x in free if x != m]
+        if not others:
+            return (float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2)) - ssr_min) / s2
+        firsts = []
+        for q in starts_p:
+            first = dict(q)
+            first[m] = value
+            if m == "k1":  # the same groups at the new stiffness scale: the ridge's direction
+                for x in ("kp", "kc"):
+                    if x in others:
+                        first[x] = q[x] * value / q["k1"]
+                if "phiF" in others:
+                    first["phiF"] = min(1.0, q["phiF"] * math.sqrt(q["k1"] / value))
+            firsts.append(first)
+        r = best_of(others, fix, firsts)
+        last[m] = _from_x(others, r.x, fix, scale)
+        return (2 * r.cost - ssr_min) / s2
+
+    last = {}
+    for m in free:
         for side, moved in _profile_values(m, p, setup, data):
-            fix = dict(p)
-            fix[m] = moved
-            if others:
-                first = dict(fix)
-                if m == "k1":  # the same groups at the new stiffness scale: the ridge's direction
-                    for x in ("kp", "kc"):
-                        if x in others:
-                            first[x] = p[x] * moved / p["k1"]
-                    if "phiF" in others:
-                        first["phiF"] = min(1.0, p["phiF"] * math.sqrt(p["k1"] / moved))
-                st = [first] + _starts(others, first, setup, data, PROFILE_STARTS, rng)[1:]
-                r = best_of(others, fix, st)
-                ssr = 2 * r.cost
-            else:
-                ssr = float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2))
-            if ssr <= threshold:
-                end = _BOUND_END[m][0 if side < 0 else 1]
-                ci[m][0 if side < 0 else 1] = p["k1"] if end is None else end
+            delta = profile(m, moved, [p] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup, data,
+                                                  PROFILE_STARTS, rng)[1:])
+            k = 0 if side < 0 else 1
+            if delta <= PROFILE_CHI2:
+                end = _BOUND_END[m][k]
+                ci[m][k] = p["k1"] if end is None else end
                 if m not in undetermined:
                     undetermined.append(m)
-                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{(ssr - 2 * best.cost) / s2:.2f})")
+                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{delta:.2f})")
+                continue
+            path = _path(m, p, moved)
+            t = brentq(lambda t: profile(m, path(t), [p] + ([last[m]] if m in last else [])) - PROFILE_CHI2,
+                       0.0, 1.0, xtol=1e-4)
+            ci[m][k] = path(t)
     for m, sides in open_sides.items():
         statements.append(f"{m}: set to {' or '.join(sides)} with the others refitted it fits as well (in brackets: "
                           f"the growth of the sum of squares in noise^2; 95 % threshold {PROFILE_CHI2:.2f})")
@@ -501,7 +530,8 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         boot = {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))]
                 for i, m in enumerate(free)}
     return Fit(p, free, setup, data, ci, boot, corr, undetermined, statements, rms, chi2,
-               _regimes(setup, p, data), starts, time.time() - t0, sigma_used)
+               _regimes(setup, p, data), starts, time.time() - t0, sigma_used,
+               extra={"ci95_jacobian": _open_ends(ci_jacobian)})
 
 
 # --- the law's parameters from other common inputs -------------------------------------------
