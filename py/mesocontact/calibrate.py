@@ -121,13 +121,15 @@ class Setup:
 # --- the fit's coordinates: unconstrained where possible, bounded where 0 is a value -----------
 
 def _to_x(name, p, scale):
+    """The fit coordinate of a parameter (a start outside the domain, e.g. kp <= k1 after k1
+    was moved, is put just inside it)."""
     if name == "k1":
         return math.log(p["k1"])
     if name == "kp":
-        return math.log(p["kp"] - p["k1"])
+        return math.log(max(p["kp"] - p["k1"], 1e-9 * p["k1"]))
     if name == "phiF":
-        return math.log(p["phiF"])
-    return p[name] / scale[name]  # kc, fa: linear, >= 0
+        return math.log(min(max(p["phiF"], 1e-12), 1.0))
+    return max(p[name], 0.0) / scale[name]  # kc, fa: linear, >= 0
 
 
 def _from_x(names, x, fixed, scale):
@@ -386,7 +388,7 @@ def _coverage_statements(setup, p, data, free):
 
 
 def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf, interpolation="linear",
-        free=None, values=None, starts=40, bootstrap=200, seed=0):
+        free=None, values=None, starts=40, bootstrap=200, seed=0, _depth=0):
     """Least-squares fit of the closed-form e(v) to data (a Data, or (v, e[, sigma])).
 
     values: the fixed parameters' values and the free ones' starting guesses (k1 is always
@@ -444,10 +446,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         best = None
         lo, hi = _bounds(names)
         for p0 in starts_p:
-            try:
-                x0 = np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12)
-            except ValueError:  # a start outside the law's domain (kp <= k1 after k1 was moved)
-                continue
+            x0 = np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12)
             r = solve(names, fix, d, w_, x0)
             if best is None or r.cost < best.cost:
                 best = r
@@ -494,9 +493,11 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
             firsts.append(first)
         r = best_of(others, fix, firsts)
         last[m] = _from_x(others, r.x, fix, scale)
+        if 2 * r.cost < better[0]:
+            better[:] = [2 * r.cost, last[m]]
         return (2 * r.cost - ssr_min) / s2
 
-    last = {}
+    last, better = {}, [ssr_min * (1 - 1e-9) - 1e-300, None]
     for m in free:
         for side, moved in _profile_values(m, p, setup, data):
             delta = profile(m, moved, [p] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup, data,
@@ -513,6 +514,10 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
             t = brentq(lambda t: profile(m, path(t), [p] + ([last[m]] if m in last else [])) - PROFILE_CHI2,
                        0.0, 1.0, xtol=1e-4)
             ci[m][k] = path(t)
+    if better[1] is not None and _depth < 3:
+        # a profile refit found a better fit than the starts did: start again from it
+        return fit(data, radius, density, against, adhesion, kca, interpolation, free,
+                   dict(values, **{m: better[1][m] for m in free}), starts, bootstrap, seed, _depth + 1)
     for m, sides in open_sides.items():
         statements.append(f"{m}: set to {' or '.join(sides)} with the others refitted it fits as well (in brackets: "
                           f"the growth of the sum of squares in noise^2; 95 % threshold {PROFILE_CHI2:.2f})")

@@ -471,6 +471,19 @@ def _numbers(parser, option, text, low, high, what):
     return tuple(values)
 
 
+def peaks_table(runs):
+    """Markdown table of cyclic runs (their JSON descriptions with final_F, the last row's force):
+    peak force of every cycle, the force back at Dx = 0, the cost."""
+    out = ["| run | period [t_w] | peak F/(kp d0), cycles 1-4 | F at the end (Dx = 0) | steps | ms per step | wall-clock |",
+           "|---|---|---|---|---|---|---|"]
+    key = lambda r: (r["mode"], r["amplitude"], r["period_crossings"])  # noqa: E731
+    for r in sorted(runs, key=key):
+        out.append(f"| {r['name']} | {r['period_crossings']:g} | " + ", ".join(f"{x:.4f}" for x in r["peaks"])
+                   + f" | {r['final_F']:+.4f} | {r['steps']} | {r['ms_per_step']:.2f} | "
+                   f"{r['wall_clock_s'] / 60:.1f} min |")
+    return "\n".join(out) + "\n"
+
+
 def report(outdir, docsdir):
     """Copies a campaign's data and figures (CSV, JSON, PNG; not the saved states or VTK) from
     ``outdir`` into ``docsdir``: the stages' descriptions, every complete bundle (runs/*, the
@@ -494,6 +507,17 @@ def report(outdir, docsdir):
         pngs = sorted(glob.glob(os.path.join(outdir, fig, f"{tag}-[0-9][0-9].png")))
         if pngs:
             _snap.montage(pngs, os.path.join(docsdir, fig + "-snapshots.png"), ncols=4 if len(pngs) > 6 else 3)
+    runs = []
+    for js in sorted(glob.glob(os.path.join(outdir, "runs", "*", "*.json"))):
+        if os.path.basename(js) != _out.MANIFEST and _out.complete(os.path.dirname(js)):
+            with open(js) as f:
+                info = json.load(f)
+            csv_path = js[:-5] + ".csv"
+            if "peaks" in info and os.path.exists(csv_path):
+                info["final_F"] = read_csv(csv_path)[-1][2]
+                runs.append(info)
+    if runs:
+        _out.write_atomic(os.path.join(docsdir, "peaks.md"), peaks_table(runs))
     rows = []
     for js in sorted(glob.glob(os.path.join(outdir, "kc-*", "released.yade.gz.json"))):
         with open(js) as f:
