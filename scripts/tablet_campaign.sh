@@ -11,7 +11,7 @@ YADE=${1:-build/yade-meso}
 OUT=${2:-results/tablet}
 mkdir -p "$OUT"
 "$YADE" -j1 -n -x scripts/tablet_prepare.py --out "$OUT"
-jobs="fig16.py --amplitudes 0.2 --periods 30,120,480
+jobs="fig16.py --amplitudes 0.2 --periods 30,120,480,1920
 fig18.py --amplitudes 0.2 --periods 30,120,480
 fig16.py --amplitudes 0.025
 fig16.py --amplitudes 0.05
@@ -34,5 +34,5 @@ echo "$jobs" | xargs -P 2 -I{} sh -c 'set -f; set -- {}; script=$1; shift; name=
   && echo "done: {}" || { echo "FAILED: {} (see $OUT/log-$name.txt)"; exit 255; }'
 "$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT"   # the figures, from the runs above
 "$YADE" -j1 -n -x scripts/tablet_fig18.py --out "$OUT"
-"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT"
+"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --periods 30,120,480,1920
 "$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" docs/tablet
