@@ -21,7 +21,7 @@ m_r, a12 = calibrate.geometry(R, RHO)
 for kc in (0.0, 100.0):
     for chi in (0.3, 0.45):
         v = theory.impact_velocity_for_chi(chi, K1, KP, PHIF, a12, m_r)
-        s = pair.build(R, v, dict(k1=K1, kp=KP, kc=kc, phiF=PHIF))
+        s = pair.build(R, v, dict(k1=K1, kp=KP, kc=kc, phiF=PHIF), density=RHO)
         r, t_yade = duration(s)
         t_cf = calibrate.contact_duration(chi, (KP - K1) / K1, kc / K1) * math.sqrt(m_r / K1)
         # the recorded overlap changes sign within one step at either end: |error| <= 2 dt
@@ -30,7 +30,7 @@ for kc in (0.0, 100.0):
               f"difference {abs(t_yade - t_cf) / t_cf:.1e} relative")
 
 p = calibrate.from_restitution_and_contact_time(0.7, 2e-4, 0.05, 4.0, 1.0, R, RHO)
-s = pair.build(R, 0.05, dict(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=p["phiF"]))
+s = pair.build(R, 0.05, dict(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=p["phiF"]), density=RHO)
 r, t_yade = duration(s)
 check(abs(r.e - 0.7) <= 1e-3, "from_restitution_and_contact_time: e", f"YADE e = {r.e:.6f} (asked 0.7)")
 check(abs(t_yade / 2e-4 - 1) <= 2 * s.contact_time / 2000 / 2e-4 * 1.0001, "from_restitution_and_contact_time: t_c",
