@@ -97,7 +97,9 @@ def geometry(radius, density, against="particle"):
     if against not in AGAINST:
         raise ValueError(f"against = {against!r} is invalid: must be one of {AGAINST}")
     m = _params.sphere_mass(radius, density)
-    return (0.5 * m, radius) if against == "particle" else (m, 2.0 * radius)
+    if against == "particle":
+        return _params.reduced_mass(m, m), _params.reduced_radius(radius, radius)
+    return _params.reduced_mass(m), _params.reduced_radius(radius)
 
 
 @dataclass
@@ -205,6 +207,16 @@ class Fit:
         return "\n".join(lines)
 
 
+def _scale(name, k1, m_r, v):
+    """The natural size of kc (k1) and of fa (alpha = 1 at the median speed, Eq. 27c)."""
+    return k1 if name == "kc" else _params.fa_from_alpha(1.0, k1, m_r, float(np.median(v)))
+
+
+def _phiF_for(v_p, k1, eta, m_r, a12):
+    """phiF that puts the plastic limit at v_p (Eq. 19 with fa = 0: v_p = sqrt(k1/m_r) (1 + eta)/eta phiF a12)."""
+    return v_p / (math.sqrt(k1 / m_r) * (1 + eta) / eta * a12)
+
+
 def _open_ends(ci):
     """JSON has no infinity: an interval's open end (the data do not bound it) is null."""
     return {n: [x if math.isfinite(x) else None for x in lohi] for n, lohi in ci.items()}
@@ -224,7 +236,6 @@ def _starts(names, given, setup, data, n, rng):
     """Starting points: the given values, then draws from grids of the dimensionless groups
     (eta, beta, v_p over the data's range, the adhesivity alpha at the median speed)."""
     k1 = given["k1"]
-    v_med = float(np.median(data.v))
     out = [dict(given)]
     etas, betas = (0.5, 2.0, 8.0, 30.0, 100.0), (0.0, 0.2, 1.0, 4.0)
     vps = np.geomspace(data.v.min() / 3, 3 * data.v.max(), 5)
@@ -240,9 +251,9 @@ def _starts(names, given, setup, data, n, rng):
             p["kc"] = p["k1"] * rng.choice(betas)
         if "phiF" in names:
             v_p = rng.choice(vps)
-            p["phiF"] = min(1.0, v_p / (math.sqrt(p["k1"] / setup.m_r) * (1 + eta) / max(eta, 1e-12) * setup.a12))
+            p["phiF"] = min(1.0, _phiF_for(v_p, p["k1"], max(eta, 1e-12), setup.m_r, setup.a12))
         if "fa" in names:
-            p["fa"] = rng.choice(alphas) * math.sqrt(p["k1"] * setup.m_r) * v_med
+            p["fa"] = rng.choice(alphas) * _scale("fa", p["k1"], setup.m_r, data.v)
         out.append(p)
     return out
 
@@ -266,7 +277,7 @@ def _log_jacobian(names, p, setup, data, w):
                 cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / (2 * h))
             at_zero.append(False)
         else:
-            scale = p["k1"] if n == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))
+            scale = _scale(n, p["k1"], setup.m_r, data.v)
             ph = dict(p)
             ph[n] = h * scale
             cols.append((setup.curve(data.v, ph) - setup.curve(data.v, p)) * w / h)
@@ -293,7 +304,7 @@ def _identify(names, p, setup, data, w, s2):
     ci, undetermined = {}, []
     for i, n in enumerate(names):
         if at_zero[i]:  # d/d(value/scale): the interval's upper end from the linear sd
-            scale = p["k1"] if n == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))
+            scale = _scale(n, p["k1"], setup.m_r, data.v)
             ci[n] = [0.0, float(Z95 * sd[i] * scale) if math.isfinite(sd[i]) else math.inf]
             if not math.isfinite(sd[i]):
                 undetermined.append(n)
@@ -339,8 +350,8 @@ def _profile_values(m, p, setup, data):
     if m == "kp":
         eta = p["kp"] / p["k1"] - 1
         return [(-1, p["k1"] * (1 + eta / f)), (1, p["k1"] * (1 + eta * f))]
-    if m in ("kc", "fa") and p[m] <= 1e-12 * (p["k1"] if m == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))):
-        return [(1, 0.1 * (p["k1"] if m == "kc" else math.sqrt(p["k1"] * setup.m_r) * float(np.median(data.v))))]
+    if m in ("kc", "fa") and p[m] <= 1e-12 * _scale(m, p["k1"], setup.m_r, data.v):
+        return [(1, 0.1 * _scale(m, p["k1"], setup.m_r, data.v))]
     out = [(-1, p[m] / f)]
     if m != "phiF" or p[m] < 1.0:
         out.append((1, min(p[m] * f, 1.0) if m == "phiF" else p[m] * f))
@@ -433,7 +444,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     _theory._law(values["k1"], values["kp"], values["phiF"], a12)
     if values["kp"] == values["k1"] and "kp" in free:
         values["kp"] = values["k1"] * 1.5
-    scale = {"kc": values["k1"], "fa": math.sqrt(values["k1"] * m_r) * float(np.median(data.v))}
+    scale = {n: _scale(n, values["k1"], m_r, data.v) for n in ("kc", "fa")}
     w = 1.0 / data.sigma if data.sigma is not None else np.ones(len(data.v))
     fixed = {n: values[n] for n in PARAMETERS}
     rng = np.random.default_rng(seed)
@@ -550,7 +561,7 @@ def from_groups(eta, beta, phiF, v_p, radius, density, against="particle"):
     if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
     m_r, a12 = geometry(radius, density, against)
-    k1 = m_r * (v_p * eta / ((1 + eta) * phiF * a12)) ** 2  # v_p = sqrt(k1/m_r) (1 + eta)/eta phiF a12
+    k1 = m_r * (_phiF_for(v_p, 1.0, eta, 1.0, a12) / phiF) ** 2  # _phiF_for scales as 1/sqrt(k1/m_r)
     return {"k1": k1, "kp": (1 + eta) * k1, "kc": beta * k1, "phiF": phiF}
 
 
@@ -601,7 +612,7 @@ def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, aga
     chi = 0.5 * (lo + hi)
     m_r, a12 = geometry(radius, density, against)
     k1 = m_r * (contact_duration(chi, eta, beta, interpolation) / t_c) ** 2
-    phiF = (v / chi) / (math.sqrt(k1 / m_r) * (1 + eta) / eta * a12)
+    phiF = _phiF_for(v / chi, k1, eta, m_r, a12)
     if not 0 < phiF <= 1:
         raise ValueError(f"t_c = {t_c!r} and v = {v!r} need phiF = {phiF:.4g}, outside (0, 1]: the overlap would exceed "
                          "the particle's size")
