@@ -14,6 +14,7 @@ Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.c
 import json
 import math
 import os
+import tempfile
 import time
 
 from yade import O
@@ -424,8 +425,8 @@ def parse_args(figure, argv):
         p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
     try:  # an unwritable --out fails now, not after the computation
         os.makedirs(a.out, exist_ok=True)
-        _out.write_atomic(os.path.join(a.out, ".writable"), "")
-        os.remove(os.path.join(a.out, ".writable"))
+        with tempfile.NamedTemporaryFile(dir=a.out, prefix=".writable-"):
+            pass  # a name of its own: two jobs sharing --out must not remove each other's probe
     except OSError as e:
         p.error(f"--out {a.out}: not writable ({e.strerror})")
     return a, amps, slow, periods

@@ -152,7 +152,7 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
         ax.set_xlabel("δ [µm]")
         ax.set_ylabel("f [mN]")
         ax.set_ylim(-PAPER["kc"] * dmax * 1.3e3, PAPER["kp"] * max(dmax - phiF * a12, 0) * 1.2e3 + PAPER["k1"] * dmax * 1.2e3)
-        rows += [(chi, t[0], t[1], t[2], t[3]) for t in r.trace]
+        rows += [(chi, t[0], t[1], t[2], t[3]) for t in r.trace[::10]]  # every 10th step
         print(f"[fig7] chi = {chi}: {'stuck' if r.stuck else 'e = %.4f' % r.e}", flush=True)
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")

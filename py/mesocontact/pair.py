@@ -98,8 +98,8 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     t_c = _params.contact_time(mixed["kp"], m_r)
     O.dt = dt if dt is not None else t_c / steps_per_contact
 
-    start_gap = gap if gap is not None else -delta_a + 3.0 * v_inf * O.dt
-    factor = 1.0 + 1.2 * start_gap / (radius1 + radius2)  # detect at the start gap, with margin
+    start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * v_inf * O.dt
+    factor = 1.0 + 1.2 * max(start_gap, -delta_a) / (radius1 + radius2)  # detect the whole force range, with margin
     b1 = _utils.sphere((0, 0, 0), radius1, material=m1)
     b2 = _utils.sphere((radius1 + radius2 + start_gap, 0, 0), radius2, material=m2)
     ids = tuple(O.bodies.append([b1, b2]))
@@ -144,8 +144,8 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     mass = _params.sphere_mass(radius, m.density)
     t_c = _params.contact_time(mixed["kp"], mass)
     O.dt = dt if dt is not None else t_c / steps_per_contact
-    start_gap = gap if gap is not None else -delta_a + 3.0 * max(v_inf, 1e-12) * O.dt
-    factor = 1.0 + 1.2 * start_gap / radius
+    start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * max(v_inf, 1e-12) * O.dt
+    factor = 1.0 + 1.2 * max(start_gap, -delta_a) / radius
     size = 50 * radius
     if kind == "box":
         wall = _utils.box((0, 0, -size), (size, size, size), material=w, fixed=True)
@@ -172,6 +172,13 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     O.trackEnergy = track_energy
     return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0, start_gap=start_gap,
                      mixed=mixed)
+
+
+def _pull_in_range(mixed):
+    """The gap across which a force acts on approach: -deltaA for reversible adhesion; none for
+    jump-in (no force before the first touch, so the pair may start close: a slow approach over
+    the whole pull-off range would cost millions of force-free steps)."""
+    return -mixed["deltaA"] if mixed["adhesion"] == "reversible" else 0.0
 
 
 def overlap(s):
@@ -216,12 +223,12 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     if d_max > radius:
         raise ValueError(f"v_inf = {s.v_inf!r} is too fast for this pair: the collision would reach the overlap "
                          f"{d_max:.3g} m, {d_max / radius:.3g} radii; the bodies would pass through each other")
-    approach = max(s.start_gap, -s.delta_a) / (s.v_inf * O.dt)
+    approach = s.start_gap / (s.v_inf * O.dt)
     t_load = _params.contact_time(p["k1"], s.m_r)
     steps = int(max_contact_times * t_load / O.dt) + int(approach) + 10
     if steps > max_steps:
         raise ValueError(f"max_steps = {max_steps:g} is too small: this collision may need {steps:.3g} steps ({approach:.3g} to "
-                         f"approach over the gap {max(s.start_gap, -s.delta_a):.3g} m at {s.v_inf:g} m/s, dt = {O.dt:.3g} s)")
+                         f"approach over the gap {s.start_gap:.3g} m at {s.v_inf:g} m/s, dt = {O.dt:.3g} s)")
     trace = []
     check_every = max(1, int(0.02 * s.contact_time / O.dt))
     limit = O.iter + steps

@@ -96,6 +96,32 @@ class ReferenceValues(unittest.TestCase):
         self.assertAlmostEqual(theory.widened_kp(100, 500, 0.1, 0.1), 500, places=9)  # B = 1 gives kp back
         self.assertGreater(theory.widened_kp(100, 500, 0.05, 0.5), 500)
 
+    def test_widened_kp_keeps_small_overlaps(self):
+        # Appendix A's purpose, checked from the force law itself: below the old deltaMax^p the
+        # tuned model's k2(deltaMax) = k1 + (kp' - k1) deltaMax/deltaMax^p' (Eq. 9) equals the
+        # reference's, so every collision that stays below it ends alike (Eq. 21)
+        a12, m_r = 1.1e-3, 5.6e-6
+        for k1, kp, phi, phi2 in ((100, 500, 0.1, 0.5), (10, 1e4, 0.02, 0.9), (1e3, 1.5e3, 0.3, 0.31)):
+            kp2 = theory.widened_kp(k1, kp, phi, phi2)
+            slope = (kp - k1) / theory.delta_max_p(k1, kp, phi, a12)
+            slope2 = (kp2 - k1) / theory.delta_max_p(k1, kp2, phi2, a12)
+            self.assertAlmostEqual(slope2 / slope, 1.0, places=12)
+            v = 0.9 * theory.plastic_limit_velocity(k1, kp, phi, a12, m_r)
+            e1 = theory.pair_collision(v, k1, kp, 0.3 * k1, phi, a12, m_r).e
+            e2 = theory.pair_collision(v, k1, kp2, 0.3 * k1, phi2, a12, m_r).e
+            self.assertAlmostEqual(e1, e2, places=12)
+
+    def test_asymptote_validity(self):
+        # (eta chi)^-1/2 is sqrt(1 + 1/(eta chi)) below e1 = (1 + eta chi)^-1/2: within 5 % for
+        # eta chi >= 1/(1.05^2 - 1) = 9.756; the sqrt rule's (eta sqrt chi)^-1/2 likewise
+        edge = 1.0 / (1.05 ** 2 - 1.0)
+        for eta in (50.0, 500.0):
+            chi = edge / eta
+            self.assertAlmostEqual(theory.restitution_asymptote(chi, eta) / theory.restitution_fa0(chi, eta, 0), 1.05, places=9)
+            chi_s = (edge / eta) ** 2
+            self.assertAlmostEqual(theory.restitution_asymptote(chi_s, eta, 0.0, "sqrt")
+                                   / theory.restitution_fa0(chi_s, eta, 0, "sqrt"), 1.05, places=9)
+
 
 class TimeStep(unittest.TestCase):
     def test_binding_stiffness(self):

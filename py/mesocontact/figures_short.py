@@ -1,0 +1,86 @@
+"""Figs. 5 and 6 of the short paper ("Sticking of adhesive particles in elasto-plastic
+collisions"): e against the approach speed v_i^inf with jump-in adhesion (the non-contact
+stiffness is kc there: kca = kc). YADE pair collisions over the closed form, inside ``yade``."""
+import os
+import time
+
+from . import theory
+from .figures import DENSITY, PAPER, RADIUS, _m_r, _progress, _write_csv, plt
+from .figures_appendix import _collide, _log_grid, _note, _save
+
+SHORT = dict(k1=100.0, kp=500.0, kc=100.0, phiF=PAPER["phiF"])
+FA = 5e-7  # N, Fig. 5
+
+
+def _e_theory(v, mat, fa):
+    return theory.pair_collision(v, mat["k1"], mat["kp"], mat["kc"], mat["phiF"], RADIUS, _m_r(), fa=fa,
+                                 kca=mat["kc"], adhesion="jumpIn" if fa > 0 else "none").e
+
+
+def _run(tag, curves, t0):
+    """curves: (label, mat, fa, speeds) -> rows (label, fa, v, e_yade, e_theory, stuck)."""
+    rows, n = [], sum(len(c[3]) for c in curves)
+    for label, mat, fa, speeds in curves:
+        m = dict(mat, density=DENSITY, fa=fa, kca=mat["kc"], adhesion="jumpIn" if fa > 0 else "none")
+        for v in speeds:
+            r = _collide(m, v, max_contact_times=15)
+            rows.append((label, fa, v, r.e, _e_theory(v, mat, fa), int(r.stuck)))
+            _progress(tag, len(rows), n, t0)
+    return rows
+
+
+def _plot(ax, curves, rows, colors, grid):
+    for (label, mat, fa, _), color, marker in zip(curves, colors, "sodv^>"):
+        ax.plot(grid, [_e_theory(v, mat, fa) for v in grid], "-", color=color, lw=1, label=f"theory, {label}")
+        pts = [(r[2], r[3]) for r in rows if r[0] == label]
+        ax.plot(*zip(*pts), marker, mfc="none", color=color, ms=4, label=f"YADE, {label}")
+    ax.set_xscale("log")
+    ax.set_xlabel("approach speed v_i^∞ [m/s]")
+    ax.set_ylabel("coefficient of restitution e")
+
+
+HEADER = ["curve", "fa_N", "v_inf_m_s", "e_yade", "e_theory", "stuck"]
+PARAM_LINE = f"k1 = 100, kc = kca = 100 N/m, φf = {PAPER['phiF']:g}, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, jump-in"
+
+
+def short_fig5(outdir, quick=False):
+    """Irreversible elastic-adhesive (kp = k1) against elasto-plastic adhesive (kp = 5 k1) spheres,
+    fa = 5e-7 N: one low-velocity sticking limit, a second sticking regime only with plasticity."""
+    t0 = time.time()
+    speeds = [1e-4, 0.1, 2.0] if quick else _log_grid(1e-5, 3.0, 23)
+    v_fa = FA / (_m_r() * SHORT["kc"]) ** 0.5  # Eq. 19 of the short paper
+    curves = [("elastic-adhesive (kp = k1)", dict(SHORT, kp=SHORT["k1"]), FA, speeds),
+              ("elasto-plastic adhesive (kp = 5 k1)", SHORT, FA, speeds)]
+    rows = _run("short fig5", curves, t0)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    _plot(ax, curves, rows, ("tab:blue", "tab:red"), _log_grid(1e-5, 3.0, 600))
+    ax.axvline(v_fa, color="0.5", lw=0.6, ls=":")
+    ax.text(v_fa * 1.1, 0.05, f"v_f^a = {v_fa:.2g} m/s", fontsize=7, color="0.3")
+    ax.set_ylim(-0.02, 1.05)
+    ax.set_title(f"Short paper, Fig. 5: f_a = {FA:g} N")
+    ax.legend(fontsize=7, loc="center left")
+    _note(ax, PARAM_LINE, loc="lower right")
+    _save(fig, outdir, "short_fig5_elastic_vs_plastic")
+    _write_csv(os.path.join(outdir, "short_fig5_elastic_vs_plastic.csv"), HEADER, rows)
+    return dict(figure="short 5", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows),
+                v_fa=v_fa)
+
+
+def short_fig6(outdir, quick=False, fas=(0.0, 5e-7, 5e-6, 5e-5, 5e-4, 5e-3)):
+    """e against v_i^inf for several fa (elasto-plastic, kp = 5 k1): the low-velocity sticking limit
+    grows with fa until the pair sticks at every speed."""
+    t0 = time.time()
+    fas = (0.0, 5e-5, 5e-3) if quick else fas
+    speeds = [1e-3, 0.1] if quick else _log_grid(1e-5, 3.0, 15)
+    curves = [(f"f_a = {fa:g} N", SHORT, fa, speeds) for fa in fas]
+    rows = _run("short fig6", curves, t0)
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    _plot(ax, curves, rows, ("k", "tab:cyan", "tab:green", "tab:orange", "tab:red", "tab:purple"),
+          _log_grid(1e-5, 3.0, 600))
+    ax.set_ylim(-0.02, 1.05)
+    ax.set_title("Short paper, Fig. 6: the strength of the non-contact adhesion")
+    ax.legend(fontsize=6, loc="center left", ncol=2)
+    _note(ax, "kp = 500 N/m; " + PARAM_LINE, loc="lower right")
+    _save(fig, outdir, "short_fig6_adhesion_strength")
+    _write_csv(os.path.join(outdir, "short_fig6_adhesion_strength.csv"), HEADER, rows)
+    return dict(figure="short 6", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows))

@@ -1,0 +1,30 @@
+# One figure of the papers, or all of them (docs/figures.md): YADE over the closed form, CSV + PNG.
+#   yade -n -x scripts/figure.py N [--paper long|short] [--out DIR] [--quick]
+#   yade -n -x scripts/figure.py --all [--no-tablet] [--out DIR] [--quick]
+# long: Figs. 5-19 of "A contact model for sticking of adhesive meso-particles" (16-19 are the
+# tablet of Appendix F, hours of computing, cached in DIR/tablet); short: Figs. 5-6 of "Sticking
+# of adhesive particles in elasto-plastic collisions". --quick: a few points per figure.
+import argparse
+import sys
+
+from mesocontact import atlas
+
+p = argparse.ArgumentParser(prog="yade -n -x scripts/figure.py",
+                            description="Figures of the papers: YADE pair collisions over the closed form (CSV + PNG).")
+p.add_argument("number", nargs="?", type=int, help="figure number in the chosen paper")
+p.add_argument("--paper", choices=("long", "short"), default="long", help="which paper (default: long)")
+p.add_argument("--out", default="results/figures", help="output directory (default: results/figures)")
+p.add_argument("--all", action="store_true", help="every figure of both papers")
+p.add_argument("--no-tablet", action="store_true", help="with --all: leave out the tablet figures 16-19")
+p.add_argument("--quick", action="store_true", help="a few points per figure (for tests)")
+a = p.parse_args(sys.argv[1:])
+if a.all == (a.number is not None):
+    p.error("give a figure number or --all (not both)")
+if not a.all:
+    try:
+        atlas.known(a.paper, a.number)
+    except ValueError as e:
+        p.error(str(e))
+    atlas.figure(a.paper, a.number, a.out, a.quick)
+else:
+    atlas.everything(a.out, a.quick, tablet=not a.no_tablet)
