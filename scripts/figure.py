@@ -1,13 +1,14 @@
 # One figure of the papers, or all of them (docs/figures.md): YADE over the closed form, CSV + PNG.
 #   yade -n -x scripts/figure.py N [--paper long|short] [--out DIR] [--quick]
 #   yade -n -x scripts/figure.py --all [--no-tablet] [--out DIR] [--quick]
+#   yade-batch --executable build/yade-meso batch/figures.table scripts/figure.py   (columns: the options)
 # long: Figs. 5-19 of "A contact model for sticking of adhesive meso-particles" (16-19 are the
 # tablet of Appendix F, hours of computing, cached in DIR/tablet); short: Figs. 5-6 of "Sticking
 # of adhesive particles in elasto-plastic collisions". --quick: a few points per figure.
 import argparse
 import sys
 
-from mesocontact import atlas
+from mesocontact import atlas, batch
 
 p = argparse.ArgumentParser(prog="yade -n -x scripts/figure.py",
                             description="Figures of the papers: YADE pair collisions over the closed form (CSV + PNG).")
@@ -17,7 +18,8 @@ p.add_argument("--out", default="results/figures", help="output directory (defau
 p.add_argument("--all", action="store_true", help="every figure of both papers")
 p.add_argument("--no-tablet", action="store_true", help="with --all: leave out the tablet figures 16-19")
 p.add_argument("--quick", action="store_true", help="a few points per figure (for tests)")
-a = p.parse_args(sys.argv[1:])
+a = p.parse_args(batch.argv(sys.argv[1:], positional="number", number=None, paper="long", out="results/figures",
+                            all=False, no_tablet=False, quick=False))
 if a.all == (a.number is not None):
     p.error("give a figure number or --all (not both)")
 if not a.all:

@@ -6,6 +6,7 @@
 Pair figures (long 5-15, short 5-6) run YADE collisions over the closed form; long 16-19 are
 the tablet of Appendix F (``mesocontact.campaign``, hours, runs cached in DIR/tablet). Every
 figure writes CSV + PNG into DIR and its summary into DIR/atlas.json."""
+import fcntl
 import json
 import os
 import time
@@ -86,13 +87,16 @@ def everything(out, quick=False, tablet=True):
 
 
 def _merge(out, name, summary):
+    """Read, update, write atlas.json under a lock: yade-batch jobs of one table share the file."""
     path = os.path.join(out, "atlas.json")
-    try:
-        with open(path) as f:
-            table = json.load(f)
-    except (OSError, ValueError):
-        table = {}
-    table[name] = summary
-    if name == "long-6":
-        table["long-8"] = summary  # one run makes both
-    outputs.write_atomic(path, json.dumps(table, indent=1, sort_keys=True))
+    with open(os.path.join(out, ".atlas.lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            with open(path) as f:
+                table = json.load(f)
+        except (OSError, ValueError):
+            table = {}
+        table[name] = summary
+        if name == "long-6":
+            table["long-8"] = summary  # one run makes both
+        outputs.write_atomic(path, json.dumps(table, indent=1, sort_keys=True))

@@ -38,6 +38,23 @@ class Batch(unittest.TestCase):
             self.assertGreater(j["e_theory"], 0, name)
         self.assertIn("kp=5100", j["params"])
 
+    def test_shipped_impact_table(self):
+        # examples/impact-velocity.table as the README runs it: every line a job, each meets theory
+        d = tempfile.mkdtemp()
+        with open(os.path.join(ROOT, "examples", "impact-velocity.table")) as f:
+            text = f.read()
+        r = batch(text, d)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        names = [line.split()[0] for line in text.splitlines() if line.startswith("v-")]
+        regimes = set()
+        for name in names:
+            with open(os.path.join(d, "results", "batch", name + ".json")) as f:
+                j = json.load(f)
+            self.assertLessEqual(abs(j["e_yade"] - j["e_theory"]), 1e-3, name)
+            regimes.add(j["regime"])
+        self.assertEqual(len(names), 5)
+        self.assertEqual(regimes, {"rebound", "sticking-contact", "sticking-noncontact"})  # both sticking regimes
+
     def test_unknown_column_is_named(self):
         d = tempfile.mkdtemp()
         batch("description  kq\nbad  1\n", d)

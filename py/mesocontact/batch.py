@@ -1,0 +1,38 @@
+"""yade-batch support: a script that takes command-line options also runs as a yade-batch job,
+its options then coming from the job's line of the parameter table (inside ``yade``).
+
+    argv = batch.argv(sys.argv[1:], positional="number", number=None, paper="long", quick=False)
+
+Run alone, argv is the command line. Under yade-batch (which sets YADE_BATCH), the table's
+columns are read with ``yade.utils.readParamsFromTable`` (the keywords are the columns a table
+may have, with their defaults; an unknown column fails the job naming it) and turned into the
+same options: ``name=value`` becomes ``--name value`` (underscores as dashes), a True flag
+``--name``, a False or None one nothing, and the column named by ``positional`` (if any) the
+leading positional argument."""
+import os
+
+
+def under_batch():
+    """Whether yade-batch started this process (it names the table line in YADE_BATCH)."""
+    return bool(os.environ.get("YADE_BATCH"))
+
+
+def argv(command_line, positional=None, **columns):
+    if not under_batch():
+        return list(command_line)
+    from yade import utils
+    utils.readParamsFromTable(noTableOk=True, **columns)
+    from yade.params import table
+    out = []
+    for name in columns:
+        value = getattr(table, name)
+        if name == positional:
+            out = ([] if value is None else [str(value)]) + out
+        elif value is True:
+            out.append("--" + name.replace("_", "-"))
+        elif value is False or value is None:
+            continue
+        else:
+            out += ["--" + name.replace("_", "-"), str(value)]
+    print(f"[batch] {os.environ['YADE_BATCH']}: options {' '.join(out)}", flush=True)
+    return out
