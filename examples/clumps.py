@@ -13,10 +13,10 @@ from mesocontact import params, scene
 
 quick = "--quick" in sys.argv[1:]
 N, R, RHO, K1, KP = (12, 0.5e-3, 2000.0, 1000.0, 5000.0) if quick else (60, 0.5e-3, 2000.0, 1000.0, 5000.0)
-mat = w.MesoMat(k1=K1, kp=KP, kc=0.5 * KP, phiF=0.05, fa=2e-5, kca=200.0, adhesion="jumpIn", gammaN=1e-4,
+mat = w.MesoMat(k1=K1, kp=KP, kc=0.5 * KP, phiF=0.05, fa=2e-5, kca=200.0, adhesion="jumpIn", gammaN=2e-3,
                 density=RHO, frictionAngle=math.atan(0.5), kt=0.2 * K1, gammaT=2e-5)
 O.materials.append(mat)
-O.bodies.append(utils.box((0, 0, -R), (12 * R, 12 * R, R), material=mat, fixed=True))
+O.bodies.append(utils.box((0, 0, -R), (60 * R, 60 * R, R), material=mat, fixed=True))  # wide: nothing falls off
 rnd = random.Random(5)
 clumps = []
 for c in range(N):
@@ -30,12 +30,12 @@ O.engines = [
     w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()]),
     w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom()],
                       [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
-    w.MesoBackgroundDamping(gammaB=2e-4, gammaBR=2e-4, reference="lab"),  # air drag (clumps included)
+    w.MesoBackgroundDamping(gammaB=2e-5, gammaBR=2e-5, reference="lab"),  # air drag: terminal speed about 1 m/s
     w.NewtonIntegrator(damping=0, gravity=(0, 0, -9.81)),
     w.PyRunner(iterPeriod=200, command="plot.addData(t=O.time, Ek=utils.kineticEnergy())"),
 ]
 scene.set_detection()
-O.dt = params.time_step(kp=KP, m_min=params.sphere_mass(R, RHO), kt=0.2 * K1, gamma=1e-4)
+O.dt = params.time_step(kp=KP, m_min=params.sphere_mass(R, RHO), kt=0.2 * K1, gamma=2e-3)
 plot.plots = {"t": ("Ek",)}
 gaps0 = {cid: [(O.bodies[a].state.pos - O.bodies[b].state.pos).norm() for a in mids for b in mids if a < b]
          for cid, mids in clumps}

@@ -1,4 +1,4 @@
-# Periodic triaxial compression of a cohesive packing with PeriTriaxController (about 40 s;
+# Periodic triaxial compression of a cohesive packing with PeriTriaxController (about a minute;
 # --quick: a few s).  yade -n -x examples/periodic_triaxial.py [--quick]
 # A gas of adhesive, frictional spheres in a periodic cell is compressed isotropically to p0,
 # then shortened along z at constant lateral stress p0. Prints and plots (yade.plot) the
@@ -12,7 +12,7 @@ from yade import wrapper as w
 from mesocontact import params
 
 quick = "--quick" in sys.argv[1:]
-N, R, RHO = (150, 0.5e-3, 2000.0) if quick else (400, 0.5e-3, 2000.0)
+N, R, RHO = (150, 0.5e-3, 2000.0) if quick else (300, 0.5e-3, 2000.0)
 K1, KP = 100.0, 500.0
 P0 = 0.005 * K1 / (2 * R)  # confining stress: overlaps of about half a percent of d
 mat = w.MesoMat(k1=K1, kp=KP, kc=0.5 * KP, phiF=0.05, gammaN=2e-4, density=RHO, frictionAngle=math.atan(0.4),
@@ -32,7 +32,7 @@ def done_isotropic():
     stage.update(name="shear", iter0=O.iter, eps0=O.cell.trsf[2, 2])
 
     # z: a strain goal, counted (as PeriTriaxController does) from the start of the isotropic stage
-    tri.goal, tri.stressMask = (-P0, -P0, tri.strain[2] - (0.05 if quick else 0.2)), 0b011
+    tri.goal, tri.stressMask = (-P0, -P0, tri.strain[2] - (0.05 if quick else 0.1)), 0b011
     tri.maxStrainRate = (1.0, 1.0, 0.5)  # inertial number about 1e-3: quasi-static
     tri.doneHook = "O.pause()"
 

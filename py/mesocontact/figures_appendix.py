@@ -55,10 +55,19 @@ def _sweep(tag, curves, t0, rows, interpolation="linear"):
             r = _collide(mat, v, max_contact_times=15)
             e_th = theory.restitution_fa0(chi, eta, beta, interpolation)
             rows.append((label, eta, beta, chi, v, r.e, e_th, int(r.stuck)))
+            _live(chi=chi, v=v, e_yade=r.e, e_theory=e_th)
             out.setdefault(label, []).append((chi, r.e))
             k += 1
             _progress(tag, k, n, t0)
     return out
+
+
+def _live(**point):
+    """Each collision also goes to yade.plot (plot.plot() in the shell shows e as it comes)."""
+    from yade import plot
+    if not plot.plots:
+        plot.plots = {"chi": ("e_yade", "e_theory")} if "chi" in point else {"v": ("e_yade", "e_theory")}
+    plot.addData(**point)
 
 
 def _worst(rows, i_sim=5, i_th=6):

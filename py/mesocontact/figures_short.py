@@ -6,7 +6,7 @@ import time
 
 from . import theory
 from .figures import DENSITY, PAPER, RADIUS, _m_r, _progress, _write_csv, plt
-from .figures_appendix import _collide, _log_grid, _note, _save
+from .figures_appendix import _collide, _live, _log_grid, _note, _save
 
 SHORT = dict(k1=100.0, kp=500.0, kc=100.0, phiF=PAPER["phiF"])
 FA = 5e-7  # N, Fig. 5
@@ -25,6 +25,7 @@ def _run(tag, curves, t0):
         for v in speeds:
             r = _collide(m, v, max_contact_times=15)
             rows.append((label, fa, v, r.e, _e_theory(v, mat, fa), int(r.stuck)))
+            _live(v=v, e_yade=r.e, e_theory=rows[-1][4])
             _progress(tag, len(rows), n, t0)
     return rows
 

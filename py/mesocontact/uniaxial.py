@@ -23,6 +23,7 @@ try:
     from yade import O
     from yade import wrapper as _w
     from yade import Vector3
+    from yade import plot as _plot
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.uniaxial needs YADE: run it inside `yade`") from _exc
 
@@ -152,6 +153,7 @@ class Test:
     def _record(self):
         row = (O.iter, self.dx(), self.force())
         self.rows.append(row)
+        _plot.addData(iter=row[0], Dx=row[1], F_over_kp_d0=row[2])  # live in the shell: plot.plot()
         if self._on_record is not None:
             self._on_record(self, row)
 
