@@ -37,7 +37,7 @@ O.engines = [
 ]
 scene.set_detection()
 mass = params.sphere_mass(R, RHO)
-O.dt = params.time_step(kp=KP, m_min=mass, kt=0.2 * K1, gamma=1e-4)
+O.dt = scene.time_step(safety=0.05)  # every element of every pair that can meet, walls included
 t_c = params.contact_time(K1, mass / 2)
 
 

@@ -9,7 +9,7 @@ import sys
 
 from yade import O, plot, utils
 from yade import wrapper as w
-from mesocontact import params, scene
+from mesocontact import scene
 
 quick = "--quick" in sys.argv[1:]
 N, R, RHO, K1, KP = (12, 0.5e-3, 2000.0, 1000.0, 5000.0) if quick else (60, 0.5e-3, 2000.0, 1000.0, 5000.0)
@@ -35,7 +35,7 @@ O.engines = [
     w.PyRunner(iterPeriod=200, command="plot.addData(t=O.time, Ek=utils.kineticEnergy())"),
 ]
 scene.set_detection()
-O.dt = params.time_step(kp=KP, m_min=params.sphere_mass(R, RHO), kt=0.2 * K1, gamma=2e-3)
+O.dt = scene.time_step(safety=0.05)  # clump members count as spheres of their material
 plot.plots = {"t": ("Ek",)}
 gaps0 = {cid: [(O.bodies[a].state.pos - O.bodies[b].state.pos).norm() for a in mids for b in mids if a < b]
          for cid, mids in clumps}

@@ -2,7 +2,7 @@
 #   yade -n -x examples/deposition.py [--quick]
 # Shows: a MesoMat with friction, rolling and torsion; the walls as boxes of the same material;
 # the detection range set from the adhesion (scene.set_detection); the time step from every
-# stiffness and dashpot (params.time_step); yade.plot fed while it runs (plot.plot() in the
+# stiffness and dashpot (scene.time_step); yade.plot fed while it runs (plot.plot() in the
 # shell shows the kinetic energy and the coordination). Ends by checking that the bed is at rest.
 import math
 import sys
@@ -35,8 +35,7 @@ O.engines = [
     w.PyRunner(iterPeriod=500, command="report()"),
 ]
 print(f"detection factor {scene.set_detection():.5f} for the adhesion range {scene.adhesion_range():.2e} m")
-rmin = min(b.shape.radius for b in O.bodies if isinstance(b.shape, w.Sphere))
-O.dt = params.time_step(kp=250.0, m_min=params.sphere_mass(rmin, RHO), kt=10.0, kr=2.0, ko=2.0, gamma=2e-4)
+O.dt = scene.time_step(safety=0.05)  # kp with gamma0, sliding, rolling and torsion, sphere-sphere and sphere-wall
 spheres = [b for b in O.bodies if isinstance(b.shape, w.Sphere)]
 
 

@@ -9,7 +9,7 @@ import sys
 
 from yade import O, pack, plot, utils
 from yade import wrapper as w
-from mesocontact import params
+from mesocontact import params, scene
 
 quick = "--quick" in sys.argv[1:]
 N, R, RHO = (150, 0.5e-3, 2000.0) if quick else (300, 0.5e-3, 2000.0)
@@ -55,8 +55,7 @@ O.engines = [
     w.PyRunner(iterPeriod=200, command="record()"),
 ]
 tri = O.engines[3]
-rmin = min(b.shape.radius for b in O.bodies)
-O.dt = params.time_step(kp=KP, m_min=params.sphere_mass(rmin, RHO), kt=0.2 * K1, gamma=2e-4)
+O.dt = scene.time_step(safety=0.05)
 plot.plots = {"eps_z": ("q",), "eps_z ": ("p",)}
 O.run(400000 if quick else 2000000, True)
 if stage["name"] != "shear":

@@ -271,6 +271,34 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_p
 	return d;
 }
 
+Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, Real radius1, Real radius2, bool rotations) const
+{
+	auto meso = [](const shared_ptr<Material>& m, const char* name) {
+		const auto* mat = dynamic_cast<const MesoMat*>(m.get());
+		if (!mat) throw std::invalid_argument(std::string(name) + " must be a MesoMat, not " + (m ? m->getClassName() : std::string("None")));
+		return mat;
+	};
+	if (!(radius1 > 0) || !std::isfinite(radius1)) throw std::invalid_argument("radius1 = " + std::to_string(radius1) + " is invalid: must be a finite number > 0 [m]");
+	if (!(radius2 >= 0) || !std::isfinite(radius2)) throw std::invalid_argument("radius2 = " + std::to_string(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
+	const MesoMat*   a = meso(m1, "material1");
+	const MesoMat*   b = meso(m2, "material2");
+	meso::PairParams p = meso::mixPair(a->params(), b->params());
+	p.leverFactor      = leverFactor;
+	meso::setMechanisms(p, rotations);
+	auto inverses = [](const MesoMat& m, Real r, Real& invMass, Real& invInertia) { // a free sphere; 0: fixed
+		invMass = invInertia = 0;
+		if (r <= 0) return;
+		const Real mass = 4.0 / 3.0 * M_PI * r * r * r * m.density;
+		invMass         = 1 / mass;
+		invInertia      = 1 / (0.4 * mass * r * r);
+	};
+	Real invM1, invI1, invM2, invI2;
+	inverses(*a, radius1, invM1, invI1);
+	inverses(*b, radius2, invM2, invI2);
+	const char* which = "";
+	return meso::stableStep(p, meso::pairGeometry(p, radius1, radius2), invM1, invM2, invI1, invI2, &which);
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>& I)
 {
 	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;
@@ -326,7 +354,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const In
 		          << " with reversible non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
 		          << " m), so its pull-in over the range " << -phys.pair().deltaA
 		          << " m was missed: detect pairs at that gap (Bo1_Sphere_Aabb.aabbEnlargeFactor and "
-		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.pair sets them). "
+		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.scene.set_detection() sets them). "
 		          << "(Warned once.)" << std::endl;
 }
 
