@@ -23,6 +23,14 @@ def _m_r():
     return params.sphere_mass(RADIUS, DENSITY) / 2
 
 
+PARAM_NOTE = f"k1 = {PAPER['k1']:g}, kp = {PAPER['kp']:g}, kc = {PAPER['kc']:g} N/m, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, γ0 = 0"
+
+
+def _fig_note(fig, text):
+    """Parameters under the figure (a box inside a panel would hide data)."""
+    fig.text(0.5, 0.005, text, ha="center", va="bottom", fontsize=7.5, color="0.25")
+
+
 def _write_csv(path, header, rows):
     text = io.StringIO(newline="")
     w = csv.writer(text)
@@ -66,8 +74,9 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     ax.set_xlabel("ζ = v_i / v_p")
     ax.set_ylabel("coefficient of restitution e")
     ax.set_title("Fig. 5: jump-in adhesion, η = 4, β = 1")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
+    ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 0.08))
+    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig5_restitution_adhesive.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
@@ -104,7 +113,8 @@ def fig6_fig8(outdir, chis=None):
     ax.set_ylabel("e")
     ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
     ax.legend()
-    fig.tight_layout()
+    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig6_restitution.png"), dpi=150)
     plt.close(fig)
 
@@ -120,7 +130,8 @@ def fig6_fig8(outdir, chis=None):
     ax.set_ylabel("δ_c / δ_max^p")
     ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
     ax.legend()
-    fig.tight_layout()
+    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig8_sticking_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig6_restitution.csv"),
@@ -156,7 +167,8 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
         print(f"[fig7] chi = {chi}: {'stuck' if r.stuck else 'e = %.4f' % r.e}", flush=True)
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")
-    fig.tight_layout()
+    _fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig7_force_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),

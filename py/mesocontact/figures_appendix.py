@@ -6,7 +6,7 @@ import os
 import time
 
 from . import outputs, pair, theory
-from .figures import DENSITY, PAPER, RADIUS, _m_r, _progress, _write_csv, plt
+from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt
 
 K1 = PAPER["k1"]
 PHI_F = PAPER["phiF"]
@@ -27,11 +27,6 @@ def _collide(mat, v, **kw):
 def _note(ax, text, loc=None):
     """The figure's own parameters, under the plot (a box inside it would hide data)."""
     _fig_note(ax.figure, text)
-
-
-def _fig_note(fig, text):
-    """Parameters under a multi-panel figure (a box inside one panel would hide data)."""
-    fig.text(0.5, 0.005, text, ha="center", va="bottom", fontsize=7.5, color="0.25")
 
 
 def _save(fig, outdir, stem):
