@@ -3,7 +3,7 @@
 #   yade -n -x scripts/figure.py --all [--no-tablet] [--out DIR] [--quick]
 #   yade-batch --executable build/yade-meso batch/figures.table scripts/figure.py   (columns: the options)
 # long: Figs. 5-19 of "A contact model for sticking of adhesive meso-particles" (16-19 are the
-# tablet of Appendix F, hours of computing, cached in DIR/tablet); short: Figs. 5-6 of "Sticking
+# tablet of Appendix F, hours of computing, runs cached in --tablet-out); short: Figs. 5-6 of "Sticking
 # of adhesive particles in elasto-plastic collisions". --quick: a few points per figure.
 import argparse
 import sys
@@ -18,8 +18,10 @@ p.add_argument("--out", default="results/figures", help="output directory (defau
 p.add_argument("--all", action="store_true", help="every figure of both papers")
 p.add_argument("--no-tablet", action="store_true", help="with --all: leave out the tablet figures 16-19")
 p.add_argument("--quick", action="store_true", help="a few points per figure (for tests)")
+p.add_argument("--tablet-out", default="results/tablet",
+               help="figures 16-19: the tablet campaign's directory, whose runs are read back (default: results/tablet)")
 a = p.parse_args(batch.argv(sys.argv[1:], positional="number", number=None, paper="long", out="results/figures",
-                            all=False, no_tablet=False, quick=False))
+                            all=False, no_tablet=False, quick=False, tablet_out=None))
 if a.all == (a.number is not None):
     p.error("give a figure number or --all (not both)")
 if not a.all:
@@ -27,6 +29,6 @@ if not a.all:
         atlas.known(a.paper, a.number)
     except ValueError as e:
         p.error(str(e))
-    atlas.figure(a.paper, a.number, a.out, a.quick)
+    atlas.figure(a.paper, a.number, a.out, a.quick, a.tablet_out)
 else:
-    atlas.everything(a.out, a.quick, tablet=not a.no_tablet)
+    atlas.everything(a.out, a.quick, tablet=not a.no_tablet, tablet_out=a.tablet_out)

@@ -4,7 +4,7 @@
     yade -n -x scripts/figure.py --all [--no-tablet] [--quick]
 
 Pair figures (long 5-15, short 5-6) run YADE collisions over the closed form; long 16-19 are
-the tablet of Appendix F (``mesocontact.campaign``, hours, runs cached in DIR/tablet). Every
+the tablet of Appendix F (``mesocontact.campaign``, hours, runs cached in --tablet-out). Every
 figure writes CSV + PNG into DIR and its summary into DIR/atlas.json."""
 import fcntl
 import json
@@ -54,8 +54,9 @@ def known(paper, number):
         raise ValueError(f"figure {number} of the {paper} paper is not in the atlas (it has: {have})")
 
 
-def figure(paper, number, out, quick=False):
-    """Makes one figure; returns its summary (also merged into out/atlas.json)."""
+def figure(paper, number, out, quick=False, tablet_out=None):
+    """Makes one figure; returns its summary (also merged into out/atlas.json). The tablet's
+    figures (long 16-19) go to tablet_out (default out/tablet), where their runs are cached."""
     known(paper, number)
     key = (paper, number)
     os.makedirs(out, exist_ok=True)
@@ -64,7 +65,7 @@ def figure(paper, number, out, quick=False):
         summary = PAIR[key](out, quick)
     else:
         from . import campaign  # the tablet's figures: their own cached runs and outputs
-        tablet = os.path.join(out, "tablet")
+        tablet = tablet_out or os.path.join(out, "tablet")
         campaign.main(f"fig{number}", ["--out", tablet] + (["--quick"] if quick else []))
         summary = dict(figure=f"long {number}", outputs=tablet, note="see docs/tablet/README.md")
     summary["wall_clock_s"] = time.time() - t0
@@ -75,13 +76,13 @@ def figure(paper, number, out, quick=False):
     return summary
 
 
-def everything(out, quick=False, tablet=True):
+def everything(out, quick=False, tablet=True, tablet_out=None):
     """The whole atlas; returns {name: summary}."""
     t0, done = time.time(), {}
     keys = [("long", n) for n in LONG_PAIR if n != 8] + [("short", n) for n in SHORT]
     keys += [("long", n) for n in LONG_TABLET] if tablet else []
     for paper, n in keys:
-        done[f"{paper}-{n}"] = figure(paper, n, out, quick)
+        done[f"{paper}-{n}"] = figure(paper, n, out, quick, tablet_out)
     print(f"[atlas] {len(done)} figure commands in {time.time() - t0:.1f} s; outputs in {os.path.abspath(out)}", flush=True)
     return done
 
