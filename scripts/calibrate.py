@@ -13,7 +13,9 @@ import shutil
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+# Inside YADE (yade -x, yade-batch) __file__ names YADE's own launcher; argv[0] names this script.
+SCRIPT = os.path.abspath(sys.argv[0] if os.path.basename(sys.argv[0]) == "calibrate.py" else __file__)
+HERE = os.path.dirname(SCRIPT)
 sys.path.insert(0, os.path.join(HERE, "..", "py"))
 
 
@@ -112,7 +114,8 @@ def main(argv):
                                               "density": a.density, "against": a.against, "result": out}))
         yade = _launcher(a.yade)
         print(f"YADE check: {len(data.v)} pair collisions ({yade})", flush=True)
-        r = subprocess.run([yade, "-j1", "-n", "-x", os.path.abspath(__file__), "--yade-check", job])
+        env = {k: v for k, v in os.environ.items() if k != "YADE_BATCH"}  # the check is not a batch job
+        r = subprocess.run([yade, "-j1", "-n", "-x", SCRIPT, "--yade-check", job], env=env)
         if r.returncode != 0 or not os.path.exists(out):
             sys.exit(f"calibrate.py: the YADE check failed (exit code {r.returncode})")
         with open(out) as f:
@@ -132,4 +135,16 @@ def main(argv):
     print(f"wrote {os.path.join(a.out, 'calibration.json')} and calibration.png", flush=True)
 
 
-main(sys.argv[1:])
+def batch_argv(argv):
+    """Under yade-batch (YADE_BATCH set; this script then runs inside YADE) the options come from
+    the table's line: columns data (the CSV), radius, density and any other option, underscores
+    for dashes, e.g. no_yade_check=True."""
+    if not os.environ.get("YADE_BATCH") or "--yade-check" in argv:
+        return argv
+    from mesocontact import batch
+    return batch.argv(argv, positional="data", data=None, radius=None, density=None, against=None, adhesion=None,
+                      interpolation=None, free=None, k1=None, kp=None, kc=None, phiF=None, fa=None, kca=None, starts=None,
+                      bootstrap=None, seed=None, out=None, yade=None, no_yade_check=False)
+
+
+main(batch_argv(sys.argv[1:]))
