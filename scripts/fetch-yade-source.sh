@@ -25,8 +25,6 @@ for v in "$installed" "$fallback_version"; do
   if [ -f "$cache/$v/.complete" ]; then echo "$cache/$v/src"; exit 0; fi
 done
 
-SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-
 # The Debian archive URI this machine already uses (deb822 .sources first, then sources.list).
 uri=""
 for f in /etc/apt/sources.list.d/*.sources; do
@@ -40,23 +38,29 @@ fi
 [ -n "$uri" ] || { log "no Debian archive URI found in the apt configuration"; exit 1; }
 codename=$(. /etc/os-release; echo "$VERSION_CODENAME")
 
-list=/etc/apt/sources.list.d/yade-meso-source.sources
-want="Types: deb-src
+# A private apt configuration for this one download (its own sources, lists and cache in a
+# temporary directory): the machine's /etc/apt and /var/lib/apt stay as they were.
+apt_dir=$(mktemp -d)
+trap 'rm -rf "$apt_dir"' EXIT
+mkdir -p "$apt_dir/sources.list.d" "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
+cat > "$apt_dir/sources.list.d/yade-source.sources" <<SRC
+Types: deb-src
 URIs: $uri
 Suites: $codename $fallback_suite
 Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg"
-if [ ! -f "$list" ] || [ "$(cat "$list")" != "$want" ]; then
-  log "adding deb-src entries ($codename, $fallback_suite) for the configured Debian archive"
-  echo "$want" | $SUDO tee "$list" >/dev/null
-  $SUDO apt-get update -qq
-fi
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SRC
+APT=(apt-get -o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$apt_dir/sources.list.d"
+     -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache" -o "Debug::NoLocking=1"
+     -o "APT::Sandbox::User=$(id -un)")  # a private directory: no download sandbox user needed
+log "reading the source indexes of $uri ($codename, $fallback_suite) into a private apt directory"
+"${APT[@]}" update -qq
 
 try_version() {  # downloads and unpacks the .orig tarball of source version $1 into $cache/$1
   local v=$1 dl
   dl=$(mktemp -d)
   # apt-get source may fail on a missing .debian.tar.* although the .orig tarball arrived.
-  (cd "$dl" && apt-get source --download-only -qq "yade=$v" >/dev/null 2>&1) || true
+  (cd "$dl" && "${APT[@]}" source --download-only -qq "yade=$v" >/dev/null 2>&1) || true
   local tarball
   tarball=$(ls "$dl"/yade_*.orig.tar.* 2>/dev/null | head -n1 || true)
   if [ -z "$tarball" ]; then rm -rf "$dl"; return 1; fi
@@ -67,10 +71,10 @@ try_version() {  # downloads and unpacks the .orig tarball of source version $1 
 }
 
 if try_version "$installed"; then
-  v=$installed; log "unpacked the source of the installed version $v"
+  v=$installed; log "unpacked the source of the installed version $v (from $uri, $codename)"
 elif try_version "$fallback_version"; then
   v=$fallback_version
-  log "the source of the installed version $installed is not served; using $v"
+  log "the source of the installed version $installed is not served; using $v (from $uri, $fallback_suite)"
 else
   log "could not download YADE's source package ($installed or $fallback_version)"; exit 1
 fi
