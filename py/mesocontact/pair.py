@@ -16,6 +16,7 @@ try:
     from yade import O
     from yade import wrapper as _w
     from yade import utils as _utils
+    from yade import plot as _plot
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.pair needs YADE: run it inside `yade`") from _exc
 
@@ -207,7 +208,7 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     For a stuck pair, final_overlap is the lower turning point of the oscillation it settled
     into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further loading
     times (a pair that leaves during them rebounded after all and is reported so); with viscosity that is the resting overlap. record=True keeps
-    (t, delta, f_hysteretic, f_total) at every step.
+    (t, delta, f_hysteretic, f_total) at every step (and feeds them to yade.plot: t, overlap, force).
 
     Refused before it starts (ValueError): no approach (v_inf = 0), a step budget above
     max_steps, an impact so hard that it would press the bodies more than the smaller radius
@@ -280,6 +281,7 @@ def _watch():
     s = _DRIVER["scene"]
     if _DRIVER["trace"] is not None:
         _DRIVER["trace"].append(_sample(s))
+        _plot.addData(t=O.time, overlap=_DRIVER["trace"][-1][1], force=_DRIVER["trace"][-1][3])  # live: plot.plot()
     if overlap(s) > 0:
         _DRIVER["touched"] = True
     if overlap(s) < s.delta_a and separation_speed(s) > 0:
