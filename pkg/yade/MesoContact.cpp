@@ -210,6 +210,20 @@ namespace {
 		const auto* sphere = dynamic_cast<const Sphere*>(Body::byId(id, scene)->shape.get());
 		return sphere ? sphere->radius : 0;
 	}
+	const MesoMat& asMeso(const shared_ptr<Material>& m, const char* name) // the Python entry points' check
+	{
+		const auto* mat = dynamic_cast<const MesoMat*>(m.get());
+		if (!mat) throw std::invalid_argument(std::string(name) + " must be a MesoMat, not " + (m ? m->getClassName() : std::string("None")));
+		return *mat;
+	}
+}
+
+meso::PairParams Ip2_MesoMat_MesoMat_MesoPhys::mix(const MesoMat& m1, const MesoMat& m2, bool rotations) const
+{
+	meso::PairParams p = meso::mixPair(m1.params(), m2.params());
+	p.leverFactor      = leverFactor;
+	meso::setMechanisms(p, rotations);
+	return p;
 }
 
 shared_ptr<MesoPairParams>
@@ -225,23 +239,13 @@ Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const s
 	s.revision1 = mat1->revision();
 	s.revision2 = mat2->revision();
 	s.params    = shared_ptr<MesoPairParams>(new MesoPairParams());
-	meso::PairParams& p = s.params->params;
-	p                   = meso::mixPair(mat1->params(), mat2->params());
-	p.leverFactor       = leverFactor;
-	meso::setMechanisms(p, geom6D);
+	s.params->params = mix(*mat1, *mat2, geom6D);
 	return s.params;
 }
 
 boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool rotations) const
 {
-	auto meso = [](const shared_ptr<Material>& m, const char* name) {
-		const auto* mat = dynamic_cast<const MesoMat*>(m.get());
-		if (!mat) throw std::invalid_argument(std::string(name) + " must be a MesoMat, not " + (m ? m->getClassName() : std::string("None")));
-		return mat;
-	};
-	meso::PairParams p = meso::mixPair(meso(m1, "material1")->params(), meso(m2, "material2")->params());
-	p.leverFactor      = leverFactor;
-	meso::setMechanisms(p, rotations);
+	const meso::PairParams p = mix(asMeso(m1, "material1"), asMeso(m2, "material2"), rotations);
 	boost::python::dict d;
 	d["k1"]              = p.k1;
 	d["kp"]              = p.kp;
@@ -273,18 +277,11 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_p
 
 Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, Real radius1, Real radius2, bool rotations) const
 {
-	auto meso = [](const shared_ptr<Material>& m, const char* name) {
-		const auto* mat = dynamic_cast<const MesoMat*>(m.get());
-		if (!mat) throw std::invalid_argument(std::string(name) + " must be a MesoMat, not " + (m ? m->getClassName() : std::string("None")));
-		return mat;
-	};
 	if (!(radius1 > 0) || !std::isfinite(radius1)) throw std::invalid_argument("radius1 = " + std::to_string(radius1) + " is invalid: must be a finite number > 0 [m]");
 	if (!(radius2 >= 0) || !std::isfinite(radius2)) throw std::invalid_argument("radius2 = " + std::to_string(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
-	const MesoMat*   a = meso(m1, "material1");
-	const MesoMat*   b = meso(m2, "material2");
-	meso::PairParams p = meso::mixPair(a->params(), b->params());
-	p.leverFactor      = leverFactor;
-	meso::setMechanisms(p, rotations);
+	const MesoMat&         a = asMeso(m1, "material1");
+	const MesoMat&         b = asMeso(m2, "material2");
+	const meso::PairParams p = mix(a, b, rotations);
 	auto inverses = [](const MesoMat& m, Real r, Real& invMass, Real& invInertia) { // a free sphere; 0: fixed
 		invMass = invInertia = 0;
 		if (r <= 0) return;
@@ -293,8 +290,8 @@ Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1,
 		invInertia      = 1 / (0.4 * mass * r * r);
 	};
 	Real invM1, invI1, invM2, invI2;
-	inverses(*a, radius1, invM1, invI1);
-	inverses(*b, radius2, invM2, invI2);
+	inverses(a, radius1, invM1, invI1);
+	inverses(b, radius2, invM2, invI2);
 	const char* which = "";
 	return meso::stableStep(p, meso::pairGeometry(p, radius1, radius2), invM1, invM2, invI1, invI2, &which);
 }

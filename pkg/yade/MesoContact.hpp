@@ -217,6 +217,7 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 	std::map<std::tuple<const Material*, const Material*, bool>, Shared> sharedParams;
 	std::mutex                                                         sharedMutex;
 	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
+	meso::PairParams           mix(const MesoMat& m1, const MesoMat& m2, bool rotations) const; // the one mixing, for contacts and Python
 	std::atomic<bool>          dtWarned{ false }, rangeWarned{ false };
 	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I); // updates stableDt, warns once
 	void                       checkDetection(const MesoPhys& phys, const Interaction& I); // reversible adhesion: warns once if made in contact

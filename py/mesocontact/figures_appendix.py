@@ -24,9 +24,17 @@ def _collide(mat, v, **kw):
     return pair.collide(pair.build(RADIUS, v, mat), **kw)
 
 
-def _note(ax, text, loc=None):
-    """The figure's own parameters, under the plot (a box inside it would hide data)."""
-    _fig_note(ax.figure, text)
+def _finish_sweep(fig, ax, outdir, stem, rows, title, note, ylabel="e", legend_size=7, legend_loc="lower left"):
+    """What every e(chi) figure ends with: log chi axis, labels, legend, the parameters under the
+    plot, PNG and the sweep's CSV."""
+    ax.set_xscale("log")
+    ax.set_xlabel("χ = v_i / v_p")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=legend_size, loc=legend_loc)
+    _fig_note(fig, note)
+    _save(fig, outdir, stem)
+    _write_csv(os.path.join(outdir, stem + ".csv"), SWEEP_HEADER, rows)
 
 
 def _save(fig, outdir, stem):
@@ -108,14 +116,8 @@ def fig9(outdir, quick=False, phiF_tuned=0.5):
     ax.plot(grid, [e_tuned(c) for c in grid], "r--", lw=1.2, label=f"tuned: φf' = {phiF_tuned:g}, kp' = {kp_t:.4g} N/m (Eq. A.3)")
     ax.plot(*zip(*tuned_sim), "rv", mfc="none", label="YADE, tuned")
     ax.plot([], [], "ko", mfc="none", label="YADE (circles χ ≤ 1, squares χ > 1)")
-    ax.set_xscale("log")
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("coefficient of restitution e")
-    ax.set_title(f"Fig. 9: adhesivity around β* = {bs:.4g} (η = 4)")
-    ax.legend(fontsize=6.5, loc="lower left")
-    _note(ax, f"kp = {ref['kp']:g} N/m, kc = β k1; " + PARAM_LINE)
-    _save(fig, outdir, "fig9_adhesivity")
-    _write_csv(os.path.join(outdir, "fig9_adhesivity.csv"), SWEEP_HEADER, rows)
+    _finish_sweep(fig, ax, outdir, "fig9_adhesivity", rows, f"Fig. 9: adhesivity around β* = {bs:.4g} (η = 4)",
+                  f"kp = {ref['kp']:g} N/m, kc = β k1; " + PARAM_LINE, "coefficient of restitution e", 6.5)
     return dict(figure="long 9", collisions=len(rows), worst_abs_e_error=_worst(rows), kp_tuned=kp_t,
                 tuned_equals_reference_below_chi1=same)
 
@@ -155,7 +157,7 @@ def fig10(outdir, quick=False, phiF_tuned=0.5, chis=(0.5, 1.0, 2.5)):
     ax.set_ylabel("hysteretic force f [mN]")
     ax.set_title(f"Fig. 10: force law with φf = {PHI_F:g} and φf' = {phiF_tuned:g} (Appendix A)")
     ax.legend(fontsize=6.5, loc="upper left")
-    _note(ax, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE, loc="lower right")
+    _fig_note(fig, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE)
     _save(fig, outdir, "fig10_tuned_force_law")
     _write_csv(os.path.join(outdir, "fig10_tuned_force_law.csv"),
                ["model", "chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
@@ -235,16 +237,10 @@ def fig12(outdir, quick=False, etas=(5.0, 50.0, 500.0)):
         ax.plot(*zip(*sim[label]), "o", mfc="none", color=color, label=f"YADE, {label}")
         holds[label] = _within(grid, lambda c: theory.restitution_fa0(c, eta, 0.0), lambda c: theory.restitution_asymptote(c, eta))
     ax.plot([], [], "k-", lw=0.8, alpha=0.6, label="Eq. 32 (thin)")
-    ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_ylim(0.03, 1.5)
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("e")
-    ax.set_title("Fig. 12: β = 0, large plasticity η")
-    ax.legend(fontsize=7, loc="lower left")
-    _note(ax, "kp = k1 (1 + η), kc = 0; " + PARAM_LINE, loc="upper right")
-    _save(fig, outdir, "fig12_asymptote_eta")
-    _write_csv(os.path.join(outdir, "fig12_asymptote_eta.csv"), SWEEP_HEADER, rows)
+    _finish_sweep(fig, ax, outdir, "fig12_asymptote_eta", rows, "Fig. 12: β = 0, large plasticity η",
+                  "kp = k1 (1 + η), kc = 0; " + PARAM_LINE)
     return dict(figure="long 12", collisions=len(rows), worst_abs_e_error=_worst(rows),
                 asymptote_within_5pct_from_chi=holds)
 
@@ -276,16 +272,10 @@ def fig13(outdir, quick=False, betas=(0.01, 0.1, 1.0), eta=50.0):
     e0 = theory.restitution_fa0(c0, eta, betas[0])
     ax.plot(grid, [e0 * (c / c0) ** -0.25 for c in grid], "k-", lw=0.8, label="∝ χ^−1/4")
     ax.plot(grid, [(eta * c) ** -0.5 for c in grid], "m-", lw=0.8, label="(ηχ)^−1/2")
-    ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_ylim(0.01, 1.5)
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("e (× at the bottom: the pair sticks)")
-    ax.set_title(f"Fig. 13: adhesivity β at η = {eta:g}")
-    ax.legend(fontsize=6.5, loc="lower left")
-    _note(ax, f"kp = {K1 * (1 + eta):g} N/m, kc = β k1; " + PARAM_LINE, loc="upper right")
-    _save(fig, outdir, "fig13_asymptote_beta")
-    _write_csv(os.path.join(outdir, "fig13_asymptote_beta.csv"), SWEEP_HEADER, rows)
+    _finish_sweep(fig, ax, outdir, "fig13_asymptote_beta", rows, f"Fig. 13: adhesivity β at η = {eta:g}",
+                  f"kp = {K1 * (1 + eta):g} N/m, kc = β k1; " + PARAM_LINE, "e (× at the bottom: the pair sticks)", 6.5)
     return dict(figure="long 13", collisions=len(rows), worst_abs_e_error=_worst(rows),
                 asymptote_within_5pct_from_chi=holds)
 
@@ -308,15 +298,9 @@ def fig14(outdir, quick=False, eta=50.0):
         holds[interp] = _within(grid, lambda c: theory.restitution_fa0(c, eta, 0.0, interp),
                                 lambda c: theory.restitution_asymptote(c, eta, 0.0, interp))
     ax.plot([], [], "k-", lw=0.8, alpha=0.6, label="Eq. 32 with Eq. 9 / D.1 (thin)")
-    ax.set_xscale("log")
     ax.set_ylim(0, 1.05)
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("e")
-    ax.set_title(f"Fig. 14: k2 interpolation, η = {eta:g}, β = 0")
-    ax.legend(fontsize=7, loc="upper right")
-    _note(ax, f"kp = {K1 * (1 + eta):g} N/m, kc = 0; " + PARAM_LINE)
-    _save(fig, outdir, "fig14_interpolation")
-    _write_csv(os.path.join(outdir, "fig14_interpolation.csv"), SWEEP_HEADER, rows)
+    _finish_sweep(fig, ax, outdir, "fig14_interpolation", rows, f"Fig. 14: k2 interpolation, η = {eta:g}, β = 0",
+                  f"kp = {K1 * (1 + eta):g} N/m, kc = 0; " + PARAM_LINE, legend_loc="upper right")
     return dict(figure="long 14", collisions=len(rows), worst_abs_e_error=_worst(rows),
                 asymptote_within_5pct_from_chi=holds)
 
@@ -335,12 +319,11 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         s = pair.build(RADIUS, v, mat, track_energy=True)
         e0 = 0.5 * s.m_r * v ** 2  # no force acts before contact: the kinetic energy is exact
         t_load = math.pi * math.sqrt(s.m_r / K1)
-        _SAMPLES.clear()
-        _SAMPLES.append(s)
+        _SAMPLES.update(scene=s, rows=[])
         sampler = _w.PyRunner(iterPeriod=1 if quick else 20, command="import mesocontact.figures_appendix as _f; _f._sample()")
         O.engines = O.engines + [sampler]
         O.run(int((3 if quick else 6) * t_load / O.dt), True)
-        samples = _SAMPLES[1:]
+        samples = _SAMPLES["rows"]
         worst = max(abs(x[5] - e0) for x in samples) / e0
         ms = [x[0] * 1e3 for x in samples]
         ax.plot(ms, [x[1] / e0 for x in samples], "k-", lw=1, label="kinetic")
@@ -365,11 +348,11 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
                 worst_abs_sum_error_over_E0=max(c["worst_abs_sum_error_over_E0"] for c in cases))
 
 
-_SAMPLES = []  # fig15: [scene, samples...], filled by a PyRunner inside YADE's loop (one O.run)
+_SAMPLES = {}  # fig15: the scene and its samples, filled by a PyRunner inside YADE's loop (one O.run)
 
 
 def _sample():
     from yade import O
     en = {k: O.energy[k] for k in O.energy.keys()}
-    _SAMPLES.append((O.time, en.get("kinetic", 0.0), en.get("mesoElastic", 0.0), en.get("mesoPlastic", 0.0),
-                     en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(_SAMPLES[0])))
+    _SAMPLES["rows"].append((O.time, en.get("kinetic", 0.0), en.get("mesoElastic", 0.0), en.get("mesoPlastic", 0.0),
+                             en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(_SAMPLES["scene"])))

@@ -16,7 +16,7 @@ e_theory = theory.pair_collision(V, 100.0, 500.0, 100.0, 0.1, R, m_r, fa=1e-5, k
 def collide(detect):
     scene.reset()
     O.materials.append(w.MesoMat(**MAT))
-    gap = 1.5e-5 / 50.0  # outside the range fa/kca = 2e-7 m
+    gap = 1.5 * MAT["fa"] / MAT["kca"]  # outside the range of the non-contact force
     b1, b2 = utils.sphere((0, 0, 0), R, material=0), utils.sphere((2 * R + gap, 0, 0), R, material=0)
     O.bodies.append([b1, b2])
     b1.state.vel, b2.state.vel = (V / 2, 0, 0), (-V / 2, 0, 0)
@@ -32,8 +32,9 @@ def collide(detect):
 
 e_default, _ = collide(False)
 e_set, factor = collide(True)
-check(abs(scene.adhesion_range() - 1e-5 / 50.0) < 1e-20, "adhesion_range = fa/kca of the scene's material", f"{scene.adhesion_range():.3e}")
-check(abs(factor - (1 + 1.2 * 2e-7 / R)) < 1e-12, "set_detection: factor 1 + 1.2 range/a_min", f"{factor}")
+RANGE = MAT["fa"] / MAT["kca"]
+check(abs(scene.adhesion_range() - RANGE) < 1e-12 * RANGE, "adhesion_range = fa/kca of the scene's material", f"{scene.adhesion_range():.3e}")
+check(abs(factor - (1 + 1.2 * RANGE / R)) < 1e-12, "set_detection: factor 1 + 1.2 range/a_min", f"{factor}")
 check(abs(e_default - e_theory) > 1e-3, "default detection misses the pull-in (e off the closed form)",
       f"e = {e_default:.6f}, theory {e_theory:.6f}")
 check(abs(e_set - e_theory) <= 1e-3, "after set_detection e meets the closed form", f"e = {e_set:.6f}, theory {e_theory:.6f}")
