@@ -28,8 +28,8 @@ ap.add_argument("--out", default=None, help="JSON summary (default: print only)"
 args = ap.parse_args(sys.argv[1:])
 rng = random.Random(args.seed)
 
-NUMBERS = ["k1", "kp", "kc", "phiF", "fa", "kca", "gammaN", "phiD", "kt", "gammaT", "kr", "gammaR", "muR", "ko", "gammaO", "muO",
-           "density", "young", "frictionAngle"]
+# The law's numbers as MesoMat declares them (pkg/core/MesoParamTable.hpp), and FrictMat's it checks.
+NUMBERS = [k for k, v in w.MesoMat().dict().items() if isinstance(v, float) and k != "poisson"]
 TEXTS = {"adhesion": ("none", "reversible", "jumpIn"), "k2Interpolation": ("linear", "sqrt")}
 NAMES = NUMBERS + list(TEXTS) + ["dominant"]
 BAD = [0.0, -1.0, -1e-300, float("nan"), float("inf"), -float("inf"), 1e300, 1e155, 1e-320, "abc", None, True, [1.0], {}, 3 + 0j]

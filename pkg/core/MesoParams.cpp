@@ -49,36 +49,21 @@ const char* k2InterpolationName(K2Interpolation k) { return k == K2Interpolation
 
 void validate(const MaterialParams& m)
 {
-	finite("k1", m.k1);
-	finite("kp", m.kp);
-	finite("kc", m.kc);
-	finite("phiF", m.phiF);
-	finite("fa", m.fa);
-	finite("kca", m.kca);
-	finite("gammaN", m.gammaN);
-	if (!(m.k1 > 0)) reject("k1", m.k1, "the loading stiffness must be > 0");
-	if (!(m.kp >= m.k1)) reject("kp", m.kp, "the limit stiffness must be >= k1");
-	if (!(m.kc >= 0)) reject("kc", m.kc, "the adhesive stiffness must be >= 0");
-	if (!(m.phiF > 0 && m.phiF <= 1)) reject("phiF", m.phiF, "the plasticity depth must lie in (0, 1]");
-	if (!(m.fa >= 0)) reject("fa", m.fa, "the non-contact adhesive force must be >= 0");
-	if (!(m.kca >= 0)) reject("kca", m.kca, "the non-contact adhesive stiffness must be >= 0");
+	// Each number against its own rule (MesoParamTable.hpp), in the table's order.
+#define MESO_CHECK(name, def, unit, ok, rule, ...) \
+	{ \
+		const double v = m.name; \
+		finite(#name, v); \
+		if (!(ok)) reject(#name, v, rule); \
+	}
+	MESO_ALL_PARAMS(MESO_CHECK)
+#undef MESO_CHECK
 	if (m.fa > 0 && !(m.kca > 0)) reject("kca", m.kca, "must be > 0 when fa > 0 (the range of the non-contact force is fa/kca)");
 	if (m.fa > 0 && !std::isfinite(m.fa / m.kca)) reject("kca", m.kca, "too small for fa: the range fa/kca of the non-contact force must be finite");
 	if (m.fa > 0 && m.adhesion == Adhesion::None)
 		throw std::invalid_argument("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0");
-	if (!(m.gammaN >= 0)) reject("gammaN", m.gammaN, "the viscous damping must be >= 0");
-	const struct {
-		const char* name;
-		double      value;
-	} nonNegative[] = { { "muS", m.muS }, { "kt", m.kt }, { "gammaT", m.gammaT }, { "kr", m.kr },
-		            { "gammaR", m.gammaR },                  { "muR", m.muR }, { "ko", m.ko },         { "gammaO", m.gammaO },
-		            { "muO", m.muO } };
-	for (const auto& q : nonNegative) {
-		finite(q.name, q.value);
-		if (!(q.value >= 0)) reject(q.name, q.value, "must be >= 0");
-	}
-	finite("phiD", m.phiD);
-	if (!(m.phiD > 0 && m.phiD <= 1)) reject("phiD", m.phiD, "the dynamic/static friction ratio must lie in (0, 1]");
+	finite("muS", m.muS);
+	if (!(m.muS >= 0)) reject("muS", m.muS, "must be >= 0");
 }
 
 double harmonicMean(double x, double y)
@@ -91,11 +76,11 @@ double harmonicMean(double x, double y)
 
 void setMechanisms(PairParams& p, bool geometryWithRotations)
 {
-	p.tangential = p.sliding.active() || p.rolling.active() || p.twisting.active();
-	p.rollTwist  = (p.rolling.active() || p.twisting.active()) && geometryWithRotations;
-	p.slides     = p.sliding.active();
-	p.rolls      = p.rollTwist && p.rolling.active();
-	p.twists     = p.rollTwist && p.twisting.active();
+	p.tangential = p.sliding.active() || p.rolling.active() || p.torsion.active();
+	p.rollingOrTorsion  = (p.rolling.active() || p.torsion.active()) && geometryWithRotations;
+	p.slidingActs     = p.sliding.active();
+	p.rollingActs      = p.rollingOrTorsion && p.rolling.active();
+	p.torsionActs     = p.rollingOrTorsion && p.torsion.active();
 }
 
 PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)
@@ -116,37 +101,32 @@ double stableStep(double k, double gamma, double invMass)
 	return 2 / w / (std::sqrt(1 + z * z) + z); // = (2/w)(sqrt(1+z^2) - z), without the cancellation
 }
 
+namespace {
+	// The mixing rules of MesoParamTable.hpp.
+	double harmonic(double x, double y) { return harmonicMean(x, y); }
+	double arithmetic(double x, double y) { return 0.5 * (x + y); }
+	double smaller(double x, double y) { return std::min(x, y); }
+}
+
 PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)
 {
 	const bool            one = mat1.dominant && !mat2.dominant, two = mat2.dominant && !mat1.dominant;
 	const MaterialParams& m1  = two ? mat2 : mat1;
 	const MaterialParams& m2  = one ? mat1 : mat2;
 	PairParams            p;
-	p.k1     = harmonicMean(m1.k1, m2.k1);
-	p.kp     = std::max(harmonicMean(m1.kp, m2.kp), p.k1); // monotone mean keeps kp >= k1; max() guards rounding
-	p.kc     = harmonicMean(m1.kc, m2.kc);
-	p.phiF   = 0.5 * (m1.phiF + m2.phiF);
-	p.fa     = harmonicMean(m1.fa, m2.fa);
-	p.kca    = harmonicMean(m1.kca, m2.kca);
-	p.gammaN = harmonicMean(m1.gammaN, m2.gammaN);
+#define MESO_MIX(name, def, unit, ok, rule, mix, dest, ...) p.dest = mix(m1.name, m2.name);
+	MESO_ALL_PARAMS(MESO_MIX)
+#undef MESO_MIX
+	p.kp = std::max(p.kp, p.k1); // the harmonic mean is monotone, so kp >= k1 holds up to rounding
 	auto strength = [](Adhesion a) { return a == Adhesion::None ? 0 : (a == Adhesion::JumpIn ? 1 : 2); };
 	p.adhesion    = strength(m1.adhesion) <= strength(m2.adhesion) ? m1.adhesion : m2.adhesion;
 	p.k2Interpolation = (m1.k2Interpolation == K2Interpolation::Sqrt && m2.k2Interpolation == K2Interpolation::Sqrt)
 	        ? K2Interpolation::Sqrt
 	        : K2Interpolation::Linear;
 	if (p.adhesion == Adhesion::None) p.fa = 0;
-	const double phiD = std::min(m1.phiD, m2.phiD);
-	auto element = [phiD](double k1_, double k2_, double g1, double g2, double mu1, double mu2) {
-		ElementParams e;
-		e.k     = harmonicMean(k1_, k2_);
-		e.gamma = harmonicMean(g1, g2);
-		e.muS   = std::min(mu1, mu2);
-		e.muD   = phiD * e.muS;
-		return e;
-	};
-	p.sliding  = element(m1.kt, m2.kt, m1.gammaT, m2.gammaT, m1.muS, m2.muS);
-	p.rolling  = element(m1.kr, m2.kr, m1.gammaR, m2.gammaR, m1.muR, m2.muR);
-	p.twisting = element(m1.ko, m2.ko, m1.gammaO, m2.gammaO, m1.muO, m2.muO);
+	p.sliding.muS = smaller(m1.muS, m2.muS);
+	for (ElementParams* e : { &p.sliding, &p.rolling, &p.torsion })
+		e->muD = p.phiD * e->muS;
 	p.deltaA        = (p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0;
 	p.delta0PerMaxP = p.kp > p.k1 ? 1 - p.k1 / p.kp : 0.0;
 	return p;

@@ -1,6 +1,7 @@
 // Parameters of the meso-particle contact law (Singh, Magnanimo & Luding): per material, their
 // validation, and the mixing of two materials into the parameters of one pair. No YADE here.
 #pragma once
+#include "MesoParamTable.hpp"
 #include <string>
 
 // Small functions of the hot path (Law2::go()): GCC does not inline them on its own in -fPIC code.
@@ -31,28 +32,14 @@ struct ElementParams {
 	bool   active() const { return k > 0 || gamma > 0; }
 };
 
-// What a material declares (docs/model.md §2); SI units.
+// What a material declares (docs/model.md §2); SI units. The numbers are those of MesoParamTable.hpp.
 struct MaterialParams {
-	double          k1     = 1e2;  // plastic loading stiffness [N/m]
-	double          kp     = 5e2;  // elastic limit stiffness [N/m], >= k1
-	double          kc     = 0;    // adhesive (tensile branch) stiffness [N/m]
-	double          phiF   = 0.1;  // plasticity depth, (0, 1]
-	double          fa     = 0;    // non-contact adhesive force [N]
-	double          kca    = 0;    // non-contact adhesive stiffness [N/m], > 0 when fa > 0
-	double          gammaN = 0;    // normal viscous damping [kg/s]
+#define MESO_FIELD(name, def, ...) double name = def;
+	MESO_ALL_PARAMS(MESO_FIELD)
+#undef MESO_FIELD
+	double          muS             = 0; // static sliding coefficient, tan(frictionAngle) of YADE's FrictMat [-]
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
-	// Luding 2008 tangential mechanisms; all off by default.
-	double muS    = 0; // static sliding friction coefficient (YADE: tan(frictionAngle)) [-]
-	double phiD   = 1; // dynamic/static ratio of all three Coulomb limits, (0, 1] [-]
-	double kt     = 0; // sliding spring [N/m]
-	double gammaT = 0; // sliding dashpot [kg/s]
-	double kr     = 0; // rolling spring [N/m]
-	double gammaR = 0; // rolling dashpot [kg/s]
-	double muR    = 0; // rolling coefficient [-]
-	double ko     = 0; // torsion spring [N/m]
-	double gammaO = 0; // torsion dashpot [kg/s]
-	double muO    = 0; // torsion coefficient [-]
 	// A dominant material imposes its own parameters on its pairs with non-dominant materials
 	// (no mixing): walls whose law is prescribed, like Luding's adhesive loading walls.
 	bool dominant = false;
@@ -69,17 +56,18 @@ double harmonicMean(double x, double y);
 struct PairParams {
 	// Hot: what Law2::go() reads every step, flags first.
 	bool            tangential      = false; // any tangential mechanism acts
-	bool            rollTwist       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
-	bool            slides = false, rolls = false, twists = false; // which elements act (setMechanisms())
+	bool            rollingOrTorsion       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
+	bool            slidingActs = false, rollingActs = false, torsionActs = false; // which elements act (setMechanisms())
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
 	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
 	double          deltaA          = 0; // range of the non-contact force -fa/kca (<= 0) [m]
 	double          delta0PerMaxP   = 0; // delta0P/deltaMaxP = 1 - k1/kp (Eqs. 10, 11) [-]
-	ElementParams   sliding, rolling, twisting; // Luding 2008 tangential elements
+	ElementParams   sliding, rolling, torsion; // Luding 2008 tangential elements
 	double          leverFactor = 1; // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
 	// Cold: kept for the user and to derive the geometry.
 	double phiF = 0; // plasticity depth [-]
+	double phiD = 1; // dynamic/static ratio of the Coulomb limits (the elements' muD already hold it) [-]
 };
 
 // What one contact adds to its pair's parameters: the radii and the limit overlap, which scales with a12.
@@ -103,7 +91,7 @@ struct PairGeometry {
 // leverFactor are left to the caller.
 PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2);
 
-// Sets the flags tangential, rollTwist, slides, rolls and twists from the elements; rolling and
+// Sets the flags tangential, rollingOrTorsion, slidingActs, rollingActs and torsionActs from the elements; rolling and
 // torsion need a geometry that carries rotations (YADE: ScGeom6D).
 void setMechanisms(PairParams& p, bool geometryWithRotations);
 

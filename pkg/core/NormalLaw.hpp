@@ -4,6 +4,7 @@
 #pragma once
 #include "MesoParams.hpp"
 #include <cmath>
+#include <limits>
 
 namespace meso {
 
@@ -21,6 +22,11 @@ struct NormalForce {
 	double hysteretic = 0, adhesive = 0, viscous = 0;
 	double total() const { return hysteretic + adhesive + viscous; }
 };
+
+// What the Coulomb limits of sliding, rolling and torsion scale with (Luding 2008): the contact part
+// of the normal force, hysteretic plus viscous (not the non-contact -fa), measured from the adhesive
+// branch -kc delta, so that a contact held at its tensile limit can still resist.
+MESO_HOT double coulombLevel(const PairParams& p, double hysteretic, double viscous, double delta) { return hysteretic + viscous + p.kc * delta; }
 
 // The un-/re-loading stiffness k2(deltaMax) (Eqs. 9, 10, D.1): k1 on a fresh contact, kp beyond deltaMaxP.
 MESO_HOT double unloadingStiffness(const PairParams& p, const PairGeometry& g, double deltaMax)
@@ -144,6 +150,43 @@ MESO_INLINE NormalEnergyStep energyStep(const PairParams& p, const PairGeometry&
 	e.viscous  = 0.5 * (prev.viscous + f.viscous) * dd;
 	e.elastic  = elastic - 0.5 * f.total() * dd;
 	return e;
+}
+
+// What a contact keeps of its last step: enough to rebuild that step's force parts and stored
+// energy (the adhesive part and the energy are functions of the overlap and the history).
+struct NormalMemory {
+	double fHysteretic = 0, fViscous = 0;
+	double lastDelta   = std::numeric_limits<double>::quiet_NaN(); // NaN before the law's first step
+};
+
+// One step of the normal law with its energy: the previous step rebuilt from mem (before the
+// history changes), this step's force (h and mem updated), and the increments of energyStep(). On
+// the law's first step the contact is taken as having been at delta - vn dt already: zero for a pair
+// coming from outside the force's range; spheres that start overlapped hold their initial elastic
+// energy (in e.elastic), not work done in this step (which would read as negative dissipation).
+MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeometry& g, NormalHistory& h, NormalMemory& mem, double delta,
+                                             double vn, double dt, NormalEnergyStep& e)
+{
+	const bool   first     = std::isnan(mem.lastDelta);
+	const double prevDelta = first ? delta - vn * dt : mem.lastDelta;
+	NormalForce  prev;
+	double       prevElastic;
+	if (!first) {
+		prev.hysteretic = mem.fHysteretic;
+		prev.adhesive   = adhesiveForceAfter(p, h, prevDelta);
+		prev.viscous    = mem.fViscous;
+		prevElastic     = storedElastic(p, g, h, prev.hysteretic);
+	} else {
+		NormalHistory fresh;
+		prev        = normalForce(p, g, fresh, prevDelta, vn);
+		prevElastic = storedElastic(p, g, fresh, prev.hysteretic);
+	}
+	const NormalForce f = normalForce(p, g, h, delta, vn);
+	e                   = energyStep(p, g, prevDelta, prevElastic, h, prev, f, delta);
+	mem.fHysteretic     = f.hysteretic;
+	mem.fViscous        = f.viscous;
+	mem.lastDelta       = delta;
+	return f;
 }
 
 } // namespace meso

@@ -138,12 +138,12 @@ MESO_INLINE double stableStep(const PairParams& p, const PairGeometry& g, double
 		}
 	};
 	const ContactArms arms = contactArms(p, g, 0.0);
-	if (p.slides) // the contact point moves with both spheres' spins too
+	if (p.slidingActs) // the contact point moves with both spheres' spins too
 		consider(stableStep(p.sliding.k, p.sliding.gamma, invMass1 + invMass2 + arms.arm1 * arms.arm1 * invInertia1 + arms.arm2 * arms.arm2 * invInertia2),
 		         "sliding");
 	const double invRot = arms.lever * arms.lever * (invInertia1 + invInertia2); // v_r = a' (w1 - w2), torque a' f on each
-	if (p.rolls) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
-	if (p.twists) consider(stableStep(p.twisting.k, p.twisting.gamma, invRot), "torsion");
+	if (p.rollingActs) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
+	if (p.torsionActs) consider(stableStep(p.torsion.k, p.torsion.gamma, invRot), "torsion");
 	return best;
 }
 
@@ -151,7 +151,7 @@ MESO_INLINE double stableStep(const PairParams& p, const PairGeometry& g, double
 struct ContactVelocities {
 	Vec3   sliding; // v_t: tangential velocity of 1 relative to 2 at the contact point [m/s]
 	Vec3   rolling; // v_r = a'_ij n x (w1 - w2) [m/s]
-	double twist;   // v_o = a'_ij n.(w1 - w2) [m/s], along n
+	double torsion; // v_o = a'_ij n.(w1 - w2) [m/s], along n
 };
 
 // Velocity of the contact point of sphere 1 relative to sphere 2: the branches are +-arm n
@@ -168,7 +168,7 @@ MESO_HOT ContactVelocities contactVelocities(const Vec3& n, const Vec3& vc, cons
 	ContactVelocities c;
 	c.sliding = combine(1.0, vc, -dot(n, vc), n);
 	c.rolling = leverArm * cross(n, dw);
-	c.twist   = leverArm * dot(n, dw);
+	c.torsion   = leverArm * dot(n, dw);
 	return c;
 }
 
@@ -200,7 +200,7 @@ struct TangentialState {
 // Energy of one step: stored spring energy (half-step consistent with YADE's leapfrog kinetic
 // energy, reset every step) and the increments of dissipation of each mechanism [J].
 struct TangentialEnergy {
-	double stored = 0, sliding = 0, rolling = 0, twisting = 0;
+	double stored = 0, sliding = 0, rolling = 0, torsion = 0;
 };
 
 // One step of all tangential mechanisms of a contact in mechanical contact (those that act: the
@@ -213,8 +213,8 @@ MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& f
 	if (level < 0) level = 0;
 	if (dot(s.nPrev, s.nPrev) > 0) {
 		const ContactRotation rot(s.nPrev, n, spinAngle);
-		if (p.slides) rot.apply(s.xiT);
-		if (p.rolls) rot.apply(s.xiR);
+		if (p.slidingActs) rot.apply(s.xiT);
+		if (p.rollingActs) rot.apply(s.xiR);
 		if (energy) { // the previous forces serve only the energy bookkeeping
 			rot.apply(fT);
 			rot.apply(s.fR);
@@ -227,17 +227,17 @@ MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& f
 	if (energy) {
 		uT0 = springEnergy(p.sliding, s.xiT);
 		uR0 = springEnergy(p.rolling, s.xiR);
-		uO0 = springEnergy(p.twisting, s.xiO);
+		uO0 = springEnergy(p.torsion, s.xiO);
 	}
-	if (p.slides) fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
-	if (p.rolls) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
-	if (p.twists) s.fO = elementStep(p.twisting, s.xiO, v.twist, dt, level, s.slidingO).force;
+	if (p.slidingActs) fT = elementStep(p.sliding, s.xiT, v.sliding, dt, level, s.slidingT).force;
+	if (p.rollingActs) s.fR = elementStep(p.rolling, s.xiR, v.rolling, dt, level, s.slidingR).force;
+	if (p.torsionActs) s.fO = elementStep(p.torsion, s.xiO, v.torsion, dt, level, s.slidingO).force;
 	if (!energy) return;
-	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.twisting, s.xiO);
+	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.torsion, s.xiO);
 	energy->sliding  = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
 	energy->rolling  = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
-	energy->twisting = absorbedWork(prevO, s.fO, v.twist, dt) - (uO - uO0);
-	energy->stored   = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.twist);
+	energy->torsion = absorbedWork(prevO, s.fO, v.torsion, dt) - (uO - uO0);
+	energy->stored   = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.torsion);
 }
 
 // The step at which the contact ends (delta <= 0): forces vanish; what the springs held is lost.
@@ -246,7 +246,7 @@ MESO_INLINE void tangentialRelease(const PairParams& p, TangentialState& s, Vec3
 	if (energy) {
 		energy->sliding  = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
 		energy->rolling  = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
-		energy->twisting = absorbedWork(s.fO, 0.0, v.twist, dt) + springEnergy(p.twisting, s.xiO);
+		energy->torsion = absorbedWork(s.fO, 0.0, v.torsion, dt) + springEnergy(p.torsion, s.xiO);
 		energy->stored   = 0;
 	}
 	s.reset();

@@ -23,22 +23,9 @@ namespace {
 		Real MesoMat::*attr;
 		double meso::MaterialParams::*param;
 	};
-	const Field numericFields[] = { { "k1", &MesoMat::k1, &meso::MaterialParams::k1 },
-		                        { "kp", &MesoMat::kp, &meso::MaterialParams::kp },
-		                        { "kc", &MesoMat::kc, &meso::MaterialParams::kc },
-		                        { "phiF", &MesoMat::phiF, &meso::MaterialParams::phiF },
-		                        { "fa", &MesoMat::fa, &meso::MaterialParams::fa },
-		                        { "kca", &MesoMat::kca, &meso::MaterialParams::kca },
-		                        { "gammaN", &MesoMat::gammaN, &meso::MaterialParams::gammaN },
-		                        { "phiD", &MesoMat::phiD, &meso::MaterialParams::phiD },
-		                        { "kt", &MesoMat::kt, &meso::MaterialParams::kt },
-		                        { "gammaT", &MesoMat::gammaT, &meso::MaterialParams::gammaT },
-		                        { "kr", &MesoMat::kr, &meso::MaterialParams::kr },
-		                        { "gammaR", &MesoMat::gammaR, &meso::MaterialParams::gammaR },
-		                        { "muR", &MesoMat::muR, &meso::MaterialParams::muR },
-		                        { "ko", &MesoMat::ko, &meso::MaterialParams::ko },
-		                        { "gammaO", &MesoMat::gammaO, &meso::MaterialParams::gammaO },
-		                        { "muO", &MesoMat::muO, &meso::MaterialParams::muO } };
+#define MESO_FIELD(name, ...) { #name, &MesoMat::name, &meso::MaterialParams::name },
+	const Field numericFields[] = { MESO_ALL_PARAMS(MESO_FIELD) };
+#undef MESO_FIELD
 	using pychecks::Kind;
 	// The other attributes a MesoMat validates (numericFields are numbers too).
 	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
@@ -247,13 +234,10 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_p
 {
 	const meso::PairParams p = mix(asMeso(m1, "material1"), asMeso(m2, "material2"), rotations);
 	boost::python::dict d;
-	d["k1"]              = p.k1;
-	d["kp"]              = p.kp;
-	d["kc"]              = p.kc;
-	d["phiF"]            = p.phiF;
-	d["fa"]              = p.fa;
-	d["kca"]             = p.kca;
-	d["gammaN"]          = p.gammaN;
+#define MESO_ENTRY(name, ...) d[#name] = p.name;
+	MESO_NORMAL_PARAMS(MESO_ENTRY)
+#undef MESO_ENTRY
+	d["phiD"]            = p.phiD;
 	d["deltaA"]          = p.deltaA;
 	d["adhesion"]        = std::string(meso::adhesionName(p.adhesion));
 	d["k2Interpolation"] = std::string(meso::k2InterpolationName(p.k2Interpolation));
@@ -261,7 +245,7 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_p
 		const char*                name;
 		const meso::ElementParams& e;
 		bool                       acts;
-	} elements[] = { { "sliding", p.sliding, p.slides }, { "rolling", p.rolling, p.rolls }, { "twisting", p.twisting, p.twists } };
+	} elements[] = { { "sliding", p.sliding, p.slidingActs }, { "rolling", p.rolling, p.rollingActs }, { "torsion", p.torsion, p.torsionActs } };
 	for (const auto& el : elements) {
 		boost::python::dict e;
 		e["k"]     = el.e.k;
@@ -308,7 +292,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>&
 	shared_ptr<MesoPairParams> params = pairParams(b1->material, b2->material, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
 	const meso::PairParams&    now = params->params;
 	const meso::PairParams&    old = phys->pairParams->params;
-	for (const auto& [name, a, b] : {std::make_tuple("k1", now.k1, old.k1), std::make_tuple("kp", now.kp, old.kp), std::make_tuple("phiF", now.phiF, old.phiF)})
+	for (const auto& [name, a, b] : { std::make_tuple("k1", now.k1, old.k1), std::make_tuple("kp", now.kp, old.kp), std::make_tuple("phiF", now.phiF, old.phiF) })
 		if (a != b) throw std::invalid_argument(std::string("interaction: the new materials change the pair's ") + name + ", which shapes the contact history");
 	if (now.k2Interpolation != old.k2Interpolation) throw std::invalid_argument("interaction: the new materials change the pair's k2Interpolation");
 	if (now.tangential != (dynamic_cast<MesoTangentialPhys*>(phys) != nullptr))
@@ -396,7 +380,7 @@ void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
 		scene->energy->add(0, "mesoSprings", springsIx, /*reset*/ true);
 		scene->energy->add(0, "mesoSliding", slidingIx, false);
 		scene->energy->add(0, "mesoRolling", rollingIx, false);
-		scene->energy->add(0, "mesoTwisting", twistingIx, false);
+		scene->energy->add(0, "mesoTorsion", torsionIx, false);
 		tangentialEnergiesReady.store(true, std::memory_order_release);
 	}
 }
@@ -414,114 +398,151 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 	return true;
 }
 
-bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
-{
-	const auto* geom = static_cast<const ScGeom*>(ig.get());
-	auto*       phys = static_cast<MesoPhys*>(ip.get());
-	if (!phys->pairParams) [[unlikely]]
-		return dropForeign(ip, I);
-	const auto&     p      = phys->pairParams->params;
-	const auto&     g      = phys->geometry;
-	const Real      delta  = geom->penetrationDepth;
-	const int       id1 = I->getId1(), id2 = I->getId2();
-	const auto&     bodies = scene->bodies->body; // the vector itself: its operator[] inlines
-	const State*    s1     = bodies[id1]->state.get();
-	const State*    s2     = bodies[id2]->state.get();
-	const Vector3r& n      = geom->normal; // from 1 to 2
-	Vector3r        relVel = s1->vel - s2->vel;
-	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I->cellDist);
-	const Real vn = meso::dot(relVel, n); // d(delta)/dt
+// The kinematics of the tangential elements: the arms, the relative velocities at the contact
+// point, the spin of the contact frame about n, and the branches from the centres to that point.
+struct MesoKinematics {
+	meso::ContactArms       arms;
+	meso::ContactVelocities v;
+	Real                    spin; // the frame spins with the pair's mean spin about n; against a wall, with the wall's
+	Vector3r                b1, b2; // branches, set for a wall, box or facet only (spheres use arm n)
+};
 
-	meso::NormalForce f;
+namespace {
+	// The two bodies of a contact and how they move relative to each other at its centre.
+	struct PairMotion {
+		const State* s1;
+		const State* s2;
+		Vector3r     relVel; // v1 - v2, the periodic cell's shift included
+		Real         vn;     // d(delta)/dt, > 0 while approaching
+	};
+	MESO_HOT PairMotion pairMotion(const Scene* scene, const ScGeom& geom, const Interaction* I)
+	{
+		const auto& bodies = scene->bodies->body; // the vector itself: its operator[] inlines
+		PairMotion  m { bodies[I->getId1()]->state.get(), bodies[I->getId2()]->state.get(), Vector3r::Zero(), 0 };
+		m.relVel = m.s1->vel - m.s2->vel;
+		if (scene->isPeriodic) m.relVel -= scene->cell->intrShiftVel(I->cellDist);
+		m.vn = meso::dot(m.relVel, geom.normal);
+		return m;
+	}
+
+	// Two spheres: the branches are +-arm n.
+	MESO_HOT MesoKinematics sphereSphereKinematics(const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, Real delta)
+	{
+		MesoKinematics k;
+		const Vector3r&   n = geom.normal;
+		k.arms              = meso::contactArms(p, g, delta);
+		const Vector3r vc   = meso::sphereContactVelocity(n, m.relVel, m.s1->angVel, m.s2->angVel, k.arms.arm1, k.arms.arm2);
+		k.v                 = meso::contactVelocities(n, vc, m.s1->angVel - m.s2->angVel, k.arms.lever);
+		k.spin              = 0.5 * meso::dot(m.s1->angVel + m.s2->angVel, n);
+		return k;
+	}
+	// A sphere and a wall, box or facet: the branch of the wall to YADE's contact point.
+	MESO_HOT MesoKinematics
+	sphereWallKinematics(const Scene* scene, const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, const Interaction* I, Real delta)
+	{
+		MesoKinematics k;
+		const Vector3r&   n = geom.normal;
+		k.arms              = meso::contactArms(p, g, delta);
+		const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
+		k.b1                  = g.radius1 > 0 ? Vector3r(k.arms.arm1 * n) : Vector3r(geom.contactPoint - m.s1->pos);
+		k.b2                  = g.radius2 > 0 ? Vector3r(-k.arms.arm2 * n) : Vector3r(geom.contactPoint - m.s2->pos - shift2);
+		const Vector3r vc     = m.relVel + meso::cross(m.s1->angVel, k.b1) - meso::cross(m.s2->angVel, k.b2);
+		k.v                   = meso::contactVelocities(n, vc, m.s1->angVel - m.s2->angVel, k.arms.lever);
+		k.spin                = meso::dot(g.radius1 > 0 ? m.s2->angVel : m.s1->angVel, n);
+		return k;
+	}
+
+	// Force fT at the contact point (sliding) and the quasi-torques of rolling and torsion, on body 1;
+	// their opposites on body 2.
+	MESO_HOT void addTangentialTorques(Scene* scene, int id1, int id2, bool spheres, const MesoKinematics& k, const Vector3r& n,
+	                                   const Vector3r& fT, const meso::TangentialState& t)
+	{
+		const Vector3r quasiTorque = k.arms.lever * (t.fO * n - meso::cross(n, t.fR));
+		if (spheres) {
+			const Vector3r nxf = meso::cross(n, fT); // sliding: torques arm1 n x fT and arm2 n x fT
+			scene->forces.addTorque(id1, k.arms.arm1 * nxf + quasiTorque);
+			scene->forces.addTorque(id2, k.arms.arm2 * nxf - quasiTorque);
+		} else {
+			scene->forces.addTorque(id1, meso::cross(k.b1, fT) + quasiTorque);
+			scene->forces.addTorque(id2, meso::cross(fT, k.b2) - quasiTorque);
+		}
+	}
+}
+
+MESO_HOT meso::NormalForce Law2_ScGeom_MesoPhys_Meso::normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn)
+{
+	meso::NormalMemory mem { phys.fHysteretic, phys.fViscous, phys.lastDelta };
+	meso::NormalForce  f;
 	if (scene->trackEnergy) {
 		if (!normalEnergiesReady.load(std::memory_order_acquire)) registerEnergies(p.tangential);
-		// The previous step's force parts and stored energy, from what it left (before this step's update).
-		const bool        first = std::isnan(phys->lastDelta); // the law's first step on this contact
-		const Real        prevDelta = first ? delta - vn * scene->dt : phys->lastDelta;
-		meso::NormalForce prev;
-		Real              prevElastic;
-		if (!first) {
-			prev.hysteretic = phys->fHysteretic;
-			prev.adhesive   = meso::adhesiveForceAfter(p, phys->history, prevDelta);
-			prev.viscous    = phys->fViscous;
-			prevElastic     = meso::storedElastic(p, g, phys->history, prev.hysteretic);
-		} else {
-			// As if the contact had been at prevDelta already: zero for a pair coming from outside the
-			// force's range; for spheres that start overlapped, the energy they store is the initial
-			// state (in mesoElastic), not work done this step (which would read as negative dissipation).
-			meso::NormalHistory h;
-			prev        = meso::normalForce(p, g, h, prevDelta, vn);
-			prevElastic = meso::storedElastic(p, g, h, prev.hysteretic);
-		}
-		f                      = meso::normalForce(p, g, phys->history, delta, vn);
-		const meso::NormalEnergyStep e = meso::energyStep(p, g, prevDelta, prevElastic, phys->history, prev, f, delta);
+		meso::NormalEnergyStep e;
+		f = meso::normalStepWithEnergy(p, phys.geometry, phys.history, mem, delta, vn, scene->dt, e);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
 		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
 		scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
 	} else {
-		f = meso::normalForce(p, g, phys->history, delta, vn);
+		f = meso::normalForce(p, phys.geometry, phys.history, delta, vn);
 	}
-	phys->fHysteretic = f.hysteretic;
-	phys->fViscous    = f.viscous;
-	phys->lastDelta   = delta;
-	phys->normalForce          = f.total() * n;
-	Vector3r force1            = -phys->normalForce; // on body 1
+	phys.fHysteretic = f.hysteretic;
+	phys.fViscous    = f.viscous;
+	phys.lastDelta   = delta;
+	return f;
+}
 
+MESO_HOT void Law2_ScGeom_MesoPhys_Meso::tangentialStep(
+        MesoTangentialPhys& phys, const meso::PairParams& p, const MesoKinematics& k, const Vector3r& n, Real delta, Real level, Vector3r& fT)
+{
+	const Real dt = scene->dt;
+	auto&      t  = phys.tangential;
+	// Without energy tracking no energy record is made or added (callgrind: fewer instructions).
+	auto advance = [&](meso::TangentialEnergy* e) __attribute__((always_inline))
+	{
+		if (delta > 0) meso::tangentialStep(p, t, fT, k.v, n, k.spin * dt, dt, level, e);
+		else if (meso::dot(t.nPrev, t.nPrev) > 0) meso::tangentialRelease(p, t, fT, k.v, dt, e);
+	};
+	if (scene->trackEnergy) {
+		if (!tangentialEnergiesReady.load(std::memory_order_acquire)) registerEnergies(true);
+		meso::TangentialEnergy e;
+		advance(&e);
+		scene->energy->add(e.stored, "mesoSprings", springsIx, true);
+		scene->energy->add(e.sliding, "mesoSliding", slidingIx, false);
+		scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
+		scene->energy->add(e.torsion, "mesoTorsion", torsionIx, false);
+	} else {
+		advance(nullptr);
+	}
+}
+
+bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
+{
+	const auto& geom = *static_cast<const ScGeom*>(ig.get());
+	auto*       phys = static_cast<MesoPhys*>(ip.get());
+	if (!phys->pairParams) [[unlikely]]
+		return dropForeign(ip, I);
+	const auto&             p     = phys->pairParams->params;
+	const Real              delta = geom.penetrationDepth;
+	const Vector3r&         n     = geom.normal; // from 1 to 2
+	const PairMotion        m     = pairMotion(scene, geom, I);
+	const meso::NormalForce f     = normalStep(*phys, p, delta, m.vn);
+	phys->normalForce             = f.total() * n;
+	Vector3r force1               = -phys->normalForce; // on body 1
 	if (p.tangential) {
-		const Real              dt   = scene->dt;
-		auto&                   t    = static_cast<MesoTangentialPhys*>(phys)->tangential; // the Ip2 made it so
-		const bool              both = g.radius1 > 0 && g.radius2 > 0;
-		const meso::ContactArms arms = meso::contactArms(p, g, delta);
-		Vector3r                b1, b2; // used off the sphere-sphere path only
-		Vector3r                vc;
-		if (both) vc = meso::sphereContactVelocity(n, relVel, s1->angVel, s2->angVel, arms.arm1, arms.arm2);
-		else {
-			// For a wall, box or facet the branch to YADE's contact point.
-			const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
-			b1                    = g.radius1 > 0 ? Vector3r(arms.arm1 * n) : Vector3r(geom->contactPoint - s1->pos);
-			b2                    = g.radius2 > 0 ? Vector3r(-arms.arm2 * n) : Vector3r(geom->contactPoint - s2->pos - shift2);
-			vc                    = relVel + meso::cross(s1->angVel, b1) - meso::cross(s2->angVel, b2);
-		}
-		const meso::ContactVelocities v  = meso::contactVelocities(n, vc, s1->angVel - s2->angVel, arms.lever);
-		Vector3r                      fT = -phys->shearForce; // YADE keeps the force sustained by body 2
-		// The frame spins with the pair's mean spin about n; against a wall, with the wall's.
-		const Real spin  = both ? 0.5 * meso::dot(s1->angVel + s2->angVel, n) : meso::dot(g.radius1 > 0 ? s2->angVel : s1->angVel, n);
-		const Real level = f.hysteretic + f.viscous + p.kc * delta;
-		// Without energy tracking no energy record is made or added (callgrind: fewer instructions).
-		auto advance = [&](meso::TangentialEnergy* e) __attribute__((always_inline))
-		{
-			if (delta > 0) meso::tangentialStep(p, t, fT, v, n, spin * dt, dt, level, e);
-			else if (meso::dot(t.nPrev, t.nPrev) > 0) meso::tangentialRelease(p, t, fT, v, dt, e);
-		};
-		if (scene->trackEnergy) {
-			if (!tangentialEnergiesReady.load(std::memory_order_acquire)) registerEnergies(true);
-			meso::TangentialEnergy e;
-			advance(&e);
-			scene->energy->add(e.stored, "mesoSprings", springsIx, true);
-			scene->energy->add(e.sliding, "mesoSliding", slidingIx, false);
-			scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
-			scene->energy->add(e.twisting, "mesoTwisting", twistingIx, false);
-		} else {
-			advance(nullptr);
-		}
+		const auto&             g       = phys->geometry;
+		const bool              spheres = g.radius1 > 0 && g.radius2 > 0;
+		const MesoKinematics k       = spheres ? sphereSphereKinematics(p, g, geom, m, delta) : sphereWallKinematics(scene, p, g, geom, m, I, delta);
+		auto&                   tphys   = *static_cast<MesoTangentialPhys*>(phys); // the Ip2 made it so
+		Vector3r                fT      = -phys->shearForce; // YADE keeps the force sustained by body 2
+		tangentialStep(tphys, p, k, n, delta, meso::coulombLevel(p, f.hysteretic, f.viscous, delta), fT);
 		phys->shearForce = -fT;
 		if (delta > 0) {
 			force1 += fT;
-			const Vector3r quasiTorque = arms.lever * (t.fO * n - meso::cross(n, t.fR)); // rolling and torsion, on body 1
-			if (both) {
-				const Vector3r nxf = meso::cross(n, fT); // sliding: torques arm1 n x fT and arm2 n x fT
-				scene->forces.addTorque(id1, arms.arm1 * nxf + quasiTorque);
-				scene->forces.addTorque(id2, arms.arm2 * nxf - quasiTorque);
-			} else {
-				scene->forces.addTorque(id1, meso::cross(b1, fT) + quasiTorque);
-				scene->forces.addTorque(id2, meso::cross(fT, b2) - quasiTorque);
-			}
+			addTangentialTorques(scene, I->getId1(), I->getId2(), spheres, k, n, fT, tphys.tangential);
 		}
 	}
 	if (force1 != Vector3r::Zero()) {
-		scene->forces.addForce(id1, force1);
-		scene->forces.addForce(id2, -force1);
+		scene->forces.addForce(I->getId1(), force1);
+		scene->forces.addForce(I->getId2(), -force1);
 	}
 	return meso::keepsInteracting(p, delta);
 }

@@ -10,6 +10,8 @@
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
+#include <boost/serialization/version.hpp>
+
 #include <atomic>
 #include <limits>
 #include <map>
@@ -17,6 +19,9 @@
 #include <tuple>
 
 namespace yade {
+
+// A number of MesoParamTable.hpp as a MesoMat attribute; every assignment is validated (postLoad).
+#define MESO_MAT_ATTR(name, def, unit, ok, rule, mix, dest, doc) ((Real, name, def, Attr::triggerPostLoad, doc " [" unit "]."))
 
 class MesoMat : public FrictMat {
 	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
@@ -43,24 +48,10 @@ public:
 	void                 updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law; it serves :yref:`PWaveTimeStep`.",
-		((Real,k1,1e2,Attr::triggerPostLoad,"Plastic (initial) loading stiffness $k_1$ [N/m], > 0."))
-		((Real,kp,5e2,Attr::triggerPostLoad,"Elastic limit stiffness $k_p\\geq k_1$ [N/m]; $k_p=k_1$ gives a linear elastic contact."))
-		((Real,kc,0,Attr::triggerPostLoad,"Adhesive stiffness $k_c\\geq 0$ of the tensile branch $f=-k_c\\delta$ [N/m]."))
-		((Real,phiF,0.1,Attr::triggerPostLoad,"Dimensionless plasticity depth $\\phi_f\\in(0,1]$: the limit branch starts at $\\delta_{max}^p=k_p/(k_p-k_1)\\,\\phi_f a_{12}$ [-]."))
-		((Real,fa,0,Attr::triggerPostLoad,"Non-contact adhesive force magnitude $f_a\\geq 0$ [N]; needs ``adhesion`` other than 'none' and $k_{ca}>0$."))
-		((Real,kca,0,Attr::triggerPostLoad,"Non-contact adhesive stiffness $k_{ca}$ [N/m]; the non-contact force acts down to the overlap $\\delta_a=-f_a/k_{ca}$."))
-		((Real,gammaN,0,Attr::triggerPostLoad,"Normal viscous damping coefficient $\\gamma_0\\geq 0$ [kg/s]; the force $\\gamma_0 v_n$ acts in mechanical contact."))
+		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
 		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion: 'none', 'reversible' (Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$) or 'jumpIn' (Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after)."))
 		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1)."))
-		((Real,phiD,1,Attr::triggerPostLoad,"Ratio $\\phi_d=\\mu_d/\\mu_s\\in(0,1]$ of the dynamic to the static Coulomb limit, for sliding, rolling and torsion [-]. The static sliding coefficient is $\\mu_s=\\tan$ :yref:`frictionAngle<FrictMat.frictionAngle>`."))
-		((Real,kt,0,Attr::triggerPostLoad,"Sliding spring stiffness $k_t$ [N/m]; sliding acts when $k_t$ or $\\gamma_t$ is > 0 (off by default)."))
-		((Real,gammaT,0,Attr::triggerPostLoad,"Sliding dashpot $\\gamma_t$ [kg/s]."))
-		((Real,kr,0,Attr::triggerPostLoad,"Rolling spring stiffness $k_r$ [N/m]; rolling acts on :yref:`ScGeom6D` contacts only."))
-		((Real,gammaR,0,Attr::triggerPostLoad,"Rolling dashpot $\\gamma_r$ [kg/s]."))
-		((Real,muR,0,Attr::triggerPostLoad,"Rolling Coulomb coefficient $\\mu_r$ [-]."))
-		((Real,ko,0,Attr::triggerPostLoad,"Torsion spring stiffness $k_o$ [N/m]; torsion acts on :yref:`ScGeom6D` contacts only."))
-		((Real,gammaO,0,Attr::triggerPostLoad,"Torsion dashpot $\\gamma_o$ [kg/s]."))
-		((Real,muO,0,Attr::triggerPostLoad,"Torsion Coulomb coefficient $\\mu_o$ [-]."))
+		MESO_TANGENTIAL_PARAMS(MESO_MAT_ATTR)
 		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
 		createIndex(); valid = parse(); validFrictionAngle = frictionAngle; validDensity = density; validYoung = young;,
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
@@ -87,6 +78,10 @@ public:
 };
 REGISTER_SERIALIZABLE(MesoPairParams);
 
+// The pair's value of a number of MesoParamTable.hpp as a read-only MesoPhys property.
+#define MESO_PHYS_PROPERTY(name, def, unit, ok, rule, mix, dest, doc) \
+	.add_property(#name, +[](const MesoPhys& c) -> Real { return c.pair().dest; }, "The pair's :yref:`" #name "<MesoMat." #name ">` (after mixing) [" unit "].")
+
 // Field order matters: a bulk step streams through every contact, and the fields the normal law
 // touches each step (history, force parts, last overlap, the pair's pointer, invDeltaMaxP) lie
 // together after FrictPhys, so that they span fewer cache lines (callgrind's cache simulation).
@@ -110,32 +105,22 @@ public:
 		.add_property("deltaA",&MesoPhys::getDeltaA,"Range of the non-contact force $-f_a/k_{ca}$ (0 without adhesion) [m].")
 		.add_property("a12",&MesoPhys::getA12,"Reduced radius $2a_1a_2/(a_1+a_2)$ ($2a$ against a wall) [m].")
 		.add_property("touched",&MesoPhys::getTouched,"For 'jumpIn' adhesion: whether the pair has been in mechanical contact (it starts the adhesive force). Kept only for that mode: False for 'none' and 'reversible'.")
-		.add_property("k1",&MesoPhys::getK1,"Mixed loading stiffness [N/m].")
-		.add_property("kp",&MesoPhys::getKp,"Mixed limit stiffness [N/m].")
-		.add_property("kc",&MesoPhys::getKc,"Mixed adhesive stiffness [N/m].")
-		.add_property("phiF",&MesoPhys::getPhiF,"Mixed plasticity depth [-].")
-		.add_property("fa",&MesoPhys::getFa,"Mixed non-contact adhesive force [N].")
-		.add_property("kca",&MesoPhys::getKca,"Mixed non-contact adhesive stiffness [N/m].")
-		.add_property("gammaN",&MesoPhys::getGammaN,"Mixed normal viscous damping [kg/s].")
+		MESO_ALL_PARAMS(MESO_PHYS_PROPERTY)
 		.add_property("adhesion",&MesoPhys::getAdhesion,"Adhesion mode of the pair.")
 		.add_property("k2Interpolation",&MesoPhys::getK2Interpolation,"Interpolation of $k_2$ for the pair.")
 		.add_property("hystereticForce",&MesoPhys::getFh,"Hysteretic contact part of the normal force at the last step (> 0 repulsive) [N]. The total is ``normalForce``.")
 		.add_property("adhesiveForce",&MesoPhys::getFadh,"Non-contact adhesive part of the normal force at the last step [N].")
 		.add_property("viscousForce",&MesoPhys::getFv,"Viscous part of the normal force at the last step [N].")
+		.add_property("coulombLevel",&MesoPhys::getCoulombLevel,"What the Coulomb limits of sliding, rolling and torsion scale with at the last step: $f_h+f_v+k_c\\delta$, the contact part of the normal force (hysteretic plus viscous) measured from the adhesive branch (0 before the first step) [N]. The law clamps it at 0.")
 		.add_property("slidingSpring",&MesoPhys::getXiT,"Sliding spring $\\xi_t$ in the tangent plane [m]; the force on body 1 is ``-shearForce``.")
 		.add_property("rollingSpring",&MesoPhys::getXiR,"Rolling spring $\\xi_r$ [m].")
-		.add_property("twistSpring",&MesoPhys::getXiO,"Torsion spring $\\xi_o$ along the normal [m].")
+		.add_property("torsionSpring",&MesoPhys::getXiO,"Torsion spring $\\xi_o$ along the normal [m].")
 		.add_property("rollingForce",&MesoPhys::getFR,"Rolling quasi-force $f_r$ [N]: torque $-a'_{12}\\,n\\times f_r$ on body 1, opposite on body 2.")
-		.add_property("twistForce",&MesoPhys::getFO,"Torsion quasi-force $f_o$ [N]: torque $a'_{12} f_o n$ on body 1, opposite on body 2.")
+		.add_property("torsionForce",&MesoPhys::getFO,"Torsion quasi-force $f_o$ [N]: torque $a'_{12} f_o n$ on body 1, opposite on body 2.")
 		.add_property("rollingTorque",&MesoPhys::getRollingTorque,"Rolling resistance torque on body 1 at the last step [N m].")
-		.add_property("twistTorque",&MesoPhys::getTwistTorque,"Torsion resistance torque on body 1 at the last step [N m].")
+		.add_property("torsionTorque",&MesoPhys::getTorsionTorque,"Torsion resistance torque on body 1 at the last step [N m].")
 		.add_property("leverArm",&MesoPhys::getLeverArm,"Lever arm $a'_{12}$ of rolling and torsion at the last step [m].")
-		.add_property("kt",&MesoPhys::getKt,"Mixed sliding stiffness [N/m].")
-		.add_property("kr",&MesoPhys::getKr,"Mixed rolling stiffness [N/m].")
-		.add_property("ko",&MesoPhys::getKo,"Mixed torsion stiffness [N/m].")
 		.add_property("muS",&MesoPhys::getMuS,"Static sliding coefficient of the pair [-].")
-		.add_property("muR",&MesoPhys::getMuR,"Static rolling coefficient of the pair [-].")
-		.add_property("muO",&MesoPhys::getMuO,"Static torsion coefficient of the pair [-].")
 		.add_property("byteSize",&MesoPhys::byteSize,"Memory of this object [bytes] (what each contact costs; a MesoTangentialPhys is larger).")
 		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.")
 	);
@@ -154,18 +139,12 @@ public:
 	Real        getDelta0P() const { return geometry.delta0P(pair()); }
 	Real        getDeltaA() const { return pair().deltaA; }
 	Real        getA12() const { return geometry.a12(); }
-	Real        getK1() const { return pair().k1; }
-	Real        getKp() const { return pair().kp; }
-	Real        getKc() const { return pair().kc; }
-	Real        getPhiF() const { return pair().phiF; }
-	Real        getFa() const { return pair().fa; }
-	Real        getKca() const { return pair().kca; }
-	Real        getGammaN() const { return pair().gammaN; }
 	std::string getAdhesion() const { return meso::adhesionName(pair().adhesion); }
 	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair().k2Interpolation); }
 	Real        getFh() const { return fHysteretic; }
 	Real        getFadh() const { return std::isnan(lastDelta) ? 0.0 : meso::adhesiveForceAfter(pair(), history, lastDelta); }
 	Real        getFv() const { return fViscous; }
+	Real        getCoulombLevel() const { return std::isnan(lastDelta) ? 0.0 : meso::coulombLevel(pair(), fHysteretic, fViscous, lastDelta); }
 	// The springs of a MesoTangentialPhys; zero for a contact without tangential mechanisms.
 	const meso::TangentialState& tangentialState() const;
 	Vector3r    getXiT() const { return tangentialState().xiT; }
@@ -174,15 +153,10 @@ public:
 	Vector3r    getFR() const { return tangentialState().fR; }
 	Real        getFO() const { return tangentialState().fO; }
 	Vector3r    getRollingTorque() const { return -getLeverArm() * tangentialState().nPrev.cross(tangentialState().fR); }
-	Vector3r    getTwistTorque() const { return getLeverArm() * tangentialState().fO * tangentialState().nPrev; }
+	Vector3r    getTorsionTorque() const { return getLeverArm() * tangentialState().fO * tangentialState().nPrev; }
 	// The lever arm is a function of the overlap: recomputed here, not stored per contact.
 	Real getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
-	Real        getKt() const { return pair().sliding.k; }
-	Real        getKr() const { return pair().rolling.k; }
-	Real        getKo() const { return pair().twisting.k; }
 	Real        getMuS() const { return pair().sliding.muS; }
-	Real        getMuR() const { return pair().rolling.muS; }
-	Real        getMuO() const { return pair().twisting.muS; }
 	int         byteSize() const; // of this object's class
 	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	// A loaded contact whose class does not fit its pair's mechanisms would be read as the wrong type.
@@ -239,7 +213,7 @@ public:
 		((Real,stableDt,std::numeric_limits<Real>::infinity(),(Attr::readonly|Attr::noSave),"Smallest stable time step of the contacts this functor has made [s]: per contact the leapfrog bound $(2/\\omega)(\\sqrt{1+\\zeta^2}-\\zeta)$ of its stiffest element (normal $k_p$ with $\\gamma_0$ on the reduced mass; sliding, rolling and torsion with the spins' inertia). When O.dt exceeds it at a new contact, a warning names the contact, once per functor.")),
 		/*ctor*/,
 		.def("stableStep",&Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("radius1"),boost::python::arg("radius2")=0,boost::python::arg("rotations")=true),"The stable time step [s] of a contact between a free sphere of ``material1`` and radius ``radius1`` and a free sphere of ``material2`` and ``radius2`` (0: a fixed wall, box or facet), masses and inertia from the materials' densities: the bound :yref:`stableDt<Ip2_MesoMat_MesoMat_MesoPhys.stableDt>` applies to each contact, from the same code, before any contact exists. ``mesocontact.scene.time_step`` takes its minimum over a scene.")
-		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'twisting' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
+		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'torsion' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
 		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.");
 		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm)
 	);
@@ -247,6 +221,8 @@ public:
 	FUNCTOR2D(MesoMat, MesoMat);
 };
 REGISTER_SERIALIZABLE(Ip2_MesoMat_MesoMat_MesoPhys);
+
+struct MesoKinematics; // of one contact's tangential elements (MesoContact.cpp)
 
 class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	// YADE's EnergyTracker looks a new name up without a lock: threads that meet it first at the same
@@ -257,11 +233,16 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	void              registerEnergies(bool tangential);
 	std::atomic<bool> foreignWarned{ false };
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
+	// The steps of go(), in MesoContact.cpp: the normal force (with its energy when tracked), then
+	// sliding, rolling and torsion from the contact's kinematics.
+	meso::NormalForce normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn);
+	void tangentialStep(MesoTangentialPhys& phys, const meso::PairParams& p, const MesoKinematics& k, const Vector3r& n, Real delta, Real level,
+	                    Vector3r& fT);
 
 public:
 	bool go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTwisting' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
+	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
 		((int,plasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoPlastic' in O.energy"))
 		((int,adhesiveIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoAdhesive' in O.energy"))
@@ -269,7 +250,7 @@ public:
 		((int,springsIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSprings' in O.energy"))
 		((int,slidingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSliding' in O.energy"))
 		((int,rollingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoRolling' in O.energy"))
-		((int,twistingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoTwisting' in O.energy"))
+		((int,torsionIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoTorsion' in O.energy"))
 	);
 	// clang-format on
 	FUNCTOR2D(ScGeom, MesoPhys);
@@ -280,16 +261,28 @@ REGISTER_SERIALIZABLE(Law2_ScGeom_MesoPhys_Meso);
 
 // boost::serialization of the core structs (they live in MesoPhys as hidden attributes).
 namespace boost { namespace serialization {
-	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int)
+	// Version 1 added phiD (version 0 files: recovered from the elements, which hold it as muD/muS).
+	// The tags of the flags and of the torsion element are those of the first files.
+	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int version)
 	{
 		int adhesion = static_cast<int>(p.adhesion), interp = static_cast<int>(p.k2Interpolation);
-		ar& make_nvp("k1", p.k1)& make_nvp("kp", p.kp)& make_nvp("kc", p.kc)& make_nvp("phiF", p.phiF);
-		ar& make_nvp("fa", p.fa)& make_nvp("kca", p.kca)& make_nvp("gammaN", p.gammaN);
+#define MESO_SERIALIZE(name, ...) ar& make_nvp(#name, p.name);
+		MESO_NORMAL_PARAMS(MESO_SERIALIZE)
+#undef MESO_SERIALIZE
 		ar& make_nvp("adhesion", adhesion)& make_nvp("k2Interpolation", interp);
 		ar& make_nvp("deltaA", p.deltaA)& make_nvp("delta0PerMaxP", p.delta0PerMaxP);
-		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.twisting);
-		ar& make_nvp("leverFactor", p.leverFactor)& make_nvp("rollTwist", p.rollTwist)& make_nvp("tangential", p.tangential);
-		ar& make_nvp("slides", p.slides)& make_nvp("rolls", p.rolls)& make_nvp("twists", p.twists);
+		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.torsion);
+		ar& make_nvp("leverFactor", p.leverFactor)& make_nvp("rollTwist", p.rollingOrTorsion)& make_nvp("tangential", p.tangential);
+		ar& make_nvp("slides", p.slidingActs)& make_nvp("rolls", p.rollingActs)& make_nvp("twists", p.torsionActs);
+		if (version >= 1) ar& make_nvp("phiD", p.phiD);
+		else {
+			p.phiD = 1;
+			for (const meso::ElementParams* e : { &p.sliding, &p.rolling, &p.torsion })
+				if (e->muS > 0) {
+					p.phiD = e->muD / e->muS;
+					break;
+				}
+		}
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
 	}
@@ -312,3 +305,4 @@ namespace boost { namespace serialization {
 		ar& make_nvp("k", e.k)& make_nvp("gamma", e.gamma)& make_nvp("muS", e.muS)& make_nvp("muD", e.muD);
 	}
 }} // namespace boost::serialization
+BOOST_CLASS_VERSION(meso::PairParams, 1)

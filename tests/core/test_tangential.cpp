@@ -107,17 +107,17 @@ TEST(Kinematics, RigidRotationHasNoRelativeMotion)
 	const ContactVelocities c = contactVelocities(n, vc, w - w, 0.6);
 	EXPECT_NEAR(c.sliding.norm(), 0, 1e-15);
 	EXPECT_NEAR(c.rolling.norm(), 0, 1e-15);
-	EXPECT_NEAR(c.twist, 0, 1e-15);
+	EXPECT_NEAR(c.torsion, 0, 1e-15);
 }
 
-TEST(Kinematics, RollingAndTwistOpposeRelativeRotation)
+TEST(Kinematics, RollingAndTorsionOpposeRelativeRotation)
 {
 	const Vec3 n(0, 0, 1);
 	const Vec3 vc = sphereContactVelocity(n, Vec3(Vec3::Zero()), Vec3(0, 2, 3), Vec3(Vec3::Zero()), 1, 1);
 	const ContactVelocities c = contactVelocities(n, vc, Vec3(0, 2, 3), 0.5);
 	EXPECT_NEAR((vc - Vec3(2, 0, 0)).norm(), 0, 1e-15); // w x (arm n) = (0, 2, 3) x (0, 0, 1)
 	EXPECT_NEAR(c.rolling.x(), -1.0, 1e-15); // 0.5 n x (0, 2, 3) = (-1, 0, 0)
-	EXPECT_NEAR(c.twist, 1.5, 1e-15);
+	EXPECT_NEAR(c.torsion, 1.5, 1e-15);
 }
 
 TEST(Energy, ElasticCycleDissipatesNothingSlipDissipatesFriction)

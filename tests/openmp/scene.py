@@ -38,8 +38,8 @@ contacts = {}
 for i in O.interactions:
     if i.isReal:
         p = i.phys
-        contacts[f"{i.id1}-{i.id2}"] = [p.deltaMax, p.delta0, p.touched, *p.slidingSpring, *p.rollingSpring, p.twistSpring,
-                                        *p.shearForce, *p.rollingForce, p.twistForce, *p.normalForce]
+        contacts[f"{i.id1}-{i.id2}"] = [p.deltaMax, p.delta0, p.touched, *p.slidingSpring, *p.rollingSpring, p.torsionSpring,
+                                        *p.shearForce, *p.rollingForce, p.torsionForce, *p.normalForce]
 report = {"threads": O.numThreads, "contacts": contacts,
           "forces": [tuple(O.forces.f(b.id)) + tuple(O.forces.t(b.id)) for b in O.bodies],
           "energy": {k: O.energy[k] for k in O.energy.keys()},

@@ -77,7 +77,7 @@ for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"
         O.step()
         worst = max(worst, abs(O.energy.total() - e0) / e0)
     parts = {k: O.energy[k] / e0 for k in O.energy.keys()}
-    ok = worst <= 1e-4 and all(parts.get(k, 0) > 0 for k in ("mesoSliding", "mesoRolling", "mesoTwisting", "mesoBackground"))
+    ok = worst <= 1e-4 and all(parts.get(k, 0) > 0 for k in ("mesoSliding", "mesoRolling", "mesoTorsion", "mesoBackground"))
     print(("ok   " if ok else "FAIL ") + f"{label:32s} max |E_total - E_0|/E_0 = {worst:.2e}; final shares: " +
           ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0), flush=True)
     if not ok:

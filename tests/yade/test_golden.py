@@ -23,8 +23,8 @@ HERE = os.path.dirname(os.path.abspath(harness.__file__))
 GOLDEN = os.path.join(HERE, "golden", "golden.json")
 STEPS = 3000
 PHYS = ("deltaMax", "delta0", "k2", "touched", "hystereticForce", "adhesiveForce", "viscousForce", "normalForce",
-        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "twistSpring", "twistForce",
-        "twistTorque")
+        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring", "torsionForce",
+        "torsionTorque")
 
 
 def build():
@@ -95,7 +95,7 @@ check(set(now["contacts"]) == set(ref["contacts"]), "the same contacts exist",
       f"{len(now['contacts'])} now, {len(ref['contacts'])} stored; differ: {sorted(set(now['contacts']) ^ set(ref['contacts']))[:6]}")
 check(now["dt"] == ref["dt"], "the same time step", f"{now['dt']!r} vs {ref['dt']!r}")
 kinds = {k for c in ref["contacts"].values() for k in c}
-touched_mech = {"rollingSpring", "twistSpring", "slidingSpring", "adhesiveForce", "viscousForce"}
+touched_mech = {"rollingSpring", "torsionSpring", "slidingSpring", "adhesiveForce", "viscousForce"}
 check(touched_mech <= kinds, "the stored scene exercises springs, adhesion and viscosity", str(sorted(kinds)))
 for k in sorted(kinds):
     scale = max((abs(x) for c in ref["contacts"].values() if k in c for x in flat(c[k])), default=0.0) or 1.0

@@ -33,15 +33,15 @@ for lever in ("reduced", "a12"):
     arm1, arm2 = a1 - d / 2, a2 - d / 2
     lever_arm = arm1 * arm2 / (arm1 + arm2) * (2 if lever == "a12" else 1)
     fT = -i.phys.shearForce  # on body 1
-    quasi = lever_arm * (i.phys.twistForce * n - n.cross(i.phys.rollingForce))
+    quasi = lever_arm * (i.phys.torsionForce * n - n.cross(i.phys.rollingForce))
     expect1 = arm1 * n.cross(fT) + quasi
     expect2 = arm2 * n.cross(fT) - quasi
     got1, got2 = O.forces.t(0), O.forces.t(1)
     scale = max(expect1.norm(), expect2.norm())
     err = max((got1 - expect1).norm(), (got2 - expect2).norm()) / scale
-    parts = fT.norm() > 0 and i.phys.rollingForce.norm() > 0 and abs(i.phys.twistForce) > 0
+    parts = fT.norm() > 0 and i.phys.rollingForce.norm() > 0 and abs(i.phys.torsionForce) > 0
     ok = parts and err <= 1e-12 and abs(i.phys.leverArm / lever_arm - 1) <= 1e-14 and abs(d / delta - 1) < 0.01
     check(ok, f"leverArm '{lever}'", f"delta/a2 = {d / a2:.4f}, torques against arm_i = a_i - delta/2, a' = {lever_arm:.6e}: "
           f"rel. error {err:.1e} (|T1| {got1.norm():.3e}); sliding {fT.norm():.2e}, rolling {i.phys.rollingForce.norm():.2e}, "
-          f"torsion {abs(i.phys.twistForce):.2e}")
+          f"torsion {abs(i.phys.torsionForce):.2e}")
 finish()

@@ -8,7 +8,7 @@
 # - slide (v_t >> v_n): the tangential impulse is mu (1 + e_n) m v_n with e_n = 1.
 import math
 
-from yade import O, Vector3, Quaternion
+from yade import O, Vector3
 from mesocontact import pair, params
 from harness import failures, finish
 
@@ -68,7 +68,7 @@ def rigid_rotation(steps_per_contact, rate):
     i = O.interactions[s.ids[0], s.ids[1]]
     b1, b2 = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
     at_rest = b1.vel.norm() + b2.vel.norm() < 1e-8 and i.isReal and isinstance(i.geom, wr.ScGeom6D)
-    level = i.phys.hystereticForce + i.phys.viscousForce + i.phys.kc * i.geom.penetrationDepth  # the Coulomb level
+    level = i.phys.coulombLevel  # f_h + f_v + kc delta (test_sliding_limit checks it)
     omega = Vector3(0.3, -0.5, 0.8) * rate  # rad/s, about an axis oblique to the normal
     c = 0.5 * (b1.pos + b2.pos)
     for b in (b1, b2):
@@ -78,7 +78,7 @@ def rigid_rotation(steps_per_contact, rate):
     for _ in range(int(1.0 / (omega.norm() * O.dt))):  # one radian
         O.step()
         worst = [max(worst[0], i.phys.shearForce.norm()), max(worst[1], i.phys.rollingForce.norm()),
-                 max(worst[2], abs(i.phys.twistForce))]
+                 max(worst[2], abs(i.phys.torsionForce))]
     return at_rest, level, worst
 
 

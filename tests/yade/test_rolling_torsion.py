@@ -6,7 +6,7 @@
 # level = f_n + kc delta; a' = a - delta/2 is the lever arm against a wall ('reduced').
 import math
 
-from yade import O, Vector3, wrapper as w
+from yade import O, wrapper as w
 from mesocontact import pair, params
 from harness import failures, finish
 
@@ -29,7 +29,7 @@ def settled():
 
 
 def level_of(i):
-    return i.phys.hystereticForce + i.phys.viscousForce + i.phys.kc * i.geom.penetrationDepth
+    return i.phys.coulombLevel  # f_h + f_v + kc delta (test_sliding_limit checks it)
 
 
 def fit_slope(ts, ys):

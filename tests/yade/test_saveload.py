@@ -71,8 +71,8 @@ full = dict(mat, kt=40.0, gammaT=1e-3, frictionAngle=0.3, kr=20.0, gammaR=5e-4, 
 
 def springs():
     i = O.interactions[0, 1]
-    return (tuple(i.phys.slidingSpring), tuple(i.phys.rollingSpring), i.phys.twistSpring, tuple(i.phys.shearForce),
-            tuple(i.phys.rollingForce), i.phys.twistForce)
+    return (tuple(i.phys.slidingSpring), tuple(i.phys.rollingSpring), i.phys.torsionSpring, tuple(i.phys.shearForce),
+            tuple(i.phys.rollingForce), i.phys.torsionForce)
 
 
 for ext in (".yade.gz", ".xml"):
@@ -80,7 +80,7 @@ for ext in (".yade.gz", ".xml"):
                         track_energy=True)
     steps = 0
     while not (O.interactions.has(0, 1) and O.interactions[0, 1].isReal and O.interactions[0, 1].phys.slidingSpring.norm() > 0
-               and abs(O.interactions[0, 1].phys.twistSpring) > 0 and steps > 300):
+               and abs(O.interactions[0, 1].phys.torsionSpring) > 0 and steps > 300):
         O.step()
         steps += 1
     path = os.path.join(tmp, "springs" + ext)

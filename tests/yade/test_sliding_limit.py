@@ -19,7 +19,7 @@ def ramp_tick():
     ft = st["ph"].shearForce.norm()
     if ft > st["peak"]:
         st.update(peak=ft, peak_force=F,
-                  peak_level=st["ph"].hystereticForce + st["ph"].viscousForce + st["ph"].kc * st["i"].geom.penetrationDepth)
+                  peak_level=st["ph"].coulombLevel)
     if st["ball"].state.vel[0] > 20 * st["creep"]:
         st["slipped"] = True
         O.stopAtIter = O.iter + 1  # not O.pause() from inside the loop (see pair._watch)
@@ -38,7 +38,10 @@ for label, mat in cases:
     O.run(int(150 * s.contact_time / O.dt), True)
     i = O.interactions[s.ids[0], s.ids[1]]
     ph = i.phys
+    # The Coulomb level from its definition, once, against the law's own (which the other tests read).
     level = ph.hystereticForce + ph.viscousForce + ph.kc * i.geom.penetrationDepth
+    check(abs(ph.coulombLevel - level) <= 1e-15 * abs(level), f"{label}: MesoPhys.coulombLevel",
+          f"{ph.coulombLevel:.17e} N against f_h + f_v + kc delta = {level:.17e} N")
     if not (ball.state.vel.norm() < 1e-8 and level > 0):
         failures.append(f"{label}: not at rest in contact (v = {ball.state.vel.norm():.2e}, level = {level:.3e})")
         continue
@@ -67,7 +70,7 @@ for label, mat in cases:
     t0, v0 = O.time, ball.state.vel[0]
     O.run(2000, True)
     acc = (ball.state.vel[0] - v0) / (O.time - t0)
-    lv = ph.hystereticForce + ph.viscousForce + ph.kc * i.geom.penetrationDepth
+    lv = ph.coulombLevel
     acc_th = (F - mu_d * lv) / m
     acc_err = abs(acc - acc_th) / acc_th
     dyn_err = abs(ph.shearForce.norm() - mu_d * lv) / (mu_d * lv)
