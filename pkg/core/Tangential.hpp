@@ -1,4 +1,4 @@
-// Sliding, rolling and torsion resistance of Luding 2008 (docs/model.md §10): one spring-dashpot-
+// Sliding, rolling and torsion resistance of Luding 2008 (docs/tangential.md): one spring-dashpot-
 // Coulomb element used three times, plus the contact kinematics. Header-only; Eigen, no YADE.
 #pragma once
 #include <Eigen/Core>
@@ -27,6 +27,7 @@ template <class V> struct ElementStep {
 // Dot product written out in Eigen's summation order a0 b0 + (a1 b1 + a2 b2) (same results), for the
 // same reason: Eigen's dot() stays out of line in go().
 MESO_HOT double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + (a[1] * b[1] + a[2] * b[2]); }
+MESO_HOT double dot(double a, double b) { return a * b; } // the 1D element (torsion)
 
 // a x + b y, written out for the same reason (Eigen's assignment kernels stay out of line in go()).
 MESO_HOT Vec3 combine(double a, const Vec3& x, double b, const Vec3& y)
@@ -40,7 +41,7 @@ MESO_HOT double magnitude(double v) { return std::abs(v); }
 MESO_HOT double squared(const Vec3& v) { return dot(v, v); }
 MESO_HOT double squared(double v) { return v * v; }
 
-// One step of the spring-dashpot-Coulomb element (docs/model.md §10), V = Vec3 or double.
+// One step of the spring-dashpot-Coulomb element (docs/tangential.md), V = Vec3 or double.
 // The spring is advanced by v dt first (so the force belongs to this step's configuration, as
 // the normal law does), then the trial force -k xi - gamma v is compared with the Coulomb limit;
 // beyond it the force is the dynamic limit muD * level along the trial direction and the spring
@@ -109,7 +110,7 @@ struct ContactRotation {
 MESO_INLINE void rotateWithContact(Vec3& xi, const Vec3& nPrev, const Vec3& n, double spinAngle) { ContactRotation(nPrev, n, spinAngle).apply(xi); }
 
 // Arms from the centres to the contact point (a - delta/2 for a sphere, 0 for a wall, box or
-// facet) and the lever arm a'_12 of rolling and torsion (docs/model.md §10).
+// facet) and the lever arm a'_12 of rolling and torsion (docs/tangential.md).
 struct ContactArms {
 	double arm1 = 0, arm2 = 0, lever = 0;
 };
@@ -168,17 +169,15 @@ MESO_HOT ContactVelocities contactVelocities(const Vec3& n, const Vec3& vc, cons
 	ContactVelocities c;
 	c.sliding = combine(1.0, vc, -dot(n, vc), n);
 	c.rolling = leverArm * cross(n, dw);
-	c.torsion   = leverArm * dot(n, dw);
+	c.torsion = leverArm * dot(n, dw);
 	return c;
 }
 
 // Energy absorbed by an element over one step (trapezoid of the force over the relative
 // displacement v dt, with the previous step's force), and its stored spring energy [J].
-MESO_INLINE double dotOf(const Vec3& a, const Vec3& b) { return a.dot(b); }
-MESO_INLINE double dotOf(double a, double b) { return a * b; }
 template <class V> MESO_INLINE double absorbedWork(const V& prevForce, const V& force, const V& v, double dt)
 {
-	return -0.5 * dt * (dotOf(prevForce, v) + dotOf(force, v));
+	return -0.5 * dt * (dot(prevForce, v) + dot(force, v));
 }
 MESO_INLINE double springEnergy(const ElementParams& p, const Vec3& xi) { return 0.5 * p.k * xi.squaredNorm(); }
 MESO_INLINE double springEnergy(const ElementParams& p, double xi) { return 0.5 * p.k * xi * xi; }
@@ -236,7 +235,7 @@ MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& f
 	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.torsion, s.xiO);
 	energy->sliding  = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
 	energy->rolling  = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
-	energy->torsion = absorbedWork(prevO, s.fO, v.torsion, dt) - (uO - uO0);
+	energy->torsion  = absorbedWork(prevO, s.fO, v.torsion, dt) - (uO - uO0);
 	energy->stored   = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.torsion);
 }
 
@@ -246,7 +245,7 @@ MESO_INLINE void tangentialRelease(const PairParams& p, TangentialState& s, Vec3
 	if (energy) {
 		energy->sliding  = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
 		energy->rolling  = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
-		energy->torsion = absorbedWork(s.fO, 0.0, v.torsion, dt) + springEnergy(p.torsion, s.xiO);
+		energy->torsion  = absorbedWork(s.fO, 0.0, v.torsion, dt) + springEnergy(p.torsion, s.xiO);
 		energy->stored   = 0;
 	}
 	s.reset();

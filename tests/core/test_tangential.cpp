@@ -1,5 +1,5 @@
 // The spring-dashpot-Coulomb element, the rotation of springs with the contact and the contact
-// kinematics, against hand-derived values (docs/model.md §10).
+// kinematics, against hand-derived values (docs/tangential.md).
 #include "Tangential.hpp"
 #include <gtest/gtest.h>
 #include <cmath>

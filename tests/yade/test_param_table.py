@@ -7,9 +7,10 @@ import math
 import os
 import tempfile
 
-from yade import O, utils
+from yade import O
 from yade import wrapper as w
 from harness import check, finish
+from golden.pairparams_v0 import contact
 
 HERE = os.path.dirname(os.path.abspath(__import__("harness").__file__))
 
@@ -31,21 +32,7 @@ mat_a = dict({k: v[1] for k, v in RULES.items()}, adhesion="reversible", density
 mat_b = dict({k: v[2] for k, v in RULES.items()}, adhesion="reversible", density=2000.0, frictionAngle=math.atan(0.3))
 
 
-def scene():
-    O.reset()
-    a, b = O.materials.append(w.MesoMat(**mat_a)), O.materials.append(w.MesoMat(**mat_b))
-    r = 1e-3
-    O.bodies.append([utils.sphere((0, 0, 0), r, material=a), utils.sphere((2 * r - 2e-6, 0, 0), r, material=b)])
-    O.bodies[0].state.vel, O.bodies[0].state.angVel = (0.01, 0.003, 0), (1, 2, 3)
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
-                 w.NewtonIntegrator(damping=0)]
-    O.dt = 1e-6
-    O.run(200, True)
-    return O.interactions[0, 1]
-
-
-i = scene()
+i = contact(mat_a, mat_b, 200, angVel=(1, 2, 3), vel=(0.01, 0.003, 0), overlap=2e-6)
 p = i.phys
 for name, (rule, x, y) in RULES.items():
     want = rule(x, y)

@@ -1,0 +1,194 @@
+// Build-time layout check (cmake/layout/check_layout.py): the plugin is compiled against headers
+// fetched from Debian's YADE source package, which may be of another version than the installed
+// library. This Python module, compiled with the plugin's headers and flags, reads the members the
+// plugin touches from objects the installed library made and filled; check_layout.py compares
+// them with what the library itself reports. A member at another offset reads another value.
+#include <core/Body.hpp>
+#include <core/BodyContainer.hpp>
+#include <core/Cell.hpp>
+#include <core/EnergyTracker.hpp>
+#include <core/ForceContainer.hpp>
+#include <core/Functor.hpp>
+#include <core/GlobalEngine.hpp>
+#include <core/Interaction.hpp>
+#include <core/InteractionContainer.hpp>
+#include <core/Omega.hpp>
+#include <core/Scene.hpp>
+#include <core/State.hpp>
+#include <core/Dispatching.hpp>
+#include <pkg/common/ElastMat.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/dem/FrictPhys.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+#include <boost/python.hpp>
+#include <malloc.h>
+
+namespace py = boost::python;
+using namespace yade;
+
+namespace {
+py::tuple vec(const Vector3r& v) { return py::make_tuple(double(v[0]), double(v[1]), double(v[2])); }
+py::tuple vec(const Vector3i& v) { return py::make_tuple(v[0], v[1], v[2]); }
+py::tuple mat(const Matrix3r& m)
+{
+	py::list rows;
+	for (int i = 0; i < 3; ++i)
+		rows.append(py::make_tuple(double(m(i, 0)), double(m(i, 1)), double(m(i, 2))));
+	return py::tuple(rows);
+}
+template <class T> T& object(py::object o) { return py::extract<T&>(o)(); }
+
+// sizeof of each class as these headers lay it out, and the usable size of the block the library
+// allocated for an object (glibc rounds sizeof + 8 up to 16 bytes, minus 8).
+py::dict sizes()
+{
+	py::dict d;
+	d["Serializable"]   = sizeof(Serializable);
+	d["Material"]       = sizeof(Material);
+	d["ElastMat"]       = sizeof(ElastMat);
+	d["FrictMat"]       = sizeof(FrictMat);
+	d["IPhys"]          = sizeof(IPhys);
+	d["NormPhys"]       = sizeof(NormPhys);
+	d["NormShearPhys"]  = sizeof(NormShearPhys);
+	d["FrictPhys"]      = sizeof(FrictPhys);
+	d["IGeom"]          = sizeof(IGeom);
+	d["ScGeom"]         = sizeof(ScGeom);
+	d["ScGeom6D"]       = sizeof(ScGeom6D);
+	d["State"]          = sizeof(State);
+	d["Body"]           = sizeof(Body);
+	d["Interaction"]    = sizeof(Interaction);
+	d["Sphere"]         = sizeof(Sphere);
+	d["IPhysFunctor"]   = sizeof(IPhysFunctor);
+	d["LawFunctor"]     = sizeof(LawFunctor);
+	d["GlobalEngine"]   = sizeof(GlobalEngine);
+	return d;
+}
+size_t usable(py::object o) { return malloc_usable_size(py::extract<Serializable*>(o)()); }
+
+py::dict state(py::object o)
+{
+	const State& s = object<State>(o);
+	py::dict     d;
+	d["pos"]     = vec(s.pos);
+	d["vel"]     = vec(s.vel);
+	d["angVel"]  = vec(s.angVel);
+	d["mass"]    = double(s.mass);
+	d["inertia"] = vec(s.inertia);
+	return d;
+}
+py::dict body(py::object o)
+{
+	const Body& b = object<Body>(o);
+	py::dict    d;
+	d["id"]            = b.id;
+	d["clumpId"]       = b.clumpId;
+	d["isDynamic"]     = b.isDynamic();
+	d["isClumpMember"] = b.isClumpMember();
+	d["state"]         = size_t(b.state.get());
+	d["shape"]         = size_t(b.shape.get());
+	d["material"]      = size_t(b.material.get());
+	return d;
+}
+size_t address(py::object o) { return size_t(py::extract<Serializable*>(o)()); }
+py::dict material(py::object o)
+{
+	const FrictMat& m = object<FrictMat>(o);
+	py::dict        d;
+	d["density"]       = double(m.density);
+	d["young"]         = double(m.young);
+	d["frictionAngle"] = double(m.frictionAngle);
+	d["id"]            = m.id;
+	return d;
+}
+py::dict sphere(py::object o)
+{
+	py::dict d;
+	d["radius"] = double(object<Sphere>(o).radius);
+	return d;
+}
+py::dict phys(py::object o)
+{
+	const FrictPhys& p = object<FrictPhys>(o);
+	py::dict         d;
+	d["kn"]                     = double(p.kn);
+	d["ks"]                     = double(p.ks);
+	d["normalForce"]            = vec(p.normalForce);
+	d["shearForce"]             = vec(p.shearForce);
+	d["tangensOfFrictionAngle"] = double(p.tangensOfFrictionAngle);
+	return d;
+}
+py::dict geom(py::object o)
+{
+	const ScGeom& g = object<ScGeom>(o);
+	py::dict      d;
+	d["penetrationDepth"] = double(g.penetrationDepth);
+	d["normal"]           = vec(g.normal);
+	d["contactPoint"]     = vec(g.contactPoint);
+	return d;
+}
+py::dict interaction(py::object o)
+{
+	const Interaction& i = object<Interaction>(o);
+	py::dict           d;
+	d["id1"]      = i.getId1();
+	d["id2"]      = i.getId2();
+	d["isReal"]   = i.isReal();
+	d["cellDist"] = vec(i.cellDist);
+	d["geom"]     = size_t(i.geom.get());
+	d["phys"]     = size_t(i.phys.get());
+	return d;
+}
+// The functor's scene pointer, which the library's dispatchers set before calling it.
+size_t functorScene(py::object o) { return size_t(object<Functor>(o).scene); }
+size_t engineScene(py::object o) { return size_t(object<Engine>(o).scene); }
+
+// The present scene: scalars first; the pointers only after check_layout.py found those right.
+py::dict scene()
+{
+	const Scene& s = *Omega::instance().getScene();
+	py::dict     d;
+	d["address"]     = size_t(&s);
+	d["dt"]          = double(s.dt);
+	d["iter"]        = s.iter;
+	d["isPeriodic"]  = s.isPeriodic;
+	d["trackEnergy"] = s.trackEnergy;
+	return d;
+}
+py::dict sceneContainers()
+{
+	Scene&   s = *Omega::instance().getScene();
+	py::dict d;
+	d["bodies"]       = s.bodies->size();
+	d["interactions"] = s.interactions->size();
+	s.forces.sync(); // the library's functions, on the container at these headers' offset
+	d["force0"] = vec(s.forces.getForce(0));
+	d["energyNames"]  = s.energy->names.size();
+	if (s.isPeriodic) {
+		d["hSize"]           = mat(s.cell->hSize);
+		d["velGrad"]         = mat(s.cell->velGrad);
+		d["prevHSize"]       = mat(s.cell->prevHSize);
+		d["intrShiftPos100"] = vec(s.cell->intrShiftPos(Vector3i(1, 0, 0)));
+		d["intrShiftVel100"] = vec(s.cell->intrShiftVel(Vector3i(1, 0, 0)));
+	}
+	return d;
+}
+} // namespace
+
+BOOST_PYTHON_MODULE(meso_layout_probe)
+{
+	py::def("sizes", sizes);
+	py::def("usable", usable);
+	py::def("address", address);
+	py::def("state", state);
+	py::def("body", body);
+	py::def("material", material);
+	py::def("sphere", sphere);
+	py::def("phys", phys);
+	py::def("geom", geom);
+	py::def("interaction", interaction);
+	py::def("functorScene", functorScene);
+	py::def("engineScene", engineScene);
+	py::def("scene", scene);
+	py::def("sceneContainers", sceneContainers);
+}
