@@ -3,10 +3,10 @@
 # under YADE's Law2_ScGeom_FrictPhys_CundallStrack with the same normal stiffness (and no
 # friction): proof that the plugin reads YADE's geometry and applies forces as YADE does.
 import random
-import sys
 
 from yade import *
 from yade import utils
+from harness import check, finish
 
 K, R, RHO = 2e3, 1e-3, 2500.0
 
@@ -53,12 +53,8 @@ for a_step, b_step in zip(ref, mes):
         worst_pos = max(worst_pos, max(abs(x - y) for x, y in zip(pa, pb)) / R)
         worst_vel = max(worst_vel, max(abs(x - y) for x, y in zip(va, vb)) / 0.05)
         worst_vel = max(worst_vel, max(abs(x) for x in wb))  # no torque: the normal force passes the centres
-print(f"contacts summed over checkpoints: CundallStrack {n_ref}, meso {n_mes}")
-print(f"max position difference / radius = {worst_pos:.2e}; max velocity difference / v0 = {worst_vel:.2e}")
-if n_ref == 0 or n_ref != n_mes:
-    print("FAIL: the scene must have contacts, the same under both laws")
-    sys.exit(1)
-if worst_pos > 1e-9 or worst_vel > 1e-9:
-    print("FAIL: trajectories differ")
-    sys.exit(1)
-print("all passed")
+check(n_ref > 0 and n_ref == n_mes, "the scene has contacts, the same under both laws",
+      f"contacts summed over checkpoints: CundallStrack {n_ref}, meso {n_mes}")
+check(worst_pos <= 1e-9 and worst_vel <= 1e-9, "trajectories equal to CundallStrack's",
+      f"max position difference / radius = {worst_pos:.2e}; max velocity difference / v0 = {worst_vel:.2e}")
+finish()
