@@ -66,28 +66,29 @@ py::dict sizes()
 }
 size_t usable(py::object o) { return malloc_usable_size(py::extract<Serializable*>(o)()); }
 
+// One reading per member: d["name"] = the member as Python sees it (pointers as addresses).
+py::object value(Real x) { return py::object(double(x)); }
+py::object value(int x) { return py::object(x); }
+py::object value(bool x) { return py::object(x); }
+py::object value(const Vector3r& v) { return vec(v); }
+py::object value(const Vector3i& v) { return vec(v); }
+template <class T> py::object value(const shared_ptr<T>& p) { return py::object(size_t(p.get())); }
+#define READ(obj, member) d[#member] = value(obj.member)
+
 py::dict state(py::object o)
 {
 	const State& s = object<State>(o);
 	py::dict     d;
-	d["pos"]     = vec(s.pos);
-	d["vel"]     = vec(s.vel);
-	d["angVel"]  = vec(s.angVel);
-	d["mass"]    = double(s.mass);
-	d["inertia"] = vec(s.inertia);
+	READ(s, pos), READ(s, vel), READ(s, angVel), READ(s, mass), READ(s, inertia);
 	return d;
 }
 py::dict body(py::object o)
 {
 	const Body& b = object<Body>(o);
 	py::dict    d;
-	d["id"]            = b.id;
-	d["clumpId"]       = b.clumpId;
+	READ(b, id), READ(b, clumpId), READ(b, state), READ(b, shape), READ(b, material);
 	d["isDynamic"]     = b.isDynamic();
 	d["isClumpMember"] = b.isClumpMember();
-	d["state"]         = size_t(b.state.get());
-	d["shape"]         = size_t(b.shape.get());
-	d["material"]      = size_t(b.material.get());
 	return d;
 }
 size_t address(py::object o) { return size_t(py::extract<Serializable*>(o)()); }
@@ -95,48 +96,38 @@ py::dict material(py::object o)
 {
 	const FrictMat& m = object<FrictMat>(o);
 	py::dict        d;
-	d["density"]       = double(m.density);
-	d["young"]         = double(m.young);
-	d["frictionAngle"] = double(m.frictionAngle);
-	d["id"]            = m.id;
+	READ(m, density), READ(m, young), READ(m, frictionAngle), READ(m, id);
 	return d;
 }
 py::dict sphere(py::object o)
 {
-	py::dict d;
-	d["radius"] = double(object<Sphere>(o).radius);
+	const Sphere& s = object<Sphere>(o);
+	py::dict      d;
+	READ(s, radius);
 	return d;
 }
 py::dict phys(py::object o)
 {
 	const FrictPhys& p = object<FrictPhys>(o);
 	py::dict         d;
-	d["kn"]                     = double(p.kn);
-	d["ks"]                     = double(p.ks);
-	d["normalForce"]            = vec(p.normalForce);
-	d["shearForce"]             = vec(p.shearForce);
-	d["tangensOfFrictionAngle"] = double(p.tangensOfFrictionAngle);
+	READ(p, kn), READ(p, ks), READ(p, normalForce), READ(p, shearForce), READ(p, tangensOfFrictionAngle);
 	return d;
 }
 py::dict geom(py::object o)
 {
 	const ScGeom& g = object<ScGeom>(o);
 	py::dict      d;
-	d["penetrationDepth"] = double(g.penetrationDepth);
-	d["normal"]           = vec(g.normal);
-	d["contactPoint"]     = vec(g.contactPoint);
+	READ(g, penetrationDepth), READ(g, normal), READ(g, contactPoint);
 	return d;
 }
 py::dict interaction(py::object o)
 {
 	const Interaction& i = object<Interaction>(o);
 	py::dict           d;
-	d["id1"]      = i.getId1();
-	d["id2"]      = i.getId2();
-	d["isReal"]   = i.isReal();
-	d["cellDist"] = vec(i.cellDist);
-	d["geom"]     = size_t(i.geom.get());
-	d["phys"]     = size_t(i.phys.get());
+	READ(i, cellDist), READ(i, geom), READ(i, phys);
+	d["id1"]    = i.getId1();
+	d["id2"]    = i.getId2();
+	d["isReal"] = i.isReal();
 	return d;
 }
 // The functor's scene pointer, which the library's dispatchers set before calling it.
