@@ -21,6 +21,8 @@
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
+#include <boost/preprocessor/seq/for_each.hpp>
+#include <boost/preprocessor/stringize.hpp>
 #include <boost/python.hpp>
 #include <malloc.h>
 
@@ -73,63 +75,40 @@ py::object value(bool x) { return py::object(x); }
 py::object value(const Vector3r& v) { return vec(v); }
 py::object value(const Vector3i& v) { return vec(v); }
 template <class T> py::object value(const shared_ptr<T>& p) { return py::object(size_t(p.get())); }
-#define READ(obj, member) d[#member] = value(obj.member)
-
-py::dict state(py::object o)
+// A reader of class T: the listed members as Python sees them, by name (pointers as addresses).
+#define READ_MEMBER(r, obj, member) d[BOOST_PP_STRINGIZE(member)] = value(obj.member);
+#define READER(fname, T, members) \
+	py::dict fname(py::object o) \
+	{ \
+		const T& x = object<T>(o); \
+		py::dict d; \
+		BOOST_PP_SEQ_FOR_EACH(READ_MEMBER, x, members) \
+		return d; \
+	}
+READER(state, State, (pos)(vel)(angVel)(mass)(inertia))
+READER(material, FrictMat, (density)(young)(frictionAngle)(id))
+READER(sphere, Sphere, (radius))
+READER(phys, FrictPhys, (kn)(ks)(normalForce)(shearForce)(tangensOfFrictionAngle))
+READER(geom, ScGeom, (penetrationDepth)(normal)(contactPoint))
+READER(bodyMembers, Body, (id)(clumpId)(state)(shape)(material))
+READER(interactionMembers, Interaction, (cellDist)(geom)(phys))
+py::dict body(py::object o) // and what the plugin calls on it
 {
-	const State& s = object<State>(o);
-	py::dict     d;
-	READ(s, pos), READ(s, vel), READ(s, angVel), READ(s, mass), READ(s, inertia);
-	return d;
-}
-py::dict body(py::object o)
-{
-	const Body& b = object<Body>(o);
-	py::dict    d;
-	READ(b, id), READ(b, clumpId), READ(b, state), READ(b, shape), READ(b, material);
-	d["isDynamic"]     = b.isDynamic();
-	d["isClumpMember"] = b.isClumpMember();
-	return d;
-}
-size_t address(py::object o) { return size_t(py::extract<Serializable*>(o)()); }
-py::dict material(py::object o)
-{
-	const FrictMat& m = object<FrictMat>(o);
-	py::dict        d;
-	READ(m, density), READ(m, young), READ(m, frictionAngle), READ(m, id);
-	return d;
-}
-py::dict sphere(py::object o)
-{
-	const Sphere& s = object<Sphere>(o);
-	py::dict      d;
-	READ(s, radius);
-	return d;
-}
-py::dict phys(py::object o)
-{
-	const FrictPhys& p = object<FrictPhys>(o);
-	py::dict         d;
-	READ(p, kn), READ(p, ks), READ(p, normalForce), READ(p, shearForce), READ(p, tangensOfFrictionAngle);
-	return d;
-}
-py::dict geom(py::object o)
-{
-	const ScGeom& g = object<ScGeom>(o);
-	py::dict      d;
-	READ(g, penetrationDepth), READ(g, normal), READ(g, contactPoint);
+	py::dict d         = bodyMembers(o);
+	d["isDynamic"]     = object<Body>(o).isDynamic();
+	d["isClumpMember"] = object<Body>(o).isClumpMember();
 	return d;
 }
 py::dict interaction(py::object o)
 {
 	const Interaction& i = object<Interaction>(o);
-	py::dict           d;
-	READ(i, cellDist), READ(i, geom), READ(i, phys);
-	d["id1"]    = i.getId1();
-	d["id2"]    = i.getId2();
-	d["isReal"] = i.isReal();
+	py::dict           d = interactionMembers(o);
+	d["id1"]             = i.getId1();
+	d["id2"]             = i.getId2();
+	d["isReal"]          = i.isReal();
 	return d;
 }
+size_t address(py::object o) { return size_t(py::extract<Serializable*>(o)()); }
 // The functor's scene pointer, which the library's dispatchers set before calling it.
 size_t functorScene(py::object o) { return size_t(object<Functor>(o).scene); }
 size_t engineScene(py::object o) { return size_t(object<Engine>(o).scene); }

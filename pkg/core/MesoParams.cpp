@@ -76,11 +76,11 @@ double harmonicMean(double x, double y)
 
 void setMechanisms(PairParams& p, bool geometryWithRotations)
 {
-	p.tangential = p.sliding.active() || p.rolling.active() || p.torsion.active();
-	p.rollingOrTorsion  = (p.rolling.active() || p.torsion.active()) && geometryWithRotations;
-	p.slidingActs     = p.sliding.active();
+	p.tangential       = p.sliding.active() || p.rolling.active() || p.torsion.active();
+	p.rollingOrTorsion = (p.rolling.active() || p.torsion.active()) && geometryWithRotations;
+	p.slidingActs      = p.sliding.active();
 	p.rollingActs      = p.rollingOrTorsion && p.rolling.active();
-	p.torsionActs     = p.rollingOrTorsion && p.torsion.active();
+	p.torsionActs      = p.rollingOrTorsion && p.torsion.active();
 }
 
 PairGeometry pairGeometry(const PairParams& p, double radius1, double radius2)

@@ -56,7 +56,7 @@ double harmonicMean(double x, double y);
 struct PairParams {
 	// Hot: what Law2::go() reads every step, flags first.
 	bool            tangential      = false; // any tangential mechanism acts
-	bool            rollingOrTorsion       = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
+	bool            rollingOrTorsion = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
 	bool            slidingActs = false, rollingActs = false, torsionActs = false; // which elements act (setMechanisms())
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
@@ -91,8 +91,8 @@ struct PairGeometry {
 // leverFactor are left to the caller.
 PairParams mixPair(const MaterialParams& m1, const MaterialParams& m2);
 
-// Sets the flags tangential, rollingOrTorsion, slidingActs, rollingActs and torsionActs from the elements; rolling and
-// torsion need a geometry that carries rotations (YADE: ScGeom6D).
+// Sets the flags tangential, rollingOrTorsion, slidingActs, rollingActs and torsionActs from the
+// elements; rolling and torsion need a geometry that carries rotations (YADE: ScGeom6D).
 void setMechanisms(PairParams& p, bool geometryWithRotations);
 
 // The geometry of one contact of pair p between spheres of radii r1 and r2 (0: wall, box or facet).

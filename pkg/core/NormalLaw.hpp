@@ -159,22 +159,23 @@ struct NormalMemory {
 	double lastDelta   = std::numeric_limits<double>::quiet_NaN(); // NaN before the law's first step
 };
 
-// One step of the normal law with its energy: the previous step rebuilt from mem (before the
-// history changes), this step's force (h and mem updated), and the increments of energyStep(). On
+// One step of the normal law with its energy: the previous step rebuilt from last (before the
+// history changes), this step's force (h updated; the caller keeps it as the next step's last),
+// and the increments of energyStep(). On
 // the law's first step the contact is taken as having been at delta - vn dt already: zero for a pair
 // coming from outside the force's range; spheres that start overlapped hold their initial elastic
 // energy (in e.elastic), not work done in this step (which would read as negative dissipation).
-MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeometry& g, NormalHistory& h, NormalMemory& mem, double delta,
+MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeometry& g, NormalHistory& h, const NormalMemory& last, double delta,
                                              double vn, double dt, NormalEnergyStep& e)
 {
-	const bool   first     = std::isnan(mem.lastDelta);
-	const double prevDelta = first ? delta - vn * dt : mem.lastDelta;
+	const bool   first     = std::isnan(last.lastDelta);
+	const double prevDelta = first ? delta - vn * dt : last.lastDelta;
 	NormalForce  prev;
 	double       prevElastic;
 	if (!first) {
-		prev.hysteretic = mem.fHysteretic;
+		prev.hysteretic = last.fHysteretic;
 		prev.adhesive   = adhesiveForceAfter(p, h, prevDelta);
-		prev.viscous    = mem.fViscous;
+		prev.viscous    = last.fViscous;
 		prevElastic     = storedElastic(p, g, h, prev.hysteretic);
 	} else {
 		NormalHistory fresh;
@@ -183,9 +184,6 @@ MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeom
 	}
 	const NormalForce f = normalForce(p, g, h, delta, vn);
 	e                   = energyStep(p, g, prevDelta, prevElastic, h, prev, f, delta);
-	mem.fHysteretic     = f.hysteretic;
-	mem.fViscous        = f.viscous;
-	mem.lastDelta       = delta;
 	return f;
 }
 

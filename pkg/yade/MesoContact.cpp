@@ -428,21 +428,21 @@ namespace {
 	// Two spheres: the branches are +-arm n.
 	MESO_HOT MesoKinematics sphereSphereKinematics(const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, Real delta)
 	{
-		MesoKinematics k;
-		const Vector3r&   n = geom.normal;
-		k.arms              = meso::contactArms(p, g, delta);
-		const Vector3r vc   = meso::sphereContactVelocity(n, m.relVel, m.s1->angVel, m.s2->angVel, k.arms.arm1, k.arms.arm2);
-		k.v                 = meso::contactVelocities(n, vc, m.s1->angVel - m.s2->angVel, k.arms.lever);
-		k.spin              = 0.5 * meso::dot(m.s1->angVel + m.s2->angVel, n);
+		MesoKinematics  k;
+		const Vector3r& n = geom.normal;
+		k.arms            = meso::contactArms(p, g, delta);
+		const Vector3r vc = meso::sphereContactVelocity(n, m.relVel, m.s1->angVel, m.s2->angVel, k.arms.arm1, k.arms.arm2);
+		k.v               = meso::contactVelocities(n, vc, m.s1->angVel - m.s2->angVel, k.arms.lever);
+		k.spin            = 0.5 * meso::dot(m.s1->angVel + m.s2->angVel, n);
 		return k;
 	}
 	// A sphere and a wall, box or facet: the branch of the wall to YADE's contact point.
 	MESO_HOT MesoKinematics
 	sphereWallKinematics(const Scene* scene, const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, const Interaction* I, Real delta)
 	{
-		MesoKinematics k;
-		const Vector3r&   n = geom.normal;
-		k.arms              = meso::contactArms(p, g, delta);
+		MesoKinematics  k;
+		const Vector3r& n     = geom.normal;
+		k.arms                = meso::contactArms(p, g, delta);
 		const Vector3r shift2 = scene->isPeriodic ? scene->cell->intrShiftPos(I->cellDist) : Vector3r::Zero();
 		k.b1                  = g.radius1 > 0 ? Vector3r(k.arms.arm1 * n) : Vector3r(geom.contactPoint - m.s1->pos);
 		k.b2                  = g.radius2 > 0 ? Vector3r(-k.arms.arm2 * n) : Vector3r(geom.contactPoint - m.s2->pos - shift2);
@@ -471,12 +471,11 @@ namespace {
 
 MESO_HOT meso::NormalForce Law2_ScGeom_MesoPhys_Meso::normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn)
 {
-	meso::NormalMemory mem { phys.fHysteretic, phys.fViscous, phys.lastDelta };
-	meso::NormalForce  f;
+	meso::NormalForce f;
 	if (scene->trackEnergy) {
 		if (!normalEnergiesReady.load(std::memory_order_acquire)) registerEnergies(p.tangential);
 		meso::NormalEnergyStep e;
-		f = meso::normalStepWithEnergy(p, phys.geometry, phys.history, mem, delta, vn, scene->dt, e);
+		f = meso::normalStepWithEnergy(p, phys.geometry, phys.history, { phys.fHysteretic, phys.fViscous, phys.lastDelta }, delta, vn, scene->dt, e);
 		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
 		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
 		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
@@ -530,7 +529,7 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	if (p.tangential) {
 		const auto&             g       = phys->geometry;
 		const bool              spheres = g.radius1 > 0 && g.radius2 > 0;
-		const MesoKinematics k       = spheres ? sphereSphereKinematics(p, g, geom, m, delta) : sphereWallKinematics(scene, p, g, geom, m, I, delta);
+		const MesoKinematics    k       = spheres ? sphereSphereKinematics(p, g, geom, m, delta) : sphereWallKinematics(scene, p, g, geom, m, I, delta);
 		auto&                   tphys   = *static_cast<MesoTangentialPhys*>(phys); // the Ip2 made it so
 		Vector3r                fT      = -phys->shearForce; // YADE keeps the force sustained by body 2
 		tangentialStep(tphys, p, k, n, delta, meso::coulombLevel(p, f.hysteretic, f.viscous, delta), fT);
