@@ -1,13 +1,14 @@
 """Result files that are whole or absent (plain Python).
 
 A result (one run's CSV and JSON; a figure's JSON, PNG and the runs it plots) is a *bundle*: a
-directory whose files are written under a hidden temporary name and committed by one rename,
-with a MANIFEST.json of their SHA-256 sums. A job stopped at any moment (SIGTERM, SIGKILL, a
+directory whose files are written under a hidden temporary name and committed by one rename
+(or, over an older bundle, one atomic exchange of the two directories), with a MANIFEST.json of their SHA-256 sums. A job stopped at any moment (SIGTERM, SIGKILL, a
 crash) leaves either the previous bundle or the new one under the result's name, never a mix;
 its unfinished work is a hidden ``.<name>.tmp-<pid>-...`` directory, which ``sweep`` removes once
 that process is gone. ``problems`` lists whatever does not satisfy this (for tests and for the
 kill trials of scripts/campaign_kill_trials.py).
 """
+import ctypes
 import hashlib
 import json
 import os
@@ -41,6 +42,17 @@ def savefig_atomic(fig, path, **kw):
     tmp = f"{root}.tmp-{os.getpid()}-{uuid.uuid4().hex[:8]}{ext}"
     fig.savefig(tmp, **kw)
     os.replace(tmp, path)
+
+
+_LIBC = ctypes.CDLL(None, use_errno=True)
+_RENAME_EXCHANGE = 2  # linux/fs.h
+
+
+def _exchange(a, b):
+    """Swaps two existing paths atomically (Linux renameat2 with RENAME_EXCHANGE)."""
+    if _LIBC.renameat2(-100, os.fsencode(a), -100, os.fsencode(b), _RENAME_EXCHANGE) != 0:
+        err = ctypes.get_errno()
+        raise OSError(err, f"renameat2({a}, {b}, RENAME_EXCHANGE): {os.strerror(err)}")
 
 
 def _on_sigterm(signum, frame):
@@ -91,25 +103,23 @@ class Bundle:
         files = sorted(f for f in os.listdir(self.tmp) if f != MANIFEST)
         with open(self.path(MANIFEST), "w") as f:
             json.dump({name: sha256(self.path(name)) for name in files}, f, indent=1)
+        last = None
         for _ in range(5):  # another job may commit the same result at the same time
-            trash = None
-            if os.path.exists(self.final):
-                trash = f"{self.tmp}.old"
-                try:
-                    os.rename(self.final, trash)
-                except FileNotFoundError:
-                    trash = None
             try:
-                os.rename(self.tmp, self.final)
-            except OSError:  # someone committed in between: replace theirs
-                if trash:
-                    shutil.rmtree(trash, ignore_errors=True)
+                if os.path.exists(self.final):
+                    # One atomic swap: the name holds the old bundle or the new one at every
+                    # instant, and the old one lands in our temporary directory, which a signal
+                    # handler or sweep() may remove at any moment.
+                    _exchange(self.tmp, self.final)
+                else:
+                    os.rename(self.tmp, self.final)
+            except OSError as e:  # another job committed or swapped in between: try again
+                last = e
                 continue
-            if trash:
-                shutil.rmtree(trash, ignore_errors=True)
+            shutil.rmtree(self.tmp, ignore_errors=True)
             _OPEN.discard(self.tmp)
             return self.final
-        raise RuntimeError(f"could not commit {self.final}")
+        raise RuntimeError(f"could not commit {self.final}: {last}")
 
     def discard(self):
         shutil.rmtree(self.tmp, ignore_errors=True)

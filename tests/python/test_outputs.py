@@ -29,6 +29,33 @@ WRITER = textwrap.dedent("""
                         f.flush()
                         time.sleep(0.0001)
 """)
+# A writer committed over an older bundle and sent SIGTERM right before or right after the call
+# that puts the new bundle under the name: the moments where a two-step replacement (old aside,
+# new in, old removed) loses the old bundle or leaves it behind.
+TERM_AT_SWAP = textwrap.dedent("""
+    import os, signal, sys
+    sys.path.insert(0, sys.argv[2])
+    from mesocontact import outputs
+    final, when = sys.argv[1], sys.argv[3]
+    def bundle(k):
+        with outputs.Bundle(final) as b:
+            b.write_text("k.txt", str(k))
+    bundle(1)
+    def hooked(call):
+        def f(src, dst, *a):
+            if os.path.abspath(dst) != os.path.abspath(final):
+                return call(src, dst, *a)
+            if when == "before":
+                os.kill(os.getpid(), signal.SIGTERM)
+            r = call(src, dst, *a)
+            os.kill(os.getpid(), signal.SIGTERM)
+            return r
+        return f
+    outputs.os.rename = hooked(os.rename)
+    if hasattr(outputs, "_exchange"):
+        outputs._exchange = hooked(outputs._exchange)
+    bundle(2)
+""")
 PY = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "py")
 
 
@@ -46,7 +73,8 @@ class BundleTest(unittest.TestCase):
             with outputs.Bundle(final) as b:
                 b.write_text("a.csv", "half")
                 1 / 0
-        self.assertEqual(open(os.path.join(final, "a.csv")).read(), "iter\n1\n")  # the old one stays
+        with open(os.path.join(final, "a.csv")) as f:
+            self.assertEqual(f.read(), "iter\n1\n")  # the old one stays
         self.assertEqual(outputs.problems(self.dir), [])
         with open(os.path.join(final, "a.csv"), "a") as f:  # tampering shows
             f.write("2\n")
@@ -77,6 +105,19 @@ class BundleTest(unittest.TestCase):
             outputs.sweep(self.dir)  # SIGKILL: the next job removes it
             self.assertEqual(outputs.problems(self.dir, ignore_running=False), [], f"trial {trial}")
         self.assertTrue(os.path.exists(final))
+
+    def test_term_at_the_swap_leaves_one_whole_bundle(self):
+        script = os.path.join(self.dir, "term.py")
+        with open(script, "w") as f:
+            f.write(TERM_AT_SWAP)
+        for when, expect in (("before", "1"), ("after", "2")):
+            final = os.path.join(self.dir, when)
+            rc = subprocess.run([sys.executable, script, final, PY, when]).returncode
+            self.assertEqual(rc, -signal.SIGTERM, when)
+            self.assertTrue(outputs.complete(final), when)
+            with open(os.path.join(final, "k.txt")) as f:
+                self.assertEqual(f.read(), expect, when)
+            self.assertEqual(outputs.problems(self.dir, ignore_running=False), [], when)
 
     def test_manifest_lists_exactly_the_files(self):
         final = os.path.join(self.dir, "b")
