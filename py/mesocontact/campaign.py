@@ -487,6 +487,33 @@ def peaks_table(runs):
     return "\n".join(out) + "\n"
 
 
+def restore(docsdir, outdir):
+    """The inverse of ``report`` for the runs: every run copied into ``docsdir`` (a JSON naming
+    itself, with peaks, and its CSV) becomes the committed bundle runs/<name>/ in ``outdir``
+    again, so that a fresh clone regathers the figures and peaks.md without repeating runs of
+    hours. A run is restored only if the peaks recomputed from its CSV equal the JSON's; a
+    complete bundle already there is left as it is. Returns the names restored."""
+    import glob
+    restored = []
+    for js in sorted(glob.glob(os.path.join(docsdir, "*.json"))):
+        name = os.path.basename(js)[:-5]
+        with open(js) as f:
+            info = json.load(f)
+        csv_path = js[:-5] + ".csv"
+        if not (isinstance(info, dict) and info.get("name") == name and "peaks" in info and os.path.exists(csv_path)):
+            continue
+        where = run_dir(outdir, name, info.get("quick", False))
+        if _out.complete(where):
+            continue
+        rows = read_csv(csv_path)
+        if cycle_peaks(info["mode"], rows, info["steps_per_cycle"]) != info["peaks"]:
+            raise ValueError(f"restore: {csv_path} does not give the peaks of {js}")
+        with _out.Bundle(where) as b:
+            b.copy_from(docsdir, only=(name + ".csv", name + ".json"))
+        restored.append(name)
+    return restored
+
+
 def report(outdir, docsdir):
     """Copies a campaign's data and figures (CSV, JSON, PNG; not the saved states or VTK) from
     ``outdir`` into ``docsdir``: the stages' descriptions, every complete bundle (runs/*, the

@@ -111,9 +111,10 @@ except ValueError as e:
     check(str(e).startswith("mode"), f"bad mode rejected: {e}")
 
 # 4. Cycles in tension and compression at the campaign's fast period.
+summaries = {}
 for mode in ("tension", "compression"):
     amps = (0.05, 0.2)
-    summary = campaign.cyclic(mode, out, amps, quick=True, periods=campaign.PERIODS[mode][:1], progress=False)
+    summary = summaries[mode] = campaign.cyclic(mode, out, amps, quick=True, periods=campaign.PERIODS[mode][:1], progress=False)
     for amp in amps:
         name = campaign.run_name(mode, amp, campaign.PERIODS[mode][0])
         run = summary["runs"][name]
@@ -136,6 +137,35 @@ for mode in ("tension", "compression"):
     check(outputs.complete(figdir) and os.path.exists(os.path.join(figdir, fig + ".png"))
           and all(os.path.exists(os.path.join(figdir, n + ".csv")) for n in summary["runs"]),
           f"{mode}: figure bundle complete, with its runs' CSV")
+
+# 4a. The committed copies give the runs back: report into a docs folder, lose the runs, restore
+#     them (each checked against its peaks) and regather the figure without running anything.
+import shutil  # noqa: E402
+import time  # noqa: E402
+
+docs = tempfile.mkdtemp(prefix="tablet-docs-")
+campaign.report(campaign.root(out, quick=True), docs)
+runs_dir = os.path.join(campaign.root(out, quick=True), "runs")
+before = {n: open(os.path.join(runs_dir, n, n + ".csv")).read() for n in os.listdir(runs_dir)}
+shutil.rmtree(runs_dir)
+names = campaign.restore(docs, out)
+check(sorted(names) == sorted(before) and all(outputs.complete(os.path.join(runs_dir, n)) for n in names)
+      and all(open(os.path.join(runs_dir, n, n + ".csv")).read() == before[n] for n in names),
+      f"restore: {len(names)} runs from the docs copies, complete and identical")
+t0 = time.time()
+again = campaign.cyclic("tension", out, (0.05, 0.2), quick=True, periods=campaign.PERIODS["tension"][:1], progress=False)
+check(time.time() - t0 < 10 and again["runs"].keys() == summaries["tension"]["runs"].keys()
+      and all(again["runs"][n]["peaks"] == summaries["tension"]["runs"][n]["peaks"] for n in again["runs"]),
+      f"fig16 regathered from restored runs in {time.time() - t0:.1f} s")
+name = campaign.run_name("tension", 0.2, campaign.PERIODS["tension"][0])
+with open(os.path.join(docs, name + ".csv"), "a") as f:
+    f.write("999999,0.0,-9.0\n")  # a row the run never made: its peaks change
+shutil.rmtree(os.path.join(runs_dir, name))
+try:
+    campaign.restore(docs, out)
+    check(False, "restore refuses a CSV that does not give its JSON's peaks")
+except ValueError as e:
+    check(name in str(e), f"restore refuses a tampered CSV: {e}")
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).

@@ -1,0 +1,9 @@
+# Makes the committed runs of docs/tablet the campaign's run bundles again (see campaign.restore),
+# so that the figure scripts regather without repeating runs:
+#   yade -n -x scripts/tablet_restore.py DOCS OUT
+import sys
+
+from mesocontact import campaign
+
+names = campaign.restore(sys.argv[1], sys.argv[2])
+print(f"restored {len(names)} runs into {sys.argv[2]}/runs: {', '.join(names)}", flush=True)
