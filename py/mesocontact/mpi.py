@@ -1,0 +1,50 @@
+"""The meso-particle law under YADE's distributed engine ``yade.mpy``, contact history kept.
+
+mpy splits a scene by erasing, on every rank, the bodies it does not own and importing again
+those its own bodies can touch (the mirrors, and the master's walls). Every contact with such a
+body is therefore made anew at the first split: deltaMax becomes the present overlap, the
+springs restart at zero, and a run that was prepared serially and loaded continues as another
+material would. ``keep_contacts`` wraps mpy's collision step: before each one it keeps this
+rank's real contacts (their geometry and physics objects, by body ids, in C++:
+``Ip2_MesoMat_MesoMat_MesoPhys.keepContacts``), after it it gives them back to the same pairs
+wherever mpy made the pair again without them (``restoreContacts``).
+
+    from yade import mpy
+    from mesocontact import mpi
+    mpi.keep_contacts(mpy)
+    ...assign b.subdomain, label the collider "collider" and the integrator "newton"...
+    mpy.mpirun(steps)
+
+The engines must carry the labels mpy looks up (``collider``, ``newton``): without them mpy
+drives a collider of its own that the scene does not run.
+"""
+from yade import O
+from yade import wrapper as w
+
+_KEPT = {"restored": 0, "collisions": 0}
+
+
+def keep_contacts(mpy):
+    """Makes every collision step of ``mpy`` (the module) keep the state of the contacts it
+    remakes. Idempotent. Returns a dict counting the collision steps and the contacts given back
+    on this rank (for logs and tests)."""
+    if getattr(mpy.parallelCollide, "_keeps_contacts", False):
+        return _KEPT
+    original = mpy.parallelCollide
+
+    def parallelCollide():
+        w.Ip2_MesoMat_MesoMat_MesoPhys.keepContacts()
+        original()
+        _KEPT["collisions"] += 1
+        _KEPT["restored"] += w.Ip2_MesoMat_MesoMat_MesoPhys.restoreContacts()
+
+    parallelCollide._keeps_contacts = True
+    mpy.parallelCollide = parallelCollide
+    return _KEPT
+
+
+def check_labels():
+    """The labels mpy needs, or a ValueError naming the missing one."""
+    for label, kind in (("collider", w.InsertionSortCollider), ("newton", w.NewtonIntegrator)):
+        if not any(e.label == label and isinstance(e, kind) for e in O.engines):
+            raise ValueError(f"label {label!r}: yade.mpy needs the scene's {kind.__name__} labelled {label!r}")
