@@ -118,10 +118,14 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
 
 
 class Test:
-    """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined'))."""
+    """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined')).
+    ``run(n)`` advances the scene by n steps (default ``O.run(n, True)``; under yade.mpy
+    ``mpy.mpirun``, with ``records`` true on the master only: a worker may not hold both walls)."""
 
-    def __init__(self, progress=True):
-        self.progress = progress
+    def __init__(self, progress=True, run=None, records=True):
+        self.progress = progress and records
+        self.records = records
+        self._run = run or (lambda n: O.run(n, True))
         walls = _tablet.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
         O.step()  # forces are not saved: one step with the walls at rest restores them
@@ -151,6 +155,8 @@ class Test:
         _before_newton(motion + [_py_runner(self._record, every, "recorder")])
 
     def _record(self):
+        if not self.records:
+            return
         row = (O.iter, self.dx(), self.force())
         self.rows.append(row)
         _plot.addData(iter=row[0], Dx=row[1], F_over_kp_d0=row[2])  # live in the shell: plot.plot()
@@ -186,14 +192,15 @@ class Test:
         chunk = max(every, steps_per_cycle // 4 // every * every)
         start = O.iter
         while O.iter - start < total:
-            O.run(min(chunk, total - (O.iter - start)), True)
+            self._run(min(chunk, total - (O.iter - start)))
             if self.progress:
                 print(f"  {mode} Dx={amplitude:g}: cycle {(O.iter - start) / steps_per_cycle:5.2f}/{n_cycles}"
                       f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
         for e in motion:
             e.dead = True
         for i in (self.left, self.right):
-            O.bodies[i].state.vel = Vector3(0, 0, 0)
+            if O.bodies[i]:  # under mpy a worker may not hold both walls
+                O.bodies[i].state.vel = Vector3(0, 0, 0)
         self._record()
         return self.rows
 
@@ -210,7 +217,7 @@ class Test:
         t0 = time.time()
         chunk = 50 * every
         while self.dx() < until:
-            O.run(chunk, True)
+            self._run(chunk)
             if self.progress:
                 print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
                       flush=True)
