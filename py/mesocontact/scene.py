@@ -13,6 +13,19 @@ def reset():
         O.tags[k] = v
 
 
+def engines(gravity=(0, 0, -9.81)):
+    """The engine loop of a scene of spheres and boxes with the meso law, the collider and the
+    integrator labelled as yade.mpy looks them up (``collider``, ``newton``)."""
+    from yade import wrapper as w
+    return [
+        w.ForceResetter(),
+        w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()], label="collider"),
+        w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
+                          [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+        w.NewtonIntegrator(damping=0, gravity=gravity, label="newton"),
+    ]
+
+
 def adhesion_range():
     """The largest gap across which a non-contact force acts between the MesoMat materials in
     O.materials, -deltaA of the Ip2's own mixing over every pair of them [m] (0 without adhesion)."""

@@ -44,13 +44,7 @@ def prepare():
     O.bodies.append([utils.box(c, h, material=mat, fixed=True) for c, h in (
         ((L / 2, L / 2, -R), (L, L, R)), ((-R, L / 2, 3 * L), (R, L, 4 * L)), ((L + R, L / 2, 3 * L), (R, L, 4 * L)),
         ((L / 2, -R, 3 * L), (L, R, 4 * L)), ((L / 2, L + R, 3 * L), (L, R, 4 * L)))])
-    O.engines = [  # mpy drives the engines labelled collider and newton
-        w.ForceResetter(),
-        w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()], label="collider"),
-        w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
-                          [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
-        w.NewtonIntegrator(damping=0, gravity=(0, 0, -9.81), label="newton"),
-    ]
+    O.engines = scene.engines()  # collider and newton labelled as mpy needs
     scene.set_detection()
     O.dt = scene.time_step(safety=0.05)
     O.run(int(0.04 / O.dt), True)  # fallen into a bed, still moving: contacts with history

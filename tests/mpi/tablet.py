@@ -1,6 +1,8 @@
 # The quick tablet (216 particles, sintered and released, unconfined start) under yade.mpy: one
 # tension cycle serially and on a master (the loading walls) with two workers, the wall force rows
 # compared. Writes DIR/tablet-serial.json and DIR/tablet-mpi.json.
+# Status: does not work yet (issue #19): the workers do not move the master's walls, and
+# mpy.MASTER_UPDATE_STATES = True hangs; not in ctest.
 #   yade -j1 -n -x tests/mpi/tablet.py serial DIR [PERIOD]
 #   mpiexec -n 3 yade -j1 -n -x tests/mpi/tablet.py mpi DIR [PERIOD]
 import json

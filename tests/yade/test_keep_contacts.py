@@ -21,13 +21,7 @@ sp = pack.SpherePack()
 sp.makeCloud((0, 0, 0), (L, L, 2 * L), rMean=R, rRelFuzz=0.2, num=60, seed=2)
 sp.toSimulation(material=mat)
 floor = O.bodies.append(utils.box((L / 2, L / 2, -R), (L, L, R), material=mat, fixed=True))
-O.engines = [
-    w.ForceResetter(),
-    w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()], label="collider"),
-    w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
-                      [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
-    w.NewtonIntegrator(damping=0, gravity=(0, 0, -9.81), label="newton"),
-]
+O.engines = scene.engines()  # collider and newton labelled as mpy needs
 scene.set_detection()
 O.dt = scene.time_step(safety=0.05)
 O.run(int(0.03 / O.dt), True)
