@@ -48,3 +48,30 @@ def check_labels():
     for label, kind in (("collider", w.InsertionSortCollider), ("newton", w.NewtonIntegrator)):
         if not any(e.label == label and isinstance(e, kind) for e in O.engines):
             raise ValueError(f"label {label!r}: yade.mpy needs the scene's {kind.__name__} labelled {label!r}")
+
+
+def follow_master_bodies(mpy):
+    """After mpy's split: makes every worker move its copies of the master's kinematic bodies (the
+    loading walls) as the master's Newton does (pos += vel dt). A worker's NewtonIntegrator moves
+    only its own bodies, and with ``MASTER_UPDATE_STATES = False`` (mpy's default) the master sends
+    no states, so a wall driven by a motion engine (which sets only its velocity, on every rank)
+    would stand still on the workers. Installed right after the NewtonIntegrator; nothing on the
+    master. Returns the ids followed on this rank."""
+    import builtins
+    if not getattr(O, "splitted", False):
+        raise RuntimeError("follow_master_bodies: call it after mpy.splitScene()")
+    ids = [] if mpy.rank == 0 else [
+        b.id for b in O.bodies if b and not b.isSubdomain and b.subdomain == 0 and not b.dynamic]
+    engines = [e for e in O.engines if e.label != "followMaster"]
+
+    def follow():
+        dt = O.dt
+        for i in ids:
+            s = O.bodies[i].state
+            s.pos = s.pos + s.vel * dt  # NewtonIntegrator's leapfrog for a body without forces
+
+    builtins._mesocontact_follow_master = follow
+    at = next(k for k, e in enumerate(engines) if isinstance(e, w.NewtonIntegrator))
+    O.engines = engines[:at + 1] + [w.PyRunner(iterPeriod=1, command="_mesocontact_follow_master()",
+                                               label="followMaster")] + engines[at + 1:]
+    return ids

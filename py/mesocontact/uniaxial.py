@@ -57,8 +57,11 @@ def _py_runner(fn, period, label):
 
 
 def _before_newton(extra):
-    """O.engines with ``extra`` inserted before NewtonIntegrator (the last engine)."""
-    O.engines = O.engines[:-1] + list(extra) + O.engines[-1:]
+    """O.engines with ``extra`` inserted right before the NewtonIntegrator (the last engine in a
+    serial scene; yade.mpy appends its communication engines after it)."""
+    engines = list(O.engines)
+    at = next(k for k, e in enumerate(engines) if isinstance(e, _w.NewtonIntegrator))
+    O.engines = engines[:at] + list(extra) + engines[at:]
 
 
 def _wall_stiffness(wid):

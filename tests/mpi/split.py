@@ -18,11 +18,11 @@ from yade import O, pack, utils
 from yade import wrapper as w
 from mesocontact import scene
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
+from contact_state import compare, contacts  # noqa: E402
+
 mode, out = sys.argv[1], sys.argv[2]
 STEPS = 400
-PHYS = ("deltaMax", "delta0", "k2", "touched", "hystereticForce", "adhesiveForce", "viscousForce", "normalForce",
-        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring", "torsionForce",
-        "torsionTorque")
 STATE = os.path.join(out, "prepared.yade.gz")
 N, R, RHO = 150, 0.5e-3, 2000.0
 L = 10 * R * (N / 60) ** (1 / 3)
@@ -51,32 +51,8 @@ def prepare():
     O.save(STATE)
 
 
-def contacts():
-    return {f"{i.id1}-{i.id2}": [list(x) if hasattr(x, "__len__") else x for x in (getattr(i.phys, k) for k in PHYS)]
-            for i in O.interactions if i.isReal}
-
-
 def wall_forces():
     return {str(b.id): list(O.forces.f(b.id)) for b in O.bodies if b and isinstance(b.shape, w.Box)}
-
-
-def _flat(x):
-    return x if isinstance(x, list) else [x]
-
-
-def compare(copies, want):
-    """Missing and extra pairs, and per quantity the largest difference of any copy from the
-    serial value over the largest serial value of that quantity."""
-    seen = set().union(*(set(c) for c in copies))
-    scale = {n: max([abs(v) for c in want.values() for v in _flat(c[k])] + [1e-300]) for k, n in enumerate(PHYS)}
-    worst = {n: 0.0 for n in PHYS}
-    for part in copies:
-        for pair, values in part.items():
-            if pair in want:
-                for n, a, b in zip(PHYS, values, want[pair]):
-                    worst[n] = max(worst[n], max(abs(x - y) for x, y in zip(_flat(a), _flat(b))) / scale[n])
-    return {"serial": len(want), "mpi": len(seen), "copies": sum(len(c) for c in copies),
-            "missing": sorted(set(want) - seen), "extra": sorted(seen - set(want)), "worst": worst}
 
 
 if mode == "prepare":
