@@ -14,17 +14,41 @@ Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.c
 import json
 import math
 import os
+import sys
 import tempfile
 import time
 
 from yade import O
 from yade import wrapper as _w
 
+from . import mpi as _mpi
 from . import outputs as _out
 from . import snapshots as _snap
 from . import stages as _stages
 from . import tablet as _tablet
 from . import uniaxial as _uni
+
+# yade.mpy when the campaign runs under mpiexec with --mpi N (use_mpi), else None
+_MPY = None
+
+
+def use_mpi(ranks):
+    """Runs the cyclic tests of this process under yade.mpy on ``ranks`` MPI processes (a master
+    holding the walls and ranks - 1 workers; the process must have been started by
+    ``mpiexec -n ranks``). Every rank computes, the master writes. Returns the mpy module."""
+    global _MPY
+    from yade import mpy  # configures MPI on import
+    if mpy.numThreads != ranks or ranks < 2:
+        raise ValueError(f"--mpi {ranks}: start this job with `mpiexec -n {ranks} yade ...` (it has "
+                         f"{mpy.numThreads} process(es))")
+    _MPY = mpy
+    return mpy
+
+
+def is_master():
+    """True on the process that writes the outputs (always, without MPI)."""
+    return _MPY is None or _MPY.rank == 0
+
 
 FULL = dict(n=1728, cycles=4)
 QUICK = dict(n=216, cycles=1)
@@ -94,21 +118,33 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             return json.load(f), read_csv(os.path.join(where, name + ".csv"))
     cfg = QUICK if quick else FULL
     t0 = time.time()
-    prepare(outdir, quick, progress)
-    bundle = _out.Bundle(where)
+    prepare(outdir, quick, progress and is_master())
+    bundle = _out.Bundle(where) if is_master() else None
     try:
-        test = _uni.Test(progress=progress)
+        if _MPY is None:
+            test = _uni.Test(progress=progress)
+        else:
+            test = _uni.Test(progress=progress, run=lambda n: _MPY.mpirun(n), records=_MPY.rank == 0)
+            f0 = test.force()  # the split clears the master's forces: the first row's is read now
+            _mpi.split_tablet(_MPY)
         rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
                            on_record=hook(test, bundle.tmp) if hook else None)
+        if _MPY is not None:
+            rows = _MPY.comm.bcast(rows, root=0)  # the master's rows: one result on every rank
+            rows[0] = (*rows[0][:2], f0)
     except BaseException:
-        bundle.discard()
+        if bundle is not None:
+            bundle.discard()
         raise
     info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": cfg["cycles"],
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
             "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
-            "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0])}
+            "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
+            "mpi_ranks": _MPY.numThreads if _MPY else 1}
+    if bundle is None:
+        return info, rows
     with bundle:
         bundle.write_text(name + ".csv", _csv_text(rows))
         bundle.write_json(name + ".json", info)
@@ -143,6 +179,8 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
     fig = figure or ("fig16" if mode == "tension" else "fig18")
     summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
                "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
+    if not is_master():
+        return summary
     with _out.Bundle(os.path.join(root(outdir, quick), fig)) as b:
         for name in runs:
             b.copy_from(run_dir(outdir, name, quick))
@@ -410,7 +448,18 @@ def parse_args(figure, argv):
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
     p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
+    p.add_argument("--mpi", type=int, default=None, metavar="N",
+                   help="fig16, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`)")
     a = p.parse_args(argv)
+    if a.mpi is not None and figure not in ("fig16", "fig18"):
+        p.error(f"--mpi {a.mpi}: only fig16 and fig18 run under yade.mpy (not {figure})")
+    if a.mpi is not None and a.mpi < 2:
+        p.error(f"--mpi {a.mpi} is invalid: a master and at least one worker (N >= 2)")
+    if a.mpi is not None:
+        try:
+            use_mpi(a.mpi)
+        except ValueError as e:
+            p.error(str(e))
     n = a.n or (_stages.QUICK_N if a.quick else FULL["n"])
     if not 8 <= n <= 10 ** 6:
         p.error(f"--n {n} is invalid: between 8 and 1000000 particles")
@@ -435,7 +484,24 @@ def parse_args(figure, argv):
 def main(figure, argv):
     """Command line of the tablet scripts (prepare, rates, fig16 ... fig19)."""
     a, amps, slow, periods = parse_args(figure, argv)
-    _out.sweep(a.out)
+    if _MPY is None:
+        return _main(figure, a, amps, slow, periods)
+    mpy = _MPY
+    try:  # a failure on one rank must not leave the others waiting for it
+        _main(figure, a, amps, slow, periods)
+    except BaseException:
+        import traceback
+        traceback.print_exc()
+        sys.stdout.flush()
+        mpy.comm.Abort(1)
+    sys.stdout.flush()
+    mpy.MPI.Finalize()
+    os._exit(0)  # before yade's exit, which would call MPI again
+
+
+def _main(figure, a, amps, slow, periods):
+    if is_master():
+        _out.sweep(a.out)
     t0 = time.time()
     if figure == "prepare":
         info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
@@ -456,6 +522,8 @@ def main(figure, argv):
         out = pull(a.out, a.quick, speed=a.speed)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")
+    if not is_master():
+        return
     print(json.dumps(out, indent=1, default=str)[:4000])
     print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
 

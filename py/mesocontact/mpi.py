@@ -75,3 +75,28 @@ def follow_master_bodies(mpy):
     O.engines = engines[:at + 1] + [w.PyRunner(iterPeriod=1, command="_mesocontact_follow_master()",
                                                label="followMaster")] + engines[at + 1:]
     return ids
+
+
+def split_tablet(mpy, keep=True):
+    """Splits the loaded tablet over the ranks of ``mpy``: the master holds the walls, each worker
+    a slab along x with an equal share of the particles (the loading axis: a slab's boundary
+    crosses the fewest contacts that the pull stretches). Keeps every contact's state
+    (keep_contacts; keep=False only to show what is lost without it) and lets the workers move their copies of the walls (follow_master_bodies).
+    Run it on every rank, after loading the scene and before mpy.mpirun."""
+    from . import tablet
+    workers = mpy.numThreads - 1 if mpy.numThreads else mpy.comm.size - 1
+    if workers < 1:
+        raise ValueError(f"ranks = {workers + 1}: the tablet under yade.mpy needs a master and at least one worker")
+    if keep:
+        keep_contacts(mpy)
+    check_labels()
+    O.splitted = O.splittedOnce = False  # a freshly loaded scene: mpy splits it as new
+    xs = sorted(O.bodies[i].state.pos[0] for i in tablet.sphere_ids())
+    cuts = [xs[len(xs) * k // workers] for k in range(1, workers)]
+    for b in O.bodies:
+        if isinstance(b.shape, w.Box):
+            b.subdomain = 0
+        else:
+            b.subdomain = 1 + sum(b.state.pos[0] >= c for c in cuts)
+    mpy.splitScene()
+    return follow_master_bodies(mpy)

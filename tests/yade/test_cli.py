@@ -32,6 +32,9 @@ cases = [
     ("tablet_fig17.py", ["--speed", "0"], "--speed"),
     ("tablet_prepare.py", ["--kc-over-kp", "-1"], "--kc-over-kp"),
     ("tablet_prepare.py", ["--n", "3"], "--n"),
+    ("tablet_fig16.py", ["--mpi", "1"], "--mpi"),
+    ("tablet_fig16.py", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
+    ("tablet_rates.py", ["--mpi", "3"], "--mpi"),  # only fig16 and fig18 run under yade.mpy
 ]
 for script, args, option in cases:
     rc, text, secs = run(script, *args, "--out", out)
