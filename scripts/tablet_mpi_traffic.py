@@ -8,6 +8,7 @@
 # the bodies whose states it sends to each other worker per step and the bytes of those
 # messages (yade's C++ messages: 8 bytes per value), the bytes of the wall forces it sends to
 # the master (a pickled list, as mpy sends it), and the wall-clock per step (walls at rest).
+# Without mpiexec it prints the serial wall-clock per step of the same steps.
 import argparse
 import json
 import os
@@ -25,10 +26,13 @@ p.add_argument("--out", default="results/tablet", help="where the unconfined sta
 p.add_argument("--steps", type=int, default=1000, help="steps of the tension cycle to time")
 a = p.parse_args(sys.argv[1:])
 try:
-    if mpy.numThreads < 2:
-        raise SystemExit("start it with mpiexec -n N (N >= 2)")
     stages.ensure("unconfined", a.out, quick=a.quick, progress=False)
     uniaxial.Test(progress=False)  # its step restores the forces, as before every test
+    if mpy.numThreads == 1:  # started without mpiexec: the serial step, for comparison
+        t0 = time.time()
+        O.run(a.steps, True)
+        print(f"serial: {(time.time() - t0) / a.steps * 1e3:.3f} ms per step over {a.steps} steps", flush=True)
+        os._exit(0)
     mpi.split_tablet(mpy)
     mpy.mpirun(1)  # the first parallel step makes the contacts real on every side
     me = mpy.rank
