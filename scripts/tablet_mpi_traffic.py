@@ -25,7 +25,7 @@ p.add_argument("--quick", action="store_true", help="the 216-particle tablet")
 p.add_argument("--out", default="results/tablet", help="where the unconfined start is (made if missing)")
 p.add_argument("--steps", type=int, default=1000, help="steps of the tension cycle to time")
 a = p.parse_args(sys.argv[1:])
-try:
+def measure():
     stages.ensure("unconfined", a.out, quick=a.quick, progress=False)
     uniaxial.Test(progress=False)  # its step restores the forces, as before every test
     if mpy.numThreads == 1:  # started without mpiexec: the serial step, for comparison
@@ -64,11 +64,6 @@ try:
         for r in everyone:
             print(r, flush=True)
         print(f"written {name}", flush=True)
-    sys.stdout.flush()
-    mpy.MPI.Finalize()
-    os._exit(0)
-except BaseException:
-    import traceback
-    traceback.print_exc()
-    sys.stdout.flush()
-    mpy.comm.Abort(1)
+
+
+mpi.run_ranks(mpy, measure)

@@ -14,7 +14,6 @@ Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.c
 import json
 import math
 import os
-import sys
 import tempfile
 import time
 
@@ -486,17 +485,7 @@ def main(figure, argv):
     a, amps, slow, periods = parse_args(figure, argv)
     if _MPY is None:
         return _main(figure, a, amps, slow, periods)
-    mpy = _MPY
-    try:  # a failure on one rank must not leave the others waiting for it
-        _main(figure, a, amps, slow, periods)
-    except BaseException:
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        mpy.comm.Abort(1)
-    sys.stdout.flush()
-    mpy.MPI.Finalize()
-    os._exit(0)  # before yade's exit, which would call MPI again
+    _mpi.run_ranks(_MPY, lambda: _main(figure, a, amps, slow, periods))
 
 
 def _main(figure, a, amps, slow, periods):

@@ -100,3 +100,23 @@ def split_tablet(mpy, keep=True):
             b.subdomain = 1 + sum(b.state.pos[0] >= c for c in cuts)
     mpy.splitScene()
     return follow_master_bodies(mpy)
+
+
+def run_ranks(mpy, body):
+    """Runs ``body()`` on every rank of an mpiexec job, then ends the process: exit code 0 when
+    the master's body returned a true value or None, 1 otherwise (the master's verdict, so that
+    mpiexec reports it). An exception on any rank aborts the whole job: the other ranks would
+    wait for it forever. Never returns."""
+    import os
+    import sys
+    import traceback
+    try:
+        ok = body()
+        ok = mpy.comm.bcast(ok is None or bool(ok), root=0)
+    except BaseException:
+        traceback.print_exc()
+        sys.stdout.flush()
+        mpy.comm.Abort(1)
+    sys.stdout.flush()
+    mpy.MPI.Finalize()
+    os._exit(0 if ok else 1)  # before yade's exit, which would call MPI again

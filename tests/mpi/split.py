@@ -66,8 +66,9 @@ elif mode == "serial":
         json.dump({"start": start, "end": contacts(), "walls": wall_forces()}, f)
 elif mode == "mpi":
     from yade import mpy
-    try:  # a failure on one rank must not leave the others waiting for it
-        from mesocontact import mpi
+    from mesocontact import mpi
+
+    def compare_with_serial():
         lose = "--lose" in sys.argv[3:]
         kept = None if lose else mpi.keep_contacts(mpy)
         O.load(STATE)
@@ -100,12 +101,6 @@ elif mode == "mpi":
                   f"per worker {[k['restored'] for k in restored[1:]] if not lose else 'none (--lose)'}", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
-        ok = mpy.comm.bcast(ok, root=0)
-        sys.stdout.flush()
-        mpy.MPI.Finalize()
-        os._exit(0 if ok else 1)  # before yade's exit, which would call MPI again
-    except BaseException:
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        mpy.comm.Abort(1)
+        return ok
+
+    mpi.run_ranks(mpy, compare_with_serial)  # the master's verdict is every rank's exit code

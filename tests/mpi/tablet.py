@@ -50,8 +50,9 @@ if mode == "serial":
         json.dump({"rows": rows, "before": before, "wall_clock_s": time.time() - t0, "steps": rows[-1][0] - rows[0][0]}, f)
 elif mode == "mpi":
     from yade import mpy
-    try:  # a failure on one rank must not leave the others waiting for it
-        from mesocontact import mpi
+    from mesocontact import mpi
+
+    def compare_with_serial():
         test, before = start()
         f0 = test.force()  # the split clears the master's forces: the first row's is read now
         followed = mpi.split_tablet(mpy, keep=not lose)
@@ -91,12 +92,6 @@ elif mode == "mpi":
             ok = (not s["missing"] and not s["extra"] and max(s["worst"].values()) == 0
                   and result["loaded_as_serial"] == 0 and worst <= TOLERANCE and dx_same)
             print("mpi tablet: " + ("ok" if ok else "FAILED"), flush=True)
-        ok = mpy.comm.bcast(ok, root=0)
-        sys.stdout.flush()
-        mpy.MPI.Finalize()
-        os._exit(0 if ok else 1)  # before yade's exit, which would call MPI again
-    except BaseException:
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        mpy.comm.Abort(1)
+        return ok
+
+    mpi.run_ranks(mpy, compare_with_serial)  # the master's verdict is every rank's exit code
