@@ -7,7 +7,9 @@ springs restart at zero, and a run that was prepared serially and loaded continu
 material would. ``keep_contacts`` wraps mpy's collision step: before each one it keeps this
 rank's real contacts (their geometry and physics objects, by body ids, in C++:
 ``Ip2_MesoMat_MesoMat_MesoPhys.keepContacts``), after it it gives them back to the same pairs
-wherever mpy made the pair again without them (``restoreContacts``).
+wherever mpy made the pair again without them (``restoreContacts``). What a rank keeps stays on
+that rank: mpy's reallocation (``REALLOCATE_FREQUENCY > 0``, off by default) moves bodies to
+another worker without their contacts' state, and the wrapper warns once when it is on.
 
     from yade import mpy
     from mesocontact import mpi
@@ -18,6 +20,8 @@ wherever mpy made the pair again without them (``restoreContacts``).
 The engines must carry the labels mpy looks up (``collider``, ``newton``): without them mpy
 drives a collider of its own that the scene does not run.
 """
+import sys
+
 from yade import O
 from yade import wrapper as w
 
@@ -33,6 +37,11 @@ def keep_contacts(mpy):
     original = mpy.parallelCollide
 
     def parallelCollide():
+        if mpy.REALLOCATE_FREQUENCY > 0 and not _KEPT.get("warned"):
+            _KEPT["warned"] = True
+            print(f"mesocontact.mpi (rank {mpy.rank}): mpy.REALLOCATE_FREQUENCY = {mpy.REALLOCATE_FREQUENCY}: a body "
+                  "that mpy moves to another worker does not take its contacts' state along; those contacts restart "
+                  "(docs/mpi.md). Keep it 0 (mpy's default) for this law.", file=sys.stderr, flush=True)
         w.Ip2_MesoMat_MesoMat_MesoPhys.keepContacts()
         original()
         _KEPT["collisions"] += 1

@@ -3,7 +3,7 @@
 # splitting the spheres at x = L/2):
 #   yade -j1 -n -x tests/mpi/split.py prepare DIR
 #   yade -j1 -n -x tests/mpi/split.py serial DIR
-#   mpiexec -n 3 yade -j1 -n -x tests/mpi/split.py mpi DIR [--lose]
+#   mpiexec -n 3 yade -j1 -n -x tests/mpi/split.py mpi DIR [--lose] [--realloc]
 # serial writes DIR/serial.json (every real contact's state right after loading and after STEPS
 # steps, the wall forces); mpi compares its workers' contacts (both copies of a pair that crosses
 # the subdomains) and the master's wall forces with it, writes DIR/mpi.json and exits 1 if a
@@ -71,20 +71,28 @@ elif mode == "mpi":
     def compare_with_serial():
         lose = "--lose" in sys.argv[3:]
         kept = None if lose else mpi.keep_contacts(mpy)
+        realloc = "--realloc" in sys.argv[3:]
+        if realloc:  # an uneven cut that mpy evens out by moving bodies at every collision step
+            mpy.REALLOCATE_FREQUENCY = 1
         O.load(STATE)
         mpi.check_labels()
+        cut = L / 4 if realloc else L / 2
         for b in O.bodies:
-            b.subdomain = 0 if isinstance(b.shape, w.Box) else (1 if b.state.pos[0] < L / 2 else 2)
+            b.subdomain = 0 if isinstance(b.shape, w.Box) else (1 if b.state.pos[0] < cut else 2)
+        first = {b.id: b.subdomain for b in O.bodies if b}
         mpy.splitScene()
         start = mpy.comm.gather(contacts(), root=0)
         mpy.mpirun(STEPS)
         end = mpy.comm.gather(contacts(), root=0)
+        moved = mpy.comm.gather(sum(1 for b in O.bodies if b and not b.isSubdomain and b.subdomain == mpy.rank
+                                    and first.get(b.id) != mpy.rank) if mpy.rank else 0, root=0)
         restored = mpy.comm.gather(dict(kept) if kept else None, root=0)
         ok = True
         if mpy.rank == 0:
             with open(os.path.join(out, "serial.json")) as f:
                 ref = json.load(f)
-            result = {"start": compare(start[1:], ref["start"]), "end": compare(end[1:], ref["end"]), "kept": restored}
+            result = {"start": compare(start[1:], ref["start"]), "end": compare(end[1:], ref["end"]), "kept": restored,
+                      "moved_to_another_worker": moved[1:]}
             walls = wall_forces()
             fmax = max(abs(x) for v in ref["walls"].values() for x in v)
             result["walls_worst"] = max(abs(x - y) for k in ref["walls"] for x, y in zip(walls[k], ref["walls"][k])) / fmax
@@ -99,6 +107,8 @@ elif mode == "mpi":
                 ok = ok and not r["missing"] and not r["extra"] and not bad
             print(f"wall forces: largest difference {result['walls_worst']:.1e} of the largest; contacts given back "
                   f"per worker {[k['restored'] for k in restored[1:]] if not lose else 'none (--lose)'}", flush=True)
+            if realloc:
+                print(f"bodies that moved to another worker: {moved[1:]}", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
         return ok
