@@ -2,12 +2,12 @@
 # estimate, docs/mpi.md):
 #   mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py [--quick] [--out DIR] [--steps S]
 # Loads the unconfined start in DIR (made if missing), splits it as the campaign does
-# (mesocontact.mpi.split_tablet: walls on the master, N-1 slabs along x), runs S steps of one
-# tension cycle and writes DIR/mpi-traffic-N.json: per worker the particles it owns, its real
+# (mesocontact.mpi.split_tablet: walls on the master, N-1 slabs along x), runs S steps with the
+# walls at rest and writes DIR/mpi-traffic-N.json: per worker the particles it owns, its real
 # contacts, the contacts with a body of another worker (both copies counted once per side),
 # the bodies whose states it sends to each other worker per step and the bytes of those
 # messages (yade's C++ messages: 8 bytes per value), the bytes of the wall forces it sends to
-# the master (a pickled list, as mpy sends it), and the wall-clock per step (walls at rest).
+# the master (a pickled list, as mpy sends it), and the wall-clock per step.
 # Without mpiexec it prints the serial wall-clock per step of the same steps.
 import argparse
 import json
@@ -23,8 +23,10 @@ from mesocontact import mpi, stages, tablet, uniaxial
 p = argparse.ArgumentParser(prog="mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py")
 p.add_argument("--quick", action="store_true", help="the 216-particle tablet")
 p.add_argument("--out", default="results/tablet", help="where the unconfined start is (made if missing)")
-p.add_argument("--steps", type=int, default=1000, help="steps of the tension cycle to time")
+p.add_argument("--steps", type=int, default=1000, help="steps to time")
 a = p.parse_args(sys.argv[1:])
+
+
 def measure():
     stages.ensure("unconfined", a.out, quick=a.quick, progress=False)
     uniaxial.Test(progress=False)  # its step restores the forces, as before every test

@@ -37,7 +37,7 @@ def use_mpi(ranks):
     ``mpiexec -n ranks``). Every rank computes, the master writes. Returns the mpy module."""
     global _MPY
     from yade import mpy  # configures MPI on import
-    if mpy.numThreads != ranks or ranks < 2:
+    if mpy.numThreads != ranks:
         raise ValueError(f"--mpi {ranks}: start this job with `mpiexec -n {ranks} yade ...` (it has "
                          f"{mpy.numThreads} process(es))")
     _MPY = mpy

@@ -25,6 +25,8 @@ import sys
 from yade import O
 from yade import wrapper as w
 
+from .scene import py_runner
+
 _KEPT = {"restored": 0, "collisions": 0}
 
 
@@ -66,7 +68,6 @@ def follow_master_bodies(mpy):
     no states, so a wall driven by a motion engine (which sets only its velocity, on every rank)
     would stand still on the workers. Installed right after the NewtonIntegrator; nothing on the
     master. Returns the ids followed on this rank."""
-    import builtins
     if not getattr(O, "splitted", False):
         raise RuntimeError("follow_master_bodies: call it after mpy.splitScene()")
     ids = [] if mpy.rank == 0 else [
@@ -79,10 +80,8 @@ def follow_master_bodies(mpy):
             s = O.bodies[i].state
             s.pos = s.pos + s.vel * dt  # NewtonIntegrator's leapfrog for a body without forces
 
-    builtins._mesocontact_follow_master = follow
     at = next(k for k, e in enumerate(engines) if isinstance(e, w.NewtonIntegrator))
-    O.engines = engines[:at + 1] + [w.PyRunner(iterPeriod=1, command="_mesocontact_follow_master()",
-                                               label="followMaster")] + engines[at + 1:]
+    O.engines = engines[:at + 1] + [py_runner(follow, 1, "followMaster")] + engines[at + 1:]
     return ids
 
 
@@ -90,10 +89,11 @@ def split_tablet(mpy, keep=True):
     """Splits the loaded tablet over the ranks of ``mpy``: the master holds the walls, each worker
     a slab along x with an equal share of the particles (the loading axis: a slab's boundary
     crosses the fewest contacts that the pull stretches). Keeps every contact's state
-    (keep_contacts; keep=False only to show what is lost without it) and lets the workers move their copies of the walls (follow_master_bodies).
-    Run it on every rank, after loading the scene and before mpy.mpirun."""
+    (keep_contacts; keep=False only to show what is lost without it) and lets the workers move
+    their copies of the walls (follow_master_bodies). Run it on every rank, after loading the
+    scene and before mpy.mpirun. Returns the wall ids this rank follows."""
     from . import tablet
-    workers = mpy.numThreads - 1 if mpy.numThreads else mpy.comm.size - 1
+    workers = mpy.numThreads - 1
     if workers < 1:
         raise ValueError(f"ranks = {workers + 1}: the tablet under yade.mpy needs a master and at least one worker")
     if keep:

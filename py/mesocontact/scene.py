@@ -13,6 +13,16 @@ def reset():
         O.tags[k] = v
 
 
+def py_runner(fn, period, label):
+    """A PyRunner calling fn every ``period`` steps. PyRunner runs its command in yade's
+    __main__; the callable is reached there through builtins."""
+    import builtins
+    from yade import wrapper as w
+    name = f"_mesocontact_{label}"
+    setattr(builtins, name, fn)
+    return w.PyRunner(iterPeriod=period, command=f"{name}()", label=label)
+
+
 def engines(gravity=(0, 0, -9.81)):
     """The engine loop of a scene of spheres and boxes with the meso law, the collider and the
     integrator labelled as yade.mpy looks them up (``collider``, ``newton``)."""

@@ -27,6 +27,7 @@ try:
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.uniaxial needs YADE: run it inside `yade`") from _exc
 
+from . import scene as _scene
 from . import tablet as _tablet
 
 MODES = ("tension", "compression")
@@ -45,15 +46,6 @@ def crossing_time():
     m = sum(O.bodies[i].state.mass for i in ids) / len(ids)
     lo, hi = _tablet.inner_box()
     return (hi[0] - lo[0]) / (_tablet.D0 * math.sqrt(_tablet.KP / m))
-
-
-def _py_runner(fn, period, label):
-    """A PyRunner calling fn every ``period`` steps. PyRunner runs its command in yade's
-    __main__; the callable is reached there through builtins."""
-    import builtins
-    name = f"_mesocontact_{label}"
-    setattr(builtins, name, fn)
-    return _w.PyRunner(iterPeriod=period, command=f"{name}()", label=label)
 
 
 def _before_newton(extra):
@@ -101,7 +93,7 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
-    _before_newton([_py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
+    _before_newton([_scene.py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
     scale = _tablet.KP * _tablet.D0
 
     def measure():
@@ -155,7 +147,7 @@ class Test:
         O.engines = [e for e in O.engines if id(e) not in old and e.label != "recorder"]
         self._motion = motion
         self._on_record = on_record
-        _before_newton(motion + [_py_runner(self._record, every, "recorder")])
+        _before_newton(motion + [_scene.py_runner(self._record, every, "recorder")])
 
     def _record(self):
         if not self.records:

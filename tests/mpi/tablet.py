@@ -73,8 +73,7 @@ elif mode == "mpi":
             pairs = list(zip(rows, ref["rows"]))
             peak = max(abs(r[2]) for r in ref["rows"])
             worst = max(abs(a[2] - b[2]) for a, b in pairs) / peak
-            dx_same = len(rows) == len(ref["rows"]) and all(a[:2] == tuple(b[:2]) or list(a[:2]) == b[:2]
-                                                          for a, b in zip(rows, ref["rows"]))
+            dx_same = len(rows) == len(ref["rows"]) and all(list(a[:2]) == b[:2] for a, b in zip(rows, ref["rows"]))
             result = {"split": split, "loaded_as_serial": max(same_start["worst"].values()), "force_worst": worst,
                       "peak": peak, "rows": rows, "dx_rows_identical": dx_same, "wall_clock_s": wall_clock,
                       "serial_wall_clock_s": ref["wall_clock_s"], "steps": ref["steps"], "ranks": info,
