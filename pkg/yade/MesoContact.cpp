@@ -280,43 +280,6 @@ Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1,
 	return meso::stableStep(p, meso::pairGeometry(p, radius1, radius2), invM1, invM2, invI1, invI2, &which);
 }
 
-namespace {
-struct KeptContact {
-	Body::id_t        id1, id2;
-	shared_ptr<IGeom> geom;
-	shared_ptr<IPhys> phys;
-};
-std::vector<KeptContact> keptContacts; // Python calls these two one at a time (GIL held)
-boost::weak_ptr<Scene>   keptFrom; // contacts of another scene (even at the same address) are never given back
-}
-
-long Ip2_MesoMat_MesoMat_MesoPhys::keepContacts()
-{
-	keptContacts.clear();
-	keptFrom = Omega::instance().getScene();
-	for (const auto& I : *Omega::instance().getScene()->interactions)
-		if (I->isReal()) keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
-	return static_cast<long>(keptContacts.size());
-}
-
-long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
-{
-	Scene* sc       = Omega::instance().getScene().get();
-	long   restored = 0;
-	if (keptFrom.lock().get() != sc) keptContacts.clear();
-	for (const auto& k : keptContacts) {
-		if (!Body::byId(k.id1, sc) || !Body::byId(k.id2, sc)) continue; // a body not on this rank
-		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);
-		if (!I || I->geom || I->phys) continue; // no candidate pair here, or one that kept its state
-		if (I->getId1() != k.id1) I->swapOrder(); // allowed while it has neither
-		I->geom = k.geom;
-		I->phys = k.phys;
-		++restored;
-	}
-	keptContacts.clear();
-	return restored;
-}
-
 void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>& I)
 {
 	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;

@@ -7,9 +7,10 @@ springs restart at zero, and a run that was prepared serially and loaded continu
 material would. ``keep_contacts`` wraps mpy's collision step: before each one it keeps this
 rank's real contacts (their geometry and physics objects, by body ids, in C++:
 ``Ip2_MesoMat_MesoMat_MesoPhys.keepContacts``), after it it gives them back to the same pairs
-wherever mpy made the pair again without them (``restoreContacts``). What a rank keeps stays on
-that rank: mpy's reallocation (``REALLOCATE_FREQUENCY > 0``, off by default) moves bodies to
-another worker without their contacts' state, and the wrapper warns once when it is on.
+wherever mpy made the pair again without them (``restoreContacts``). When mpy's reallocation
+(``REALLOCATE_FREQUENCY > 0``, off by default) moves bodies to another worker, their contacts go
+along (``exportContacts`` / ``importContacts``, the scene's own serialization) and their pairs
+are made on the new worker at once.
 
     from yade import mpy
     from mesocontact import mpi
@@ -20,37 +21,55 @@ another worker without their contacts' state, and the wrapper warns once when it
 The engines must carry the labels mpy looks up (``collider``, ``newton``): without them mpy
 drives a collider of its own that the scene does not run.
 """
-import sys
-
 from yade import O
 from yade import wrapper as w
 
 from .scene import py_runner
 
-_KEPT = {"restored": 0, "collisions": 0}
+_KEPT = {"restored": 0, "collisions": 0, "reallocations": 0, "moved": 0, "sent": 0}
+_ARRIVING = []  # bytes of contacts sent by other ranks with the bodies mpy moved here
 
 
 def keep_contacts(mpy):
     """Makes every collision step of ``mpy`` (the module) keep the state of the contacts it
-    remakes. Idempotent. Returns a dict counting the collision steps and the contacts given back
-    on this rank (for logs and tests)."""
+    remakes, and every reallocation (``mpy.REALLOCATE_FREQUENCY > 0``) send the contacts of the
+    bodies it moves to their new worker. Idempotent. Returns a dict counting, on this rank, the
+    collision steps, the contacts given back, the reallocations, the bodies moved away and the
+    bytes of contacts sent with them (for logs and tests)."""
     if getattr(mpy.parallelCollide, "_keeps_contacts", False):
         return _KEPT
-    original = mpy.parallelCollide
+    collide, reallocate = mpy.parallelCollide, mpy.reallocateBodiesToSubdomains
+    ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys
 
     def parallelCollide():
-        if mpy.REALLOCATE_FREQUENCY > 0 and not _KEPT.get("warned"):
-            _KEPT["warned"] = True
-            print(f"mesocontact.mpi (rank {mpy.rank}): mpy.REALLOCATE_FREQUENCY = {mpy.REALLOCATE_FREQUENCY}: a body "
-                  "that mpy moves to another worker does not take its contacts' state along; those contacts restart "
-                  "(docs/mpi.md). Keep it 0 (mpy's default) for this law.", file=sys.stderr, flush=True)
-        w.Ip2_MesoMat_MesoMat_MesoPhys.keepContacts()
-        original()
+        ip2.keepContacts()
+        for data in _ARRIVING:
+            ip2.importContacts(data)
+        _ARRIVING.clear()
+        collide()
         _KEPT["collisions"] += 1
-        _KEPT["restored"] += w.Ip2_MesoMat_MesoMat_MesoPhys.restoreContacts()
+        _KEPT["restored"] += ip2.restoreContacts()
+
+    def reallocateBodiesToSubdomains(*args, **kwargs):
+        # mpy ships a moved body's interactions only with the partners its new worker already
+        # holds, and makes the others anew at the next collision step (until then the body misses
+        # their forces). So each worker sends every contact of the bodies it gave away, and one
+        # more collision step makes their pairs at once, with that state.
+        owned = [b.id for b in O.bodies if b and not b.isSubdomain and b.subdomain == mpy.rank] if mpy.rank else []
+        reallocate(*args, **kwargs)
+        _KEPT["reallocations"] += 1
+        gone = [[] for _ in range(mpy.numThreads)]
+        for b in (O.bodies[i] for i in owned):
+            if b and b.subdomain != mpy.rank:
+                gone[b.subdomain].append(b.id)
+        _KEPT["moved"] += sum(len(ids) for ids in gone)
+        sent = [ip2.exportContacts(ids) if ids else b"" for ids in gone]
+        _KEPT["sent"] += sum(len(data) for data in sent)
+        _ARRIVING.extend(data for data in mpy.comm.alltoall(sent) if data)
+        mpy.parallelCollide()
 
     parallelCollide._keeps_contacts = True
-    mpy.parallelCollide = parallelCollide
+    mpy.parallelCollide, mpy.reallocateBodiesToSubdomains = parallelCollide, reallocateBodiesToSubdomains
     return _KEPT
 
 

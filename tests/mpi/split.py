@@ -3,12 +3,14 @@
 # splitting the spheres at x = L/2):
 #   yade -j1 -n -x tests/mpi/split.py prepare DIR
 #   yade -j1 -n -x tests/mpi/split.py serial DIR
-#   mpiexec -n 3 yade -j1 -n -x tests/mpi/split.py mpi DIR [--lose] [--realloc]
+#   mpiexec -n 3 yade -j1 -n -x tests/mpi/split.py mpi DIR [--realloc] [--lose]
 # serial writes DIR/serial.json (every real contact's state right after loading and after STEPS
 # steps, the wall forces); mpi compares its workers' contacts (both copies of a pair that crosses
 # the subdomains) and the master's wall forces with it, writes DIR/mpi.json and exits 1 if a
-# contact is missing or differs beyond summation order. --lose runs without
-# mesocontact.mpi.keep_contacts (what mpy alone does).
+# contact is missing or differs beyond summation order. --realloc cuts at L/4 and lets mpy even
+# the workers out by moving bodies at every collision step (REALLOCATE_FREQUENCY = 1). --lose
+# leaves out what is under test: mesocontact.mpi.keep_contacts (what mpy alone does), or with
+# --realloc only the contacts sent along with the moved bodies.
 import json
 import math
 import os
@@ -69,11 +71,13 @@ elif mode == "mpi":
     from mesocontact import mpi
 
     def compare_with_serial():
-        lose = "--lose" in sys.argv[3:]
-        kept = None if lose else mpi.keep_contacts(mpy)
-        realloc = "--realloc" in sys.argv[3:]
+        lose, realloc = "--lose" in sys.argv[3:], "--realloc" in sys.argv[3:]
+        unwrapped = mpy.reallocateBodiesToSubdomains
+        kept = None if lose and not realloc else mpi.keep_contacts(mpy)
         if realloc:  # an uneven cut that mpy evens out by moving bodies at every collision step
             mpy.REALLOCATE_FREQUENCY = 1
+            if lose:  # the split's contacts kept, the moved bodies' contacts not sent along
+                mpy.reallocateBodiesToSubdomains = unwrapped
         O.load(STATE)
         mpi.check_labels()
         cut = L / 4 if realloc else L / 2
@@ -87,28 +91,33 @@ elif mode == "mpi":
         moved = mpy.comm.gather(sum(1 for b in O.bodies if b and not b.isSubdomain and b.subdomain == mpy.rank
                                     and first.get(b.id) != mpy.rank) if mpy.rank else 0, root=0)
         restored = mpy.comm.gather(dict(kept) if kept else None, root=0)
+        walls = wall_forces()  # the master's sums of the workers' wall forces, before the merge
+        mpy.mergeScene()  # every body and contact back on the master, as for output
         ok = True
         if mpy.rank == 0:
             with open(os.path.join(out, "serial.json")) as f:
                 ref = json.load(f)
-            result = {"start": compare(start[1:], ref["start"]), "end": compare(end[1:], ref["end"]), "kept": restored,
-                      "moved_to_another_worker": moved[1:]}
-            walls = wall_forces()
+            result = {"start": compare(start[1:], ref["start"]), "end": compare(end[1:], ref["end"]),
+                      "merged": compare([contacts()], ref["end"]), "kept": restored, "moved_to_another_worker": moved[1:]}
             fmax = max(abs(x) for v in ref["walls"].values() for x in v)
             result["walls_worst"] = max(abs(x - y) for k in ref["walls"] for x, y in zip(walls[k], ref["walls"][k])) / fmax
-            with open(os.path.join(out, "mpi-lose.json" if lose else "mpi.json"), "w") as f:
+            with open(os.path.join(out, "mpi" + ("-realloc" if realloc else "") + ("-lose" if lose else "") + ".json"), "w") as f:
                 json.dump(result, f, indent=1)
-            for stage in ("start", "end"):
+            for stage in ("start", "end", "merged"):
                 r = result[stage]
                 bad = [n for n, v in r["worst"].items() if v > (0 if stage == "start" else TOLERANCE)]
-                print(f"{stage}: serial {r['serial']} contacts, mpi {r['mpi']} ({r['copies']} copies on the workers), "
+                where = "on the master" if stage == "merged" else "on the workers"
+                print(f"{stage}: serial {r['serial']} contacts, mpi {r['mpi']} ({r['copies']} copies {where}), "
                       f"missing {len(r['missing'])} {r['missing'][:4]}, extra {len(r['extra'])}; largest difference "
                       f"{max(r['worst'].values()):.1e} ({max(r['worst'], key=r['worst'].get)})", flush=True)
                 ok = ok and not r["missing"] and not r["extra"] and not bad
             print(f"wall forces: largest difference {result['walls_worst']:.1e} of the largest; contacts given back "
-                  f"per worker {[k['restored'] for k in restored[1:]] if not lose else 'none (--lose)'}", flush=True)
+                  f"per worker {[k['restored'] for k in restored[1:]] if kept else 'none (--lose)'}", flush=True)
             if realloc:
-                print(f"bodies that moved to another worker: {moved[1:]}", flush=True)
+                print(f"reallocation: {restored[1]['reallocations']} times; bodies now on another worker {moved[1:]}; "
+                      f"moved away per worker "
+                      f"{[k['moved'] for k in restored[1:]]} with {[k['sent'] for k in restored[1:]]} bytes of "
+                      f"contacts{' (not sent: --lose)' if lose else ''}", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
         return ok

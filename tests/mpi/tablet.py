@@ -1,21 +1,27 @@
 # The tablet's tension cycle under yade.mpy, against the serial run of the same state.
-#   yade -j1 -n -x tests/mpi/tablet.py serial DIR [--full] [--period P] [--lose]
-#   mpiexec -n 3 yade -j1 -n -x tests/mpi/tablet.py mpi DIR [--full] [--period P] [--lose]
+#   yade -j1 -n -x tests/mpi/tablet.py serial DIR [--full] [--period P]
+#   mpiexec -n 3 yade -j1 -n -x tests/mpi/tablet.py mpi DIR [--full] [--period P] [--realloc] [--lose]
 # Both load the unconfined start of the tablet in DIR (quick: 216 particles, made if missing;
 # --full: the campaign's 1728 particles), take the step uniaxial.Test takes to restore the forces,
 # and run one tension cycle to Dx = 0.2 of P elastic crossing times (default 30). serial writes
 # DIR/mpi-serial[-full].json: every contact's state before the cycle and the force rows. mpi splits
-# the scene (the master holds the two loading walls, two workers the halves x < and > the median),
-# keeps the contacts (mesocontact.mpi.keep_contacts; not with --lose), lets the workers move
-# their copies of the walls (mpi.follow_master_bodies), and checks: right after the split every
-# contact on the workers equals the serial one bitwise (each copy of a pair that crosses the
-# halves); the force rows of the cycle agree with the serial rows within TOLERANCE of the peak;
-# the Dx rows are identical. Writes DIR/mpi-mpi[-full].json, exits 1 on a failed check.
+# the scene (the master holds the two loading walls, two workers the halves x < and > the median;
+# --realloc: the same with a rough cut, which mpy's reallocation smooths as it runs), keeps
+# the contacts (mesocontact.mpi.keep_contacts), lets the workers move their copies of the walls
+# (mpi.follow_master_bodies), and checks: right after the split every contact on the workers
+# equals the serial one bitwise (each copy of a pair that crosses the halves); the force rows of
+# the cycle agree with the serial rows within TOLERANCE of the peak; the Dx rows are identical.
+# --lose leaves out what is under test: keep_contacts, or with --realloc only the contacts sent
+# along with the moved bodies. Writes DIR/mpi-mpi[-full][-realloc][-lose].json, exits 1 on a
+# failed check.
 import json
+import math
 import os
 import sys
 import time
 
+from yade import O
+from yade.wrapper import Sphere
 from mesocontact import stages, uniaxial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
@@ -25,6 +31,7 @@ mode, out = sys.argv[1], sys.argv[2]
 args = sys.argv[3:]
 full = "--full" in args
 lose = "--lose" in args
+realloc = "--realloc" in args
 period = float(args[args.index("--period") + 1]) if "--period" in args else 30.0
 suffix = "-full" if full else ""
 # Over one cycle the mpi rows differ from serial by 1.0e-12 of the peak force (quick) and 8.5e-10
@@ -37,6 +44,8 @@ TOLERANCE = 1e-8
 
 def start():
     stages.ensure("unconfined", out, quick=not full, progress=False)
+    if realloc:  # a collision step (where mpy reallocates) whenever a particle moves by 1 % of its radius
+        next(e for e in O.engines if e.label == "collider").verletDist = -0.01
     test = uniaxial.Test(progress=False, run=None if mode == "serial" else (lambda n: mpy.mpirun(n)),
                          records=mode == "serial" or mpy.rank == 0)
     return test, contacts()
@@ -55,8 +64,18 @@ elif mode == "mpi":
     def compare_with_serial():
         test, before = start()
         f0 = test.force()  # the split clears the master's forces: the first row's is read now
-        followed = mpi.split_tablet(mpy, keep=not lose)
-        kept = None if lose else mpi.keep_contacts(mpy)  # the counters (already wrapped)
+        unwrapped = mpy.reallocateBodiesToSubdomains
+        worker = None
+        if realloc:  # a rough cut: particles within a radius of the median plane on either side, which mpy's
+            mpy.REALLOCATE_FREQUENCY = 1  # reallocation sorts out as it runs
+            middle = sorted(b.state.pos[0] for b in O.bodies if isinstance(b.shape, Sphere))[len(O.bodies) // 3]
+
+            def worker(b):
+                return 1 if b.state.pos[0] + b.shape.radius * math.sin(b.id) < middle else 2
+        followed = mpi.split_tablet(mpy, keep=realloc or not lose, worker=worker)
+        if realloc and lose:  # the split's contacts kept, the moved bodies' contacts not sent along
+            mpy.reallocateBodiesToSubdomains = unwrapped
+        kept = None if lose and not realloc else mpi.keep_contacts(mpy)  # the counters (already wrapped)
         after_split = mpy.comm.gather(contacts(), root=0)
         t0 = time.time()
         rows = test.cycles("tension", 0.2, n_cycles=1, period=period)
@@ -77,8 +96,9 @@ elif mode == "mpi":
             result = {"split": split, "loaded_as_serial": max(same_start["worst"].values()), "force_worst": worst,
                       "peak": peak, "rows": rows, "dx_rows_identical": dx_same, "wall_clock_s": wall_clock,
                       "serial_wall_clock_s": ref["wall_clock_s"], "steps": ref["steps"], "ranks": info,
-                      "keep_contacts": not lose}
-            with open(os.path.join(out, f"mpi-mpi{suffix}{'-lose' if lose else ''}.json"), "w") as f:
+                      "keep_contacts": not lose, "realloc": realloc}
+            name = f"mpi-mpi{suffix}{'-realloc' if realloc else ''}{'-lose' if lose else ''}.json"
+            with open(os.path.join(out, name), "w") as f:
                 json.dump(result, f)
             s = split
             print(f"after the split: serial {s['serial']} contacts, mpi {s['mpi']} ({s['copies']} copies on the "
@@ -90,6 +110,10 @@ elif mode == "mpi":
                   flush=True)
             ok = (not s["missing"] and not s["extra"] and max(s["worst"].values()) == 0
                   and result["loaded_as_serial"] == 0 and worst <= TOLERANCE and dx_same)
+            if realloc:
+                k = [r["kept"] for r in info[1:]]
+                print(f"reallocation: {k[0]['reallocations']} times; moved away per worker {[x['moved'] for x in k]} "
+                      f"with {[x['sent'] for x in k]} bytes of contacts{' (not sent: --lose)' if lose else ''}", flush=True)
             print("mpi tablet: " + ("ok" if ok else "FAILED"), flush=True)
         return ok
 

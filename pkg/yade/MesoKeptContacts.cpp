@@ -1,0 +1,100 @@
+// Contacts kept aside while yade.mpy erases and remakes pairs (its split, its collision steps) or
+// moves bodies to another worker (its reallocation), and given back to the same pairs with their
+// history. Used by mesocontact.mpi; any law's contacts are kept, not only this one's.
+#include "MesoContact.hpp"
+#include <core/BodyContainer.hpp>
+#include <core/InteractionContainer.hpp>
+#include <core/Omega.hpp>
+#include <core/Scene.hpp>
+#include <lib/serialization/ObjectIO.hpp>
+#include <boost/serialization/shared_ptr.hpp>
+#include <boost/serialization/vector.hpp>
+#include <set>
+#include <sstream>
+
+namespace yade {
+
+namespace {
+	struct KeptContact {
+		Body::id_t        id1, id2;
+		shared_ptr<IGeom> geom;
+		shared_ptr<IPhys> phys;
+	};
+	std::vector<KeptContact> keptContacts; // Python calls these one at a time (GIL held)
+	boost::weak_ptr<Scene>   keptFrom; // contacts of another scene (even at the same address) are never given back
+
+	// Marks the bytes as ours, so that other bytes are refused before boost reads lengths from them.
+	const std::string contactsTag = "mesocontact contacts 1\n";
+
+	void keepFor(const shared_ptr<Scene>& scene)
+	{
+		if (keptFrom.lock() != scene) keptContacts.clear();
+		keptFrom = scene;
+	}
+}
+
+long Ip2_MesoMat_MesoMat_MesoPhys::keepContacts()
+{
+	const shared_ptr<Scene>& scene = Omega::instance().getScene();
+	keptContacts.clear();
+	keepFor(scene);
+	for (const auto& I : *scene->interactions)
+		if (I->isReal()) keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
+	return static_cast<long>(keptContacts.size());
+}
+
+long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
+{
+	Scene* sc       = Omega::instance().getScene().get();
+	long   restored = 0;
+	if (keptFrom.lock().get() != sc) keptContacts.clear();
+	for (const auto& k : keptContacts) {
+		if (!Body::byId(k.id1, sc) || !Body::byId(k.id2, sc)) continue; // a body not on this rank
+		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);
+		if (!I || I->geom || I->phys) continue; // no candidate pair here, or one that kept its state
+		if (I->getId1() != k.id1) I->swapOrder(); // allowed while it has neither
+		I->geom = k.geom;
+		I->phys = k.phys;
+		++restored;
+	}
+	keptContacts.clear();
+	return restored;
+}
+
+// Serialized with the scene's own binary archive (what O.save writes), so every field that survives
+// save/load survives the trip to another rank.
+boost::python::object Ip2_MesoMat_MesoMat_MesoPhys::exportContacts(const std::vector<Body::id_t>& ids)
+{
+	const std::set<Body::id_t>           wanted(ids.begin(), ids.end());
+	std::vector<shared_ptr<Interaction>> contacts;
+	for (const auto& I : *Omega::instance().getScene()->interactions)
+		if (I->isReal() && (wanted.count(I->getId1()) || wanted.count(I->getId2()))) contacts.push_back(I);
+	std::ostringstream out;
+	out << contactsTag;
+	ObjectIO::save<decltype(contacts), boost::archive::binary_oarchive>(out, "contacts", contacts);
+	const std::string bytes = out.str();
+	return boost::python::object(boost::python::handle<>(PyBytes_FromStringAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size()))));
+}
+
+long Ip2_MesoMat_MesoMat_MesoPhys::importContacts(const boost::python::object& data)
+{
+	char*      buffer = nullptr;
+	Py_ssize_t size   = 0;
+	if (!PyBytes_Check(data.ptr())) throw std::invalid_argument("data: must be bytes made by exportContacts");
+	if (PyBytes_AsStringAndSize(data.ptr(), &buffer, &size) != 0) boost::python::throw_error_already_set();
+	const std::string bytes(buffer, static_cast<size_t>(size));
+	if (bytes.compare(0, contactsTag.size(), contactsTag) != 0) throw std::invalid_argument("data: not contacts made by exportContacts");
+	std::istringstream                   in(bytes.substr(contactsTag.size()));
+	std::vector<shared_ptr<Interaction>> contacts;
+	try {
+		ObjectIO::load<decltype(contacts), boost::archive::binary_iarchive>(in, "contacts", contacts);
+	} catch (const std::exception& e) { // a broken archive may throw anything from boost or the library
+		throw std::invalid_argument(std::string("data: not contacts made by exportContacts (") + e.what() + ")");
+	}
+	keepFor(Omega::instance().getScene());
+	for (const auto& I : contacts)
+		keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
+	return static_cast<long>(contacts.size());
+}
+
+} // namespace yade
