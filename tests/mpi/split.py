@@ -113,11 +113,12 @@ elif mode == "mpi":
                 ok = ok and not r["missing"] and not r["extra"] and not bad
             print(f"wall forces: largest difference {result['walls_worst']:.1e} of the largest; contacts given back "
                   f"per worker {[k['restored'] for k in restored[1:]] if kept else 'none (--lose)'}", flush=True)
-            if realloc:
+            if realloc and lose:
+                print(f"reallocation: bodies now on another worker {moved[1:]}, their contacts not sent (--lose)", flush=True)
+            elif realloc:
                 print(f"reallocation: {restored[1]['reallocations']} times; bodies now on another worker {moved[1:]}; "
-                      f"moved away per worker "
-                      f"{[k['moved'] for k in restored[1:]]} with {[k['sent'] for k in restored[1:]]} bytes of "
-                      f"contacts{' (not sent: --lose)' if lose else ''}", flush=True)
+                      f"moved away per worker {[k['moved'] for k in restored[1:]]} with {[k['sent'] for k in restored[1:]]} "
+                      "bytes of contacts", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
         return ok

@@ -6,7 +6,8 @@
 # and run one tension cycle to Dx = 0.2 of P elastic crossing times (default 30). serial writes
 # DIR/mpi-serial[-full].json: every contact's state before the cycle and the force rows. mpi splits
 # the scene (the master holds the two loading walls, two workers the halves x < and > the median;
-# --realloc: the same with a rough cut, which mpy's reallocation smooths as it runs), keeps
+# --realloc: a cut that swings by two radii about it, the particles moved to follow it by mpy's
+# reallocation at every collision step, see swing_filter), keeps
 # the contacts (mesocontact.mpi.keep_contacts), lets the workers move their copies of the walls
 # (mpi.follow_master_bodies), and checks: right after the split every contact on the workers
 # equals the serial one bitwise (each copy of a pair that crosses the halves); the force rows of
@@ -22,7 +23,7 @@ import time
 
 from yade import O
 from yade.wrapper import Sphere
-from mesocontact import stages, uniaxial
+from mesocontact import stages, tablet, uniaxial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from contact_state import compare, contacts  # noqa: E402
@@ -51,6 +52,23 @@ def start():
     return test, contacts()
 
 
+def swing_filter():
+    """A reallocation filter for mpy (``REALLOCATE_FILTER``): the cut between the two workers
+    swings about the median plane x = m by two radii, m + 2 r sin(2 pi step / 1000), and each
+    reallocation moves the particles that are on the other side of it now, so that bodies change
+    workers back and forth during the cycle."""
+    spheres = [O.bodies[i] for i in tablet.sphere_ids()]
+    middle = sorted(b.state.pos[0] for b in spheres)[len(spheres) // 2]
+    radius = min(b.shape.radius for b in spheres)
+
+    def swing(i, j, give_away=0):
+        cut = middle + 2 * radius * math.sin(2 * math.pi * O.iter / 1000)
+        side = 1 if j == 1 else -1  # worker 1 holds x < cut
+        return [b.id for b in O.bodies if b and not b.isSubdomain and b.subdomain == i
+                and isinstance(b.shape, Sphere) and side * (b.state.pos[0] - cut) < 0]
+    return swing
+
+
 if mode == "serial":
     test, before = start()
     t0 = time.time()
@@ -65,14 +83,9 @@ elif mode == "mpi":
         test, before = start()
         f0 = test.force()  # the split clears the master's forces: the first row's is read now
         unwrapped = mpy.reallocateBodiesToSubdomains
-        worker = None
-        if realloc:  # a rough cut: particles within a radius of the median plane on either side, which mpy's
-            mpy.REALLOCATE_FREQUENCY = 1  # reallocation sorts out as it runs
-            middle = sorted(b.state.pos[0] for b in O.bodies if isinstance(b.shape, Sphere))[len(O.bodies) // 3]
-
-            def worker(b):
-                return 1 if b.state.pos[0] + b.shape.radius * math.sin(b.id) < middle else 2
-        followed = mpi.split_tablet(mpy, keep=realloc or not lose, worker=worker)
+        if realloc:
+            mpy.REALLOCATE_FREQUENCY, mpy.REALLOCATE_FILTER = 1, swing_filter()
+        followed = mpi.split_tablet(mpy, keep=realloc or not lose)
         if realloc and lose:  # the split's contacts kept, the moved bodies' contacts not sent along
             mpy.reallocateBodiesToSubdomains = unwrapped
         kept = None if lose and not realloc else mpi.keep_contacts(mpy)  # the counters (already wrapped)
@@ -110,10 +123,12 @@ elif mode == "mpi":
                   flush=True)
             ok = (not s["missing"] and not s["extra"] and max(s["worst"].values()) == 0
                   and result["loaded_as_serial"] == 0 and worst <= TOLERANCE and dx_same)
-            if realloc:
+            if realloc and lose:
+                print("reallocation: the moved bodies' contacts not sent (--lose)", flush=True)
+            elif realloc:
                 k = [r["kept"] for r in info[1:]]
                 print(f"reallocation: {k[0]['reallocations']} times; moved away per worker {[x['moved'] for x in k]} "
-                      f"with {[x['sent'] for x in k]} bytes of contacts{' (not sent: --lose)' if lose else ''}", flush=True)
+                      f"with {[x['sent'] for x in k]} bytes of contacts", flush=True)
             print("mpi tablet: " + ("ok" if ok else "FAILED"), flush=True)
         return ok
 
