@@ -26,7 +26,7 @@ from yade import wrapper as w
 
 from .scene import py_runner
 
-_KEPT = {"restored": 0, "collisions": 0, "reallocations": 0, "moved": 0, "sent": 0}
+_KEPT = {"restored": 0, "collisions": 0, "reallocations": 0, "moved": 0, "sent": 0, "received": 0}
 _ARRIVING = []  # bytes of contacts sent by other ranks with the bodies mpy moved here
 
 
@@ -34,8 +34,8 @@ def keep_contacts(mpy):
     """Makes every collision step of ``mpy`` (the module) keep the state of the contacts it
     remakes, and every reallocation (``mpy.REALLOCATE_FREQUENCY > 0``) send the contacts of the
     bodies it moves to their new worker. Idempotent. Returns a dict counting, on this rank, the
-    collision steps, the contacts given back, the reallocations, the bodies moved away and the
-    bytes of contacts sent with them (for logs and tests)."""
+    collision steps, the contacts given back, the reallocations, the bodies moved away, the bytes
+    of contacts sent with them and the contacts received (for logs and tests)."""
     if getattr(mpy.parallelCollide, "_keeps_contacts", False):
         return _KEPT
     collide, reallocate = mpy.parallelCollide, mpy.reallocateBodiesToSubdomains
@@ -44,7 +44,7 @@ def keep_contacts(mpy):
     def parallelCollide():
         ip2.keepContacts()
         for data in _ARRIVING:
-            ip2.importContacts(data)
+            _KEPT["received"] += ip2.importContacts(data)
         _ARRIVING.clear()
         collide()
         _KEPT["collisions"] += 1

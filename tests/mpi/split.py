@@ -118,7 +118,7 @@ elif mode == "mpi":
             elif realloc:
                 print(f"reallocation: {restored[1]['reallocations']} times; bodies now on another worker {moved[1:]}; "
                       f"moved away per worker {[k['moved'] for k in restored[1:]]} with {[k['sent'] for k in restored[1:]]} "
-                      "bytes of contacts", flush=True)
+                      f"bytes of contacts; contacts received {[k['received'] for k in restored[1:]]}", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
         return ok

@@ -128,7 +128,8 @@ elif mode == "mpi":
             elif realloc:
                 k = [r["kept"] for r in info[1:]]
                 print(f"reallocation: {k[0]['reallocations']} times; moved away per worker {[x['moved'] for x in k]} "
-                      f"with {[x['sent'] for x in k]} bytes of contacts", flush=True)
+                      f"with {[x['sent'] for x in k]} bytes of contacts; contacts received {[x['received'] for x in k]}",
+                      flush=True)
             print("mpi tablet: " + ("ok" if ok else "FAILED"), flush=True)
         return ok
 
