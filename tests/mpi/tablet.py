@@ -6,8 +6,8 @@
 # and run one tension cycle to Dx = 0.2 of P elastic crossing times (default 30). serial writes
 # DIR/mpi-serial[-full].json: every contact's state before the cycle and the force rows. mpi splits
 # the scene (the master holds the two loading walls, two workers the halves x < and > the median;
-# --realloc: a cut that swings by two radii about it, the particles moved to follow it by mpy's
-# reallocation at every collision step, see swing_filter), keeps
+# --realloc: cuts that swing by two radii, the particles moved to follow them by mpy's
+# reallocation at every collision step, see swing_filter; more workers: mpiexec -n 4 ...), keeps
 # the contacts (mesocontact.mpi.keep_contacts), lets the workers move their copies of the walls
 # (mpi.follow_master_bodies), and checks: right after the split every contact on the workers
 # equals the serial one bitwise (each copy of a pair that crosses the halves); the force rows of
@@ -52,20 +52,20 @@ def start():
     return test, contacts()
 
 
-def swing_filter():
-    """A reallocation filter for mpy (``REALLOCATE_FILTER``): the cut between the two workers
-    swings about the median plane x = m by two radii, m + 2 r sin(2 pi step / 1000), and each
-    reallocation moves the particles that are on the other side of it now, so that bodies change
-    workers back and forth during the cycle."""
+def swing_filter(workers):
+    """A reallocation filter for mpy (``REALLOCATE_FILTER``): the cuts between the workers' slabs
+    (those of mpi.split_tablet, at x = c_k) swing by two radii, c_k + 2 r sin(2 pi step / 1000 +
+    k - 1), and each reallocation moves the particles that are on another worker's side of them
+    now, so that bodies change workers back and forth during the cycle."""
     spheres = [O.bodies[i] for i in tablet.sphere_ids()]
-    middle = sorted(b.state.pos[0] for b in spheres)[len(spheres) // 2]
+    xs = sorted(b.state.pos[0] for b in spheres)
+    cuts = [xs[len(xs) * k // workers] for k in range(1, workers)]
     radius = min(b.shape.radius for b in spheres)
 
     def swing(i, j, give_away=0):
-        cut = middle + 2 * radius * math.sin(2 * math.pi * O.iter / 1000)
-        side = 1 if j == 1 else -1  # worker 1 holds x < cut
+        now = [c + 2 * radius * math.sin(2 * math.pi * O.iter / 1000 + k) for k, c in enumerate(cuts)]
         return [b.id for b in O.bodies if b and not b.isSubdomain and b.subdomain == i
-                and isinstance(b.shape, Sphere) and side * (b.state.pos[0] - cut) < 0]
+                and isinstance(b.shape, Sphere) and 1 + sum(b.state.pos[0] >= c for c in now) == j]
     return swing
 
 
@@ -84,7 +84,7 @@ elif mode == "mpi":
         f0 = test.force()  # the split clears the master's forces: the first row's is read now
         unwrapped = mpy.reallocateBodiesToSubdomains
         if realloc:
-            mpy.REALLOCATE_FREQUENCY, mpy.REALLOCATE_FILTER = 1, swing_filter()
+            mpy.REALLOCATE_FREQUENCY, mpy.REALLOCATE_FILTER = 1, swing_filter(mpy.numThreads - 1)
         followed = mpi.split_tablet(mpy, keep=realloc or not lose)
         if realloc and lose:  # the split's contacts kept, the moved bodies' contacts not sent along
             mpy.reallocateBodiesToSubdomains = unwrapped
