@@ -351,8 +351,10 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     through the sample, where the last contact chain between the walls breaks, and the force
     after that (no drag acts on a detached half moving as a body: it must vanish)."""
     speed = speed or PULL_SPEED
-    prepare(outdir, quick, progress)
+    prepare(outdir, quick, progress and is_master())
     tag = "fig17"
+    if _MPY is not None:
+        return _pull_mpi(outdir, quick, speed, until, progress, tag)
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
     where = bundle.tmp
     test = _uni.Test(progress=progress)
@@ -403,6 +405,32 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     return summary
 
 
+def _pull_mpi(outdir, quick, speed, until, progress, tag):
+    """The pull under yade.mpy (--mpi): the same force rows as the serial pull. The crack events
+    and snapshots need every particle on one process, which the master does not hold: they are
+    left out (null in the JSON), the serial pull gives them."""
+    test = _uni.Test(progress=progress, run=lambda n: _MPY.mpirun(n), records=_MPY.rank == 0,
+                     share=lambda x: _MPY.comm.bcast(x, root=0))
+    f0 = test.force()  # the split clears the master's forces: the first row's is read now
+    _mpi.split_tablet(_MPY)
+    t0 = time.time()
+    rows = test.pull(speed, until=until)
+    if not is_master():
+        return None
+    rows[0] = (*rows[0][:2], f0)
+    events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": []}
+    summary = dict(events, speed=speed, until=until, t_cross=test.t_cross, L0=test.L0, quick=quick,
+                   wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows),
+                   max_tension_Dx=min(rows, key=lambda r: r[2])[1], mpi_ranks=_MPY.numThreads,
+                   events_note="under yade.mpy the crack events and snapshots are not taken (they need every "
+                               "particle on one process): run the pull without --mpi for them")
+    with _out.Bundle(os.path.join(root(outdir, quick), tag)) as bundle:
+        bundle.write_text(tag + ".csv", _csv_text(rows))
+        bundle.write_json(tag + ".json", summary)
+        _plot_pull(rows, events, bundle.path(tag + ".png"))
+    return summary
+
+
 def _plot_pull(rows, events, png):
     import matplotlib
     matplotlib.use("Agg")
@@ -423,6 +451,7 @@ def _plot_pull(rows, events, png):
 
 
 FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19")
+MPI_FIGURES = ("fig16", "fig17", "fig18")
 
 
 def parse_args(figure, argv):
@@ -444,15 +473,17 @@ def parse_args(figure, argv):
                    help="fig16, fig18: comma-separated amplitudes that also run at the slower periods (default: all)")
     p.add_argument("--no-run", action="store_true", help="rates: only the periods whose runs are complete")
     p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
+    p.add_argument("--until", type=float, default=9.0, help="fig17: pull until Dx = UNTIL (in d0)")
     p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
     p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
     p.add_argument("--mpi", type=int, default=None, metavar="N",
-                   help="fig16, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`)")
+                   help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
+                        " fig17 without crack events and snapshots)")
     a = p.parse_args(argv)
-    if a.mpi is not None and figure not in ("fig16", "fig18"):
-        p.error(f"--mpi {a.mpi}: only fig16 and fig18 run under yade.mpy (not {figure})")
+    if a.mpi is not None and figure not in MPI_FIGURES:
+        p.error(f"--mpi {a.mpi}: only {', '.join(MPI_FIGURES)} run under yade.mpy (not {figure})")
     if a.mpi is not None and a.mpi < 2:
         p.error(f"--mpi {a.mpi} is invalid: a master and at least one worker (N >= 2)")
     if a.mpi is not None:
@@ -470,6 +501,7 @@ def parse_args(figure, argv):
     slow = _numbers(p, "--slow-amplitudes", a.slow_amplitudes, 0, side, "an amplitude in d0") if a.slow_amplitudes else None
     periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
+    _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull in d0")
     if a.kc_over_kp is not None and not (math.isfinite(a.kc_over_kp) and 0 <= a.kc_over_kp <= 100):
         p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
     try:  # an unwritable --out fails now, not after the computation
@@ -509,7 +541,7 @@ def _main(figure, a, amps, slow, periods):
         amp = (amps or (0.3,))[-1]
         out = cyclic("compression", a.out, (amp,), a.quick, periods[:1], snapshot_amplitude=amp, figure="fig19")
     elif figure == "fig17":
-        out = pull(a.out, a.quick, speed=a.speed)
+        out = pull(a.out, a.quick, speed=a.speed, until=a.until)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")
     if not is_master():

@@ -115,12 +115,14 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
 class Test:
     """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined')).
     ``run(n)`` advances the scene by n steps (default ``O.run(n, True)``; under yade.mpy
-    ``mpy.mpirun``, with ``records`` true on the master only: a worker may not hold both walls)."""
+    ``mpy.mpirun``, with ``records`` true on the master only: a worker may not hold both walls,
+    and ``share(x)`` giving every rank the master's x, for decisions made from the walls)."""
 
-    def __init__(self, progress=True, run=None, records=True):
+    def __init__(self, progress=True, run=None, records=True, share=None):
         self.progress = progress and records
         self.records = records
         self._run = run or (lambda n: O.run(n, True))
+        self._share = share or (lambda x: x)
         walls = _tablet.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
         O.step()  # forces are not saved: one step with the walls at rest restores them
@@ -211,7 +213,7 @@ class Test:
         self._record()
         t0 = time.time()
         chunk = 50 * every
-        while self.dx() < until:
+        while self._share(self.dx() < until if self.records else None):
             self._run(chunk)
             if self.progress:
                 print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",

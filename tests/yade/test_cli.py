@@ -34,7 +34,10 @@ cases = [
     ("tablet_prepare.py", ["--n", "3"], "--n"),
     ("tablet_fig16.py", ["--mpi", "1"], "--mpi"),
     ("tablet_fig16.py", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
-    ("tablet_rates.py", ["--mpi", "3"], "--mpi"),  # only fig16 and fig18 run under yade.mpy
+    ("tablet_rates.py", ["--mpi", "3"], "--mpi"),  # only fig16, fig17 and fig18 run under yade.mpy
+    ("tablet_fig19.py", ["--mpi", "3"], "--mpi"),
+    ("tablet_fig17.py", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
+    ("tablet_fig17.py", ["--until", "0"], "--until"),
 ]
 for script, args, option in cases:
     rc, text, secs = run(script, *args, "--out", out)
