@@ -26,7 +26,7 @@ namespace {
 	// Marks the bytes as ours, so that other bytes are refused before boost reads lengths from them.
 	const std::string contactsTag = "mesocontact contacts 1\n";
 
-	void keepFor(const shared_ptr<Scene>& scene)
+	void keepFor(const shared_ptr<Scene>& scene) // what was kept from another scene is forgotten
 	{
 		if (keptFrom.lock() != scene) keptContacts.clear();
 		keptFrom = scene;
@@ -37,7 +37,7 @@ long Ip2_MesoMat_MesoMat_MesoPhys::keepContacts()
 {
 	const shared_ptr<Scene>& scene = Omega::instance().getScene();
 	keptContacts.clear();
-	keepFor(scene);
+	keptFrom = scene;
 	for (const auto& I : *scene->interactions)
 		if (I->isReal()) keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
 	return static_cast<long>(keptContacts.size());

@@ -106,6 +106,19 @@ def cycle_peaks(mode, rows, steps_per_cycle):
     return [pick(cycles[k]) for k in sorted(cycles)]
 
 
+def _test(progress):
+    """The uni-axial test on the loaded start, serially or, under yade.mpy, split over the ranks
+    (the master records, every rank follows its decisions). Returns (test, f0): f0 the first
+    row's force under mpy, read before the split clears the master's forces; None serially."""
+    if _MPY is None:
+        return _uni.Test(progress=progress), None
+    test = _uni.Test(progress=progress, run=lambda n: _MPY.mpirun(n), records=_MPY.rank == 0,
+                     share=lambda x: _MPY.comm.bcast(x, root=0))
+    f0 = test.force()
+    _mpi.split_tablet(_MPY)
+    return test, f0
+
+
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
@@ -121,12 +134,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     prepare(outdir, quick, progress and is_master())
     bundle = _out.Bundle(where) if is_master() else None
     try:
-        if _MPY is None:
-            test = _uni.Test(progress=progress)
-        else:
-            test = _uni.Test(progress=progress, run=lambda n: _MPY.mpirun(n), records=_MPY.rank == 0)
-            f0 = test.force()  # the split clears the master's forces: the first row's is read now
-            _mpi.split_tablet(_MPY)
+        test, f0 = _test(progress)
         rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
                            on_record=hook(test, bundle.tmp) if hook else None)
         if _MPY is not None:
@@ -349,16 +357,13 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     PNG and VTK snapshots at dx_marks (one frame for all); records where the first crack is
     visible from the front face (snapshots.visible_gap >= GAP_AREA d0^2), where one first sees
     through the sample, where the last contact chain between the walls breaks, and the force
-    after that (no drag acts on a detached half moving as a body: it must vanish)."""
+    after that (no drag acts on a detached half moving as a body: it must vanish). Under
+    yade.mpy (--mpi) the same force rows, without the events and snapshots."""
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress and is_master())
     tag = "fig17"
-    if _MPY is not None:
-        return _pull_mpi(outdir, quick, speed, until, progress, tag)
-    bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
-    where = bundle.tmp
-    test = _uni.Test(progress=progress)
-    win = _snap.window(margin=1.0, stretch=0.5 * until)
+    test, f0 = _test(progress)
+    bundle = _out.Bundle(os.path.join(root(outdir, quick), tag)) if is_master() else None
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
               "gap_area": []}
@@ -368,9 +373,9 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         dx = row[1]
         if marks and dx >= marks[0]:
             label = f"{tag}-{len(events['snapshots']):02d}"
-            _snap.png(os.path.join(where, label + ".png"), f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}",
-                      win=win)
-            _snap.vtk(os.path.join(where, tag), len(events["snapshots"]))
+            _snap.png(os.path.join(bundle.tmp, label + ".png"),
+                      f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}", win=win)
+            _snap.vtk(os.path.join(bundle.tmp, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         if len(t.rows) % check_every == 0:
             if events["first_gap_Dx"] is None:
@@ -383,12 +388,20 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
             if events["last_contact_Dx"] is None and not _snap.walls_connected(t.left, t.right):
                 events["last_contact_Dx"] = dx
 
+    # The events and snapshots look at every particle, which under yade.mpy no rank holds.
+    if _MPY is None:
+        win = _snap.window(margin=1.0, stretch=0.5 * until)
     t0 = time.time()
     try:
-        rows = test.pull(speed, until=until, on_record=hook)
+        rows = test.pull(speed, until=until, on_record=hook if _MPY is None else None)
     except BaseException:
-        bundle.discard()
+        if bundle is not None:
+            bundle.discard()
         raise
+    if bundle is None:
+        return None
+    if f0 is not None:
+        rows[0] = (*rows[0][:2], f0)
     after = [r[2] for r in rows if events["last_contact_Dx"] is not None and r[1] > events["last_contact_Dx"] + 0.05]
     summary = dict(events, speed=speed, until=until, t_cross=test.t_cross, L0=test.L0, quick=quick,
                    wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows),
@@ -397,34 +410,12 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                    mean_force_after_last_contact=sum(after) / len(after) if after else None,
                    rms_force_after_last_contact=(sum(f * f for f in after) / len(after)) ** 0.5 if after else None,
                    gap_criterion=f"a crack of >= {GAP_AREA:g} d0^2 seen >= 3 d0 behind the front face, "
-                                 "in the central 60 % of the height, between the walls")
+                                 "in the central 60 % of the height, between the walls",
+                   mpi_ranks=_MPY.numThreads if _MPY else 1)
+    if _MPY is not None:
+        summary["events_note"] = ("under yade.mpy the crack events and snapshots are not taken (they need every "
+                                  "particle on one process): run the pull without --mpi for them")
     with bundle:
-        bundle.write_text(tag + ".csv", _csv_text(rows))
-        bundle.write_json(tag + ".json", summary)
-        _plot_pull(rows, events, bundle.path(tag + ".png"))
-    return summary
-
-
-def _pull_mpi(outdir, quick, speed, until, progress, tag):
-    """The pull under yade.mpy (--mpi): the same force rows as the serial pull. The crack events
-    and snapshots need every particle on one process, which the master does not hold: they are
-    left out (null in the JSON), the serial pull gives them."""
-    test = _uni.Test(progress=progress, run=lambda n: _MPY.mpirun(n), records=_MPY.rank == 0,
-                     share=lambda x: _MPY.comm.bcast(x, root=0))
-    f0 = test.force()  # the split clears the master's forces: the first row's is read now
-    _mpi.split_tablet(_MPY)
-    t0 = time.time()
-    rows = test.pull(speed, until=until)
-    if not is_master():
-        return None
-    rows[0] = (*rows[0][:2], f0)
-    events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": []}
-    summary = dict(events, speed=speed, until=until, t_cross=test.t_cross, L0=test.L0, quick=quick,
-                   wall_clock_s=time.time() - t0, max_tension=min(r[2] for r in rows),
-                   max_tension_Dx=min(rows, key=lambda r: r[2])[1], mpi_ranks=_MPY.numThreads,
-                   events_note="under yade.mpy the crack events and snapshots are not taken (they need every "
-                               "particle on one process): run the pull without --mpi for them")
-    with _out.Bundle(os.path.join(root(outdir, quick), tag)) as bundle:
         bundle.write_text(tag + ".csv", _csv_text(rows))
         bundle.write_json(tag + ".json", summary)
         _plot_pull(rows, events, bundle.path(tag + ".png"))

@@ -104,6 +104,14 @@ def follow_master_bodies(mpy):
     return ids
 
 
+def slab_cuts(workers):
+    """The x positions between ``workers`` slabs of equal particle counts of the loaded tablet,
+    where split_tablet cuts it."""
+    from . import tablet
+    xs = sorted(O.bodies[i].state.pos[0] for i in tablet.sphere_ids())
+    return [xs[len(xs) * k // workers] for k in range(1, workers)]
+
+
 def split_tablet(mpy, keep=True):
     """Splits the loaded tablet over the ranks of ``mpy``: the master holds the walls, each worker
     a slab along x with an equal share of the particles (the loading axis: a slab's boundary
@@ -111,7 +119,6 @@ def split_tablet(mpy, keep=True):
     (keep_contacts; keep=False only to show what is lost without it) and lets the workers move
     their copies of the walls (follow_master_bodies). Run it on every rank, after loading the
     scene and before mpy.mpirun. Returns the wall ids this rank follows."""
-    from . import tablet
     workers = mpy.numThreads - 1
     if workers < 1:
         raise ValueError(f"ranks = {workers + 1}: the tablet under yade.mpy needs a master and at least one worker")
@@ -119,8 +126,7 @@ def split_tablet(mpy, keep=True):
         keep_contacts(mpy)
     check_labels()
     O.splitted = O.splittedOnce = False  # a freshly loaded scene: mpy splits it as new
-    xs = sorted(O.bodies[i].state.pos[0] for i in tablet.sphere_ids())
-    cuts = [xs[len(xs) * k // workers] for k in range(1, workers)]
+    cuts = slab_cuts(workers)
     for b in O.bodies:
         if isinstance(b.shape, w.Box):
             b.subdomain = 0

@@ -23,7 +23,7 @@ import time
 
 from yade import O
 from yade.wrapper import Sphere
-from mesocontact import stages, tablet, uniaxial
+from mesocontact import mpi, stages, tablet, uniaxial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from contact_state import compare, contacts  # noqa: E402
@@ -57,10 +57,8 @@ def swing_filter(workers):
     (those of mpi.split_tablet, at x = c_k) swing by two radii, c_k + 2 r sin(2 pi step / 1000 +
     k - 1), and each reallocation moves the particles that are on another worker's side of them
     now, so that bodies change workers back and forth during the cycle."""
-    spheres = [O.bodies[i] for i in tablet.sphere_ids()]
-    xs = sorted(b.state.pos[0] for b in spheres)
-    cuts = [xs[len(xs) * k // workers] for k in range(1, workers)]
-    radius = min(b.shape.radius for b in spheres)
+    cuts = mpi.slab_cuts(workers)
+    radius = min(O.bodies[i].shape.radius for i in tablet.sphere_ids())
 
     def swing(i, j, give_away=0):
         now = [c + 2 * radius * math.sin(2 * math.pi * O.iter / 1000 + k) for k, c in enumerate(cuts)]
@@ -77,7 +75,6 @@ if mode == "serial":
         json.dump({"rows": rows, "before": before, "wall_clock_s": time.time() - t0, "steps": rows[-1][0] - rows[0][0]}, f)
 elif mode == "mpi":
     from yade import mpy
-    from mesocontact import mpi
 
     def compare_with_serial():
         test, before = start()
