@@ -1,10 +1,13 @@
 #include "MesoBackgroundDamping.hpp"
+#include "MesoContact.hpp"
 #include "PyChecks.hpp"
 #include <core/Interaction.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Scene.hpp>
 #include <core/State.hpp>
 #include <pkg/common/Sphere.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -58,8 +61,7 @@ void MesoBackgroundDamping::registerChecked(boost::python::object& cls)
 void MesoBackgroundDamping::sumNeighbours()
 {
 	// One pass over the contacts (a vector) instead of each body's map of interactions: every
-	// contact adds each body's motion to the other's sums. Serial: it costs a small share of the
-	// law's own loop over the same contacts.
+	// contact adds each body's motion to the other's sums, in the container's order (the law's).
 	const BodyContainer& bodies = *scene->bodies;
 	const size_t         n      = bodies.size();
 	neighbours.assign(n, Neighbours());
@@ -70,23 +72,70 @@ void MesoBackgroundDamping::sumNeighbours()
 		if (!I->isReal()) continue;
 		const auto* geom = dynamic_cast<const ScGeom*>(I->geom.get());
 		if (!geom || !(geom->penetrationDepth > 0)) continue;
-		const Body::id_t ids[2] = {I->getId1(), I->getId2()};
-		for (int k = 0; k < 2; ++k) {
-			const Body::id_t self = ids[k], other = ids[1 - k];
-			if (!bodies[other]) continue;
-			const State& s   = *bodies[other]->state;
-			Neighbours&  acc = neighbours[self];
-			if (isSphere[other]) { // its centre
-				acc.x += s.pos;
-				acc.v += s.vel;
-			} else { // a wall or another large body: the material point at the contact
-				acc.x += geom->contactPoint;
-				acc.v += s.vel + s.angVel.cross(geom->contactPoint - s.pos);
-			}
-			acc.w += s.angVel;
-			++acc.n;
-		}
+		const Body::id_t id1 = I->getId1(), id2 = I->getId2();
+		if (!bodies[id1] || !bodies[id2]) continue;
+		MesoNeighbourSums::sumPair(neighbours, *I, *geom, *bodies[id1]->state, *bodies[id2]->state, isSphere[id1], isSphere[id2], scene);
 	}
+}
+
+std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> MesoBackgroundDamping::precedingLaws() const
+{
+	// The laws run right before this engine, provided they are all meso laws: then every contact in
+	// overlap was visited by one of them, and nothing moved a body in between.
+	std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> laws;
+	const auto& engines = scene->engines;
+	for (size_t k = 1; k < engines.size(); ++k) {
+		if (engines[k].get() != this) continue;
+		const auto* loop = dynamic_cast<const InteractionLoop*>(engines[k - 1].get());
+		if (!loop || loop->dead || !loop->lawDispatcher) return {};
+		for (const auto& f : loop->lawDispatcher->functors) {
+			auto law = YADE_PTR_DYN_CAST<Law2_ScGeom_MesoPhys_Meso>(f);
+			if (!law) return {};
+			laws.push_back(law);
+		}
+		return laws;
+	}
+	return {};
+}
+
+bool MesoBackgroundDamping::takeLawSums()
+{
+	const long n = static_cast<long>(scene->bodies->size());
+	if (sums->step.load() != scene->iter || sums->perThread.empty() || static_cast<long>(sums->perThread[0].size()) != n) return false;
+	if (precedingLaws() != sumLaws) return false; // the engines changed since the last step
+	neighbours = sums->perThread[0];
+	for (size_t t = 1; t < sums->perThread.size(); ++t)
+		for (long id = 0; id < n; ++id) {
+			const Neighbours& s = sums->perThread[t][id];
+			if (s.n == 0) continue;
+			Neighbours& acc = neighbours[id];
+			acc.x += s.x;
+			acc.v += s.v;
+			acc.w += s.w;
+			acc.n += s.n;
+		}
+	return true;
+}
+
+void MesoBackgroundDamping::prepareLawSums(long n)
+{
+	auto laws = precedingLaws();
+	for (const auto& law : sumLaws) // handed to before, gone from the loop now: stop adding
+		if (std::find(laws.begin(), laws.end(), law) == laws.end()) law->neighbourSums.reset();
+	sumLaws = laws;
+	sums->step.store(-1);
+	if (laws.empty()) return;
+#ifdef YADE_OPENMP
+	const size_t threads = static_cast<size_t>(omp_get_max_threads());
+#else
+	const size_t threads = 1;
+#endif
+	sums->perThread.resize(threads);
+	for (auto& acc : sums->perThread)
+		acc.assign(n, Neighbours());
+	for (const auto& law : laws)
+		law->neighbourSums = sums;
+	sums->step.store(scene->iter + 1);
 }
 
 void MesoBackgroundDamping::action()
@@ -102,7 +151,9 @@ void MesoBackgroundDamping::action()
 		hasPrev.resize(n, 0);
 	}
 	const BodyContainer& bodies     = *scene->bodies;
-	if (relative) sumNeighbours();
+	const bool fromLaw  = relative && sumInLaw && takeLawSums();
+	if (relative && !fromLaw) sumNeighbours();
+	if (fromLaw) ++lawSumSteps;
 	Real                 dissipated = 0;
 #ifdef YADE_OPENMP
 #pragma omp parallel for reduction(+ : dissipated) schedule(static)
@@ -141,6 +192,12 @@ void MesoBackgroundDamping::action()
 		if (rot > 0) scene->forces.addTorque(id, torque);
 	}
 	if (track) scene->energy->add(dissipated, "mesoBackground", energyIx, false);
+	if (relative && sumInLaw) prepareLawSums(n);
+	else if (!sumLaws.empty()) {
+		for (const auto& law : sumLaws)
+			law->neighbourSums.reset();
+		sumLaws.clear();
+	}
 }
 
 } // namespace yade

@@ -3,20 +3,27 @@
 // reference is the lab frame (at rest) or the rigid motion of the particle's contact neighbours,
 // so that a cluster moving as a body, or the imposed homogeneous deformation, is not dragged.
 #pragma once
+#include "MesoNeighbourSums.hpp"
 #include <core/GlobalEngine.hpp>
 #include <vector>
 
 namespace yade {
 
+class Law2_ScGeom_MesoPhys_Meso;
+
 class MesoBackgroundDamping : public GlobalEngine {
-	struct Neighbours {
-		Vector3r x = Vector3r::Zero(), v = Vector3r::Zero(), w = Vector3r::Zero(); // sums of positions, velocities, spins
-		int      n = 0;
-	};
+	using Neighbours = MesoNeighbourSums::Sums;
 	std::vector<Neighbours> neighbours; // per body, this step
 	std::vector<char>       isSphere;
-	void                    validate() const; // throws std::invalid_argument naming the attribute and value
-	void                    sumNeighbours();
+	// Filled by the laws of the InteractionLoop right before this engine (lawSums); the laws it was
+	// handed to, so that one no longer there stops adding.
+	shared_ptr<MesoNeighbourSums>                   sums = shared_ptr<MesoNeighbourSums>(new MesoNeighbourSums());
+	std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> sumLaws;
+	void                                            validate() const; // throws std::invalid_argument naming the attribute and value
+	void                                            sumNeighbours();  // the engine's own pass over the interactions
+	bool                                            takeLawSums();    // the laws' sums of this step, if complete
+	void                                            prepareLawSums(long nBodies); // for the next step
+	std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> precedingLaws() const;
 	Real                    validGammaB = 0, validGammaBR = 0; // the attributes as last validated (constructor, postLoad)
 	std::string             validReference;
 
@@ -30,6 +37,8 @@ public:
 		((Real,gammaB,0,Attr::triggerPostLoad,"Translational drag coefficient $\\gamma_b\\geq 0$ [kg/s], finite (checked on assignment)."))
 		((Real,gammaBR,0,Attr::triggerPostLoad,"Rotational drag coefficient $\\gamma_{br}\\geq 0$ [kg/s], finite: torque $-\\gamma_{br}a^2(\\omega-\\omega_{ref})$."))
 		((std::string,reference,"lab",Attr::triggerPostLoad,"What the drag acts relative to: 'lab' (rest) or 'contacts' (the rigid motion of the body's contact neighbours)."))
+		((bool,sumInLaw,true,Attr::noSave,"Not saved (files of earlier versions must still load; after ``O.load`` it is ``True``). With ``reference='contacts'``: let :yref:`Law2_ScGeom_MesoPhys_Meso` add up the neighbours' motion while it visits each contact, when this engine directly follows the :yref:`InteractionLoop` and every law there is that one (otherwise, and on the first step, the engine sums itself, as with ``False``). Both give the same drag (to rounding under OpenMP, bitwise on one thread); ``False`` only costs a second pass over the interactions."))
+		((long,lawSumSteps,0,(Attr::readonly|Attr::noSave),"How many steps took the reference from the laws' sums (see ``sumInLaw``); the others summed in the engine."))
 		((std::vector<Vector3r>,prevVel,,Attr::hidden,"Velocities when the previous drag was applied (energy tracking; saved, so that the booking goes on after O.load)."))
 		((std::vector<Vector3r>,prevAngVel,,Attr::hidden,"Spins when the previous drag was applied."))
 		((std::vector<Vector3r>,prevForce,,Attr::hidden,"The previous drag forces."))

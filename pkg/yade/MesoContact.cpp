@@ -523,6 +523,7 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	const Real              delta = geom.penetrationDepth;
 	const Vector3r&         n     = geom.normal; // from 1 to 2
 	const PairMotion        m     = pairMotion(scene, geom, I);
+	if (neighbourSums) neighbourSums->add(*I, geom, *m.s1, *m.s2, phys->geometry.radius1 > 0, phys->geometry.radius2 > 0, scene);
 	const meso::NormalForce f     = normalStep(*phys, p, delta, m.vn);
 	phys->normalForce             = f.total() * n;
 	Vector3r force1               = -phys->normalForce; // on body 1

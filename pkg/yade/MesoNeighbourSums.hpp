@@ -42,7 +42,7 @@ struct MesoNeighbourSums {
 	                    bool sphere2, const Scene* scene)
 	{
 		Vector3r shift = Vector3r::Zero(), shiftVel = Vector3r::Zero(); // of body 2's image next to body 1
-		if (scene->isPeriodic) {
+		if (scene->isPeriodic && I.cellDist != Vector3i::Zero()) { // most contacts do not cross
 			shift    = scene->cell->hSize * I.cellDist.cast<Real>();
 			shiftVel = scene->cell->intrShiftVel(I.cellDist);
 		}

@@ -119,11 +119,14 @@ def _test(progress):
     return test, f0
 
 
-def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None):
+def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None, dt_factor=1.0,
+               energy=False):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle is read back, not
-    repeated (unless a hook must see the run). Returns (description, rows)."""
+    repeated (unless a hook must see the run). ``dt_factor`` scales the campaign's time step;
+    ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance) to the JSON.
+    Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
     if hook is None and _out.complete(where):
@@ -132,9 +135,12 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     cfg = QUICK if quick else FULL
     t0 = time.time()
     prepare(outdir, quick, progress and is_master())
+    O.dt *= dt_factor
     bundle = _out.Bundle(where) if is_master() else None
     try:
         test, f0 = _test(progress)
+        if energy:
+            test.track_energy()
         rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
                            on_record=hook(test, bundle.tmp) if hook else None)
         if _MPY is not None:
@@ -150,7 +156,9 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
             "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
-            "mpi_ranks": _MPY.numThreads if _MPY else 1}
+            "mpi_ranks": _MPY.numThreads if _MPY else 1, "dt_factor": dt_factor, "final_F": rows[-1][2]}
+    if energy:
+        info["energy_balance"] = test.energy_balance()
     if bundle is None:
         return info, rows
     with bundle:
@@ -233,30 +241,92 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
     return summary
 
 
-def timestep_check(outdir, quick=False, factors=(0.5, 1.0, 2.0), amplitude=0.2, period=FAST, progress=True):
-    """The time step justified: one cycle of tension and of compression at ``amplitude`` and
-    ``period``, with the campaign's time step (tablet.time_step, t_c/50) scaled by each factor;
-    writes timestep.json with the peak forces and their change against the smallest step."""
-    out = {"amplitude": amplitude, "period_crossings": period, "factors": list(factors), "runs": []}
-    for mode in _uni.MODES:
-        for factor in factors:
-            prepare(outdir, quick, progress)
-            O.dt *= factor
-            test = _uni.Test(progress=False)
-            t0, n0 = time.time(), O.iter
-            rows = test.cycles(mode, amplitude, n_cycles=1, period=period)
-            peak = cycle_peaks(mode, rows, test.steps_per_cycle)[0]
-            out["runs"].append({"mode": mode, "factor": factor, "dt": O.dt, "peak": peak, "final_F": rows[-1][2],
-                                "ms_per_step": 1e3 * (time.time() - t0) / (O.iter - n0)})
-            if progress:
-                print(f"  time step x{factor:g}: {mode} peak F/(kp d0) = {peak:.5g}", flush=True)
-    for r in out["runs"]:
-        ref = [q for q in out["runs"] if q["mode"] == r["mode"] and q["factor"] == min(factors)][0]
-        r["peak_change_vs_smallest"] = abs(r["peak"] / ref["peak"] - 1)
-        r["final_F_change_vs_smallest"] = abs(r["final_F"] - ref["final_F"])
+# The time-step study: one tension cycle (Dx = 0.2, the tension FAST period), one compression
+# cycle (Dx = 0.3, the compression FAST period) and the pull to TIMESTEP_PULL_UNTIL, at these
+# multiples of the campaign's time step (tablet.time_step); PERTURBED, a step changed by 1e-6,
+# measures how much the rupture moves for a change far below any integration error.
+TIMESTEP_FACTORS = (1.0, 2.0, 3.0, 4.0)
+PERTURBED = 1.000001
+TIMESTEP_RUNS = ("tension", "compression", "pull")
+TIMESTEP_PULL_UNTIL = 5.0
+TIMESTEP_TOLERANCE = 0.005  # the largest change against 1 dt accepted for a quantity
+
+
+def timestep_run(outdir, run, factor, quick=False, progress=True):
+    """One run of the time-step study (run: 'tension', 'compression' or 'pull'), with energy
+    balance; read back when complete. Returns its JSON description."""
+    tag = f"timestep-x{factor:g}"
+    if run == "pull":
+        where = os.path.join(root(outdir, quick), f"{tag}-pull")
+        if _out.complete(where):
+            with open(os.path.join(where, f"{tag}-pull.json")) as f:
+                return json.load(f)
+        return pull(outdir, quick, until=TIMESTEP_PULL_UNTIL, progress=progress, dx_marks=(), tag=f"{tag}-pull",
+                    dt_factor=factor, energy=True, check_every=2)
+    amplitude, period = (0.2, PERIODS["tension"][0]) if run == "tension" else (0.3, PERIODS["compression"][0])
+    cfg = QUICK if quick else FULL
+    saved = cfg["cycles"]
+    cfg["cycles"] = 1  # one cycle is enough to see the step's effect
+    try:
+        info, _ = run_cycles(outdir, run, amplitude, period, quick, progress, prefix=tag + "-", dt_factor=factor,
+                             energy=True)
+    finally:
+        cfg["cycles"] = saved
+    return info
+
+
+def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,)):
+    """Gathers the study's complete runs into timestep.json: per factor the peaks, the force back
+    at Dx = 0, the pull's events, the energy balance, the cost, and each quantity's change against
+    1 dt (relative; the force at Dx = 0 against the cycle's peak); the largest factor whose changes all stay within TIMESTEP_TOLERANCE (the pull's events
+    judged against PERTURBED's change, their own sensitivity, when that is larger)."""
+    import glob
+    rows = {}
+    for path in glob.glob(os.path.join(root(outdir, quick), "**", "timestep-x*.json"), recursive=True):
+        with open(path) as f:
+            j = json.load(f)
+        factor = j["dt_factor"]
+        if factor not in factors:
+            continue
+        row = rows.setdefault(factor, {"factor": factor, "dt": j["dt"]})
+        kind = "pull" if "first_gap_Dx" in j else j["mode"]
+        if kind == "pull":
+            row.update(pull_max_tension=j["max_tension"], pull_max_tension_Dx=j["max_tension_Dx"],
+                       first_gap_Dx=j["first_gap_Dx"], last_contact_Dx=j["last_contact_Dx"])
+        else:
+            row.update({f"{kind}_peak": j["peaks"][0], f"{kind}_F_at_Dx0": j["final_F"]})  # the cycle ends at Dx = 0
+        row[f"{kind}_energy_residual"] = j["energy_balance"]["residual_over_gross"]
+        row[f"{kind}_ms_per_step"] = j["ms_per_step"]
+    keys = ("tension_peak", "tension_F_at_Dx0", "compression_peak", "compression_F_at_Dx0", "pull_max_tension",
+            "first_gap_Dx", "last_contact_Dx")
+    ref = rows.get(1.0, {})
+
+    def change(row, k):
+        # The force back at Dx = 0 is small beside the peak: its change is measured against the peak.
+        scale = ref.get(k.replace("F_at_Dx0", "peak"))
+        return abs(row[k] - ref[k]) / abs(scale) if k.endswith("F_at_Dx0") else abs(row[k] / ref[k] - 1)
+
+    for row in rows.values():
+        row["change_vs_1dt"] = {k: change(row, k) for k in keys if row.get(k) is not None and ref.get(k) not in (None, 0)}
+    sensitivity = rows.get(PERTURBED, {}).get("change_vs_1dt", {})
+    accepted = [f for f in sorted(rows) if f in TIMESTEP_FACTORS and rows[f]["change_vs_1dt"]
+                and all(c <= max(TIMESTEP_TOLERANCE, sensitivity.get(k, 0)) for k, c in rows[f]["change_vs_1dt"].items())
+                and len(rows[f]["change_vs_1dt"]) == len(ref.get("change_vs_1dt", {}))]
+    out = {"tolerance": TIMESTEP_TOLERANCE, "perturbed_factor": PERTURBED, "pull_until": TIMESTEP_PULL_UNTIL,
+           "rows": [rows[f] for f in sorted(rows)], "rupture_sensitivity": sensitivity,
+           "largest_accepted_factor": max(accepted) if accepted else None}
     with _out.Bundle(os.path.join(root(outdir, quick), "timestep")) as b:
         b.write_json("timestep.json", out)
     return out
+
+
+def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,), runs=TIMESTEP_RUNS, progress=True):
+    """The runs of the study for these factors and runs (complete ones are read back), then the
+    table of every complete run (timestep_table)."""
+    for factor in factors:
+        for run in runs:
+            timestep_run(outdir, run, factor, quick, progress)
+    return timestep_table(outdir, quick)
 
 
 def drag_share(outdir, quick=False, amplitude=0.2, period=FAST, progress=True):
@@ -352,22 +422,27 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
     plt.close(fig)
 
 
-def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX):
+def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX, tag="fig17", dt_factor=1.0,
+         energy=False, check_every=10):
     """Fig. 17: monotonic tension to Dx = until, each wall moving out at ``speed`` [mm/us], with
     PNG and VTK snapshots at dx_marks (one frame for all); records where the first crack is
     visible from the front face (snapshots.visible_gap >= GAP_AREA d0^2), where one first sees
     through the sample, where the last contact chain between the walls breaks, and the force
     after that (no drag acts on a detached half moving as a body: it must vanish). Under
-    yade.mpy (--mpi) the same force rows, without the events and snapshots."""
+    yade.mpy (--mpi) the same force rows, without the events and snapshots. ``tag`` names the
+    bundle; ``dt_factor`` scales the time step; ``energy`` adds the run's energy balance."""
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress and is_master())
-    tag = "fig17"
+    O.dt *= dt_factor
     test, f0 = _test(progress)
+    if energy:
+        test.track_energy()
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag)) if is_master() else None
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
               "gap_area": []}
-    check_every = 10  # records between the (costly) gap and connectivity checks
+    # check_every: records (each 100 campaign steps, the same Dx at any dt_factor) between the
+    # (costly) gap and connectivity checks, their resolution in Dx
 
     def hook(t, row):
         dx = row[1]
@@ -393,7 +468,8 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         win = _snap.window(margin=1.0, stretch=0.5 * until)
     t0 = time.time()
     try:
-        rows = test.pull(speed, until=until, on_record=hook if _MPY is None else None)
+        rows = test.pull(speed, until=until, every=max(1, int(round(100 / dt_factor))),
+                         on_record=hook if _MPY is None else None)
     except BaseException:
         if bundle is not None:
             bundle.discard()
@@ -411,7 +487,10 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                    rms_force_after_last_contact=(sum(f * f for f in after) / len(after)) ** 0.5 if after else None,
                    gap_criterion=f"a crack of >= {GAP_AREA:g} d0^2 seen >= 3 d0 behind the front face, "
                                  "in the central 60 % of the height, between the walls",
-                   mpi_ranks=_MPY.numThreads if _MPY else 1)
+                   mpi_ranks=_MPY.numThreads if _MPY else 1, dt=O.dt, dt_factor=dt_factor,
+                   steps=O.iter - rows[0][0], ms_per_step=1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]))
+    if energy:
+        summary["energy_balance"] = test.energy_balance()
     if _MPY is not None:
         summary["events_note"] = ("under yade.mpy the crack events and snapshots are not taken (they need every "
                                   "particle on one process): run the pull without --mpi for them")
@@ -466,6 +545,9 @@ def parse_args(figure, argv):
     p.add_argument("--no-run", action="store_true", help="rates: only the periods whose runs are complete")
     p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
     p.add_argument("--until", type=float, default=9.0, help="fig17: pull until Dx = UNTIL (in d0)")
+    p.add_argument("--factors", default=None,
+                   help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and 1.000001)")
+    p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
     p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
@@ -491,6 +573,10 @@ def parse_args(figure, argv):
     amps = _numbers(p, "--amplitudes", a.amplitudes, 0, 0.5 * side if mode == "compression" else side,
                     f"a {mode} amplitude in d0 (the sample is about {side:.3g} d0 long)") if a.amplitudes else None
     slow = _numbers(p, "--slow-amplitudes", a.slow_amplitudes, 0, side, "an amplitude in d0") if a.slow_amplitudes else None
+    a.factors = _numbers(p, "--factors", a.factors, 0, 10, "a multiple of the campaign's time step") if a.factors else None
+    a.runs = tuple(a.runs.split(",")) if a.runs else None
+    if a.runs and not set(a.runs) <= set(TIMESTEP_RUNS):
+        p.error(f"--runs {','.join(a.runs)}: each must be one of {', '.join(TIMESTEP_RUNS)}")
     periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
     _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull in d0")
@@ -523,7 +609,8 @@ def _main(figure, a, amps, slow, periods):
     elif figure == "drag":
         out = drag_share(a.out, a.quick)
     elif figure == "timestep":
-        out = timestep_check(a.out, a.quick)
+        out = timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,),
+                             runs=a.runs or TIMESTEP_RUNS)
     elif figure == "rates":
         out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods, run_missing=not a.no_run)
     elif figure in ("fig16", "fig18"):

@@ -112,6 +112,30 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
             "stats": _tablet.stats()}
 
 
+class _WallWork:
+    """The work the loading walls do on the sample, added up every step by a PyRunner after the
+    NewtonIntegrator (this step's force on each wall times the velocity it moved with) [nJ]; also
+    the gross work (absolute values), the scale of the energy balance."""
+
+    def __init__(self, walls):
+        self.walls, self.work, self.gross, self.e0 = walls, 0.0, 0.0, None
+
+    def __call__(self):
+        if self.e0 is None:  # the stored energies of existing contacts enter O.energy on the first tracked step
+            self.e0 = _energy_total()
+            return
+        for i in self.walls:
+            dw = -O.forces.f(i).dot(O.bodies[i].state.vel) * O.dt
+            self.work += dw
+            self.gross += abs(dw)
+
+
+def _energy_total():
+    """O.energy without YADE's 'kinetic' (which counts the moving walls too) plus the particles'
+    kinetic energy [nJ]."""
+    return sum(O.energy[k] for k in O.energy.keys() if k != "kinetic") + _tablet.kinetic_energy()
+
+
 class Test:
     """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined')).
     ``run(n)`` advances the scene by n steps (default ``O.run(n, True)``; under yade.mpy
@@ -130,6 +154,20 @@ class Test:
         self.t_cross = crossing_time()
         self.rows = []  # (iter, Dx, F/(kp d0))
         self._motion = []
+
+    def track_energy(self):
+        """Tracks the energy from now on: O.energy, and the walls' work on the sample every step;
+        energy_balance() compares them."""
+        O.trackEnergy = True
+        self._work = _WallWork((self.left, self.right))
+        O.engines = O.engines + [_scene.py_runner(self._work, 1, "wallwork")]
+
+    def energy_balance(self):
+        """From the first step after track_energy(): the walls' work W, the change of kinetic + stored + dissipated
+        energy dE, and (dE - W) against the walls' gross work (the sum of |work| per step) [nJ]."""
+        d_e = _energy_total() - self._work.e0
+        return {"wall_work": self._work.work, "energy_change": d_e, "gross_wall_work": self._work.gross,
+                "residual_over_gross": (d_e - self._work.work) / self._work.gross if self._work.gross else None}
 
     def length(self):
         lo, hi = _tablet.inner_box()

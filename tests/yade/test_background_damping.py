@@ -10,7 +10,7 @@
 import math
 
 import numpy as np
-from yade import O, Vector3, utils
+from yade import O, Matrix3, Vector3, utils
 from yade import wrapper as w
 from harness import check, finish
 
@@ -22,9 +22,10 @@ MAT = dict(density=2.0, k1=2.5, kp=5.0, kc=1.0, phiF=0.05, gammaN=5e-5, friction
            kr=0.5, gammaR=5e-6, muR=0.2, ko=0.5, gammaO=5e-6, muO=0.2)
 
 
-def scene(positions, velocities, spins, reference, gamma_b, walls=(), mat=MAT):
-    """Spheres (and boxes given as (centre, extents, velocity)), one step without NewtonIntegrator:
-    the bodies stay put and O.forces holds the contact forces plus the drag."""
+def scene(positions, velocities, spins, reference, gamma_b, walls=(), mat=MAT, steps=1, sum_in_law=True):
+    """Spheres (and boxes given as (centre, extents, velocity)), ``steps`` steps without
+    NewtonIntegrator: the bodies stay put and O.forces holds the contact forces plus the drag (from
+    the second step on, the drag's reference comes from the law's sums unless sum_in_law is off)."""
     O.reset()
     O.materials.append(w.MesoMat(**mat))
     ids = O.bodies.append([utils.sphere(tuple(x), R) for x in positions])
@@ -39,17 +40,30 @@ def scene(positions, velocities, spins, reference, gamma_b, walls=(), mat=MAT):
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()], verletDist=0),
                  w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
                                    [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
-                 w.MesoBackgroundDamping(gammaB=gamma_b, gammaBR=GBR if gamma_b else 0.0, reference=reference)]
+                 w.MesoBackgroundDamping(gammaB=gamma_b, gammaBR=GBR if gamma_b else 0.0, reference=reference,
+                                         sumInLaw=sum_in_law, label="drag")]
     O.dt = 1e-5
+    for _ in range(steps - 1):
+        O.step()
+    # Without NewtonIntegrator YADE's forces add up over the steps: keep the last step's share.
+    before = {b: (O.forces.f(b), O.forces.t(b)) for b in ids} if steps > 1 else {}
     O.step()
+    for b, (f, t) in before.items():
+        O.forces.addF(b, -f)
+        O.forces.addT(b, -t)
     return ids, wall_ids
 
 
-def drag(positions, velocities, spins, reference, walls=()):
-    """The drag force and torque on each sphere: the step with the drag minus the same step without."""
+def drag(positions, velocities, spins, reference, walls=(), sum_in_law=True):
+    """The drag force and torque on each sphere at the second step (the first whose reference the
+    law can gather): the steps with the drag minus the same steps without."""
     out = []
     for g in (GB, 0.0):
-        ids, _ = scene(positions, velocities, spins, reference, g, walls)
+        ids, _ = scene(positions, velocities, spins, reference, g, walls, steps=2, sum_in_law=sum_in_law)
+        if g and reference == "contacts":
+            used = O.engines[-1].lawSumSteps
+            check(used == (1 if sum_in_law else 0), f"the reference came from the law's sums in {used} of 2 steps "
+                  f"(sumInLaw={sum_in_law}: the first step sums in the engine)")
         out.append((np.array([list(O.forces.f(i)) for i in ids]), np.array([list(O.forces.t(i)) for i in ids])))
     return out[0][0] - out[1][0], out[0][1] - out[1][1]
 
@@ -87,6 +101,12 @@ for i in range(len(pos)):
                 np.abs(t[i] + GBR * R * R * (spin2[i] - w_ref)).max() / (GBR * R * R * 50))
 check(worst <= 1e-12, f"every sphere: drag = -gamma (v - v_ref) of its contacts' rigid motion (worst {worst:.1e})")
 
+# The law's sums against the engine's own pass (sumInLaw=False): the same arithmetic in the same
+# order on one thread, so the drag is bitwise the same.
+f_own, t_own = drag(pos, vel2, spin2, "contacts", sum_in_law=False)
+check(np.array_equal(f, f_own) and np.array_equal(t, t_own),
+      f"law's sums and the engine's pass give bitwise the same drag (largest difference {np.abs(f - f_own).max():.1e})")
+
 # A layer of spheres resting on a wall and moving with it, and one sphere on its own.
 layer = np.array([(i, 0.0, k) for i in range(3) for k in range(3)]) * 1.98 * R + np.array([0, R * 0.99, 0])
 U = np.array([0.1, 0.0, -0.05])
@@ -97,6 +117,51 @@ f, t = drag(np.vstack([layer, free]), np.vstack([np.tile(U, (9, 1)), [[0.2, 0.1,
 check(np.abs(f[:9]).max() <= 1e-12 * GB * 0.1 and np.abs(t[:9]).max() <= 1e-12 * GBR * R * R,
       f"layer moving with its wall: no drag (|F| <= {np.abs(f[:9]).max():.1e})")
 check(np.abs(f[9]).max() == 0 and np.abs(t[9]).max() == 0, "a sphere without contacts: no drag")
+f_own, t_own = drag(np.vstack([layer, free]), np.vstack([np.tile(U, (9, 1)), [[0.2, 0.1, 0.3]]]), np.zeros((10, 3)), "contacts",
+                    walls=(wall,), sum_in_law=False)
+check(np.array_equal(f, f_own) and np.array_equal(t, t_own), "with a wall: law's sums and the engine's pass bitwise the same")
+
+# A periodic simple-cubic lattice (4^3, spacing 1.98 R) moving affinely with the cell under a
+# velocity gradient: every sphere sees its six neighbours symmetrically, those across the
+# boundary as images (velocity shifted by the cell), so the contacts' rigid motion at its centre
+# is its own affine velocity and no sphere feels a drag. Summing the raw positions and velocities
+# of the neighbours across the boundary (the error this checks) gives the boundary layer a drag
+# of order gamma_b |grad v| L.
+def periodic_drag(sum_in_law):
+    out = []
+    for g in (GB, 0.0):
+        O.reset()
+        O.periodic = True
+        n, a = 4, 1.98 * R
+        O.cell.setBox(n * a, n * a, n * a)
+        grad = np.array([[0.0, 2.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, -1.0]])  # 1/us
+        O.cell.velGrad = Matrix3(*grad.flatten())
+        O.materials.append(w.MesoMat(**MAT))
+        xs = [np.array((i + 0.5, j + 0.5, k + 0.5)) * a for i in range(n) for j in range(n) for k in range(n)]
+        ids = O.bodies.append([utils.sphere(tuple(x), R) for x in xs])  # at rest: Newton's first step adds grad x
+        O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()], verletDist=0),
+                     w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                       [w.Law2_ScGeom_MesoPhys_Meso()]),
+                     w.MesoBackgroundDamping(gammaB=g, gammaBR=GBR if g else 0.0, reference="contacts", sumInLaw=sum_in_law),
+                     w.NewtonIntegrator(damping=0)]  # it also updates the cell's velocity gradient, which the images' velocity uses
+        O.dt = 1e-5
+        O.step()
+        O.step()
+        # velocities lead positions by half a step in the leapfrog: grad v dt/2 apart from grad x
+        affine = max((O.bodies[b].state.vel - O.cell.velGrad * O.bodies[b].state.pos).norm() for b in ids)
+        half = np.abs(grad).max() * max(O.bodies[b].state.vel.norm() for b in ids) * O.dt
+        if g:
+            check(affine <= half, f"periodic lattice: every sphere at its affine velocity (within {affine:.1e} <= {half:.1e})")
+            check(all(len(O.bodies[b].intrs()) == 6 for b in ids), "periodic lattice: six contacts per sphere")
+        out.append(np.array([list(O.forces.f(b)) for b in ids]))
+    return out[0] - out[1], GB * np.abs(grad).max() * n * a
+
+
+for law in (True, False):
+    f, scale = periodic_drag(law)
+    check(np.abs(f).max() <= 1e-12 * scale, f"periodic lattice moving with the cell (sumInLaw={law}): no drag "
+          f"(|F| <= {np.abs(f).max():.1e}; gamma_b |grad v| L = {scale:.1e})")
+
 
 # Bad attributes are rejected, naming them: in the constructor and on assignment (where the
 # engine keeps its previous value).
