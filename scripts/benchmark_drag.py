@@ -80,8 +80,8 @@ def measure(name):
             O.run(a.steps, True)
             per[v].append((time.perf_counter() - t0) / a.steps * 1e3)
     ratios = {v: statistics.median(per[v][k] / per["none"][k] for k in range(a.rounds)) for v in VARIANTS}
-    shares = {}
-    for v in VARIANTS:  # engine timing: the drag's share of the step
+    shares, engines = {}, {}
+    for v in VARIANTS:  # engine timing: the drag's share of the step, and every engine's
         set_variant(drag, v)
         O.run(5, True)
         O.timingEnabled = True
@@ -90,15 +90,19 @@ def measure(name):
         O.run(a.steps, True)
         total = sum(e.execTime for e in O.engines)
         shares[v] = drag.execTime / total if total else None
+        engines[v] = {f"{k}:{type(e).__name__}": e.execTime * 1e-6 / a.steps for k, e in enumerate(O.engines)}  # ms per step
         O.timingEnabled = False
     used = drag.lawSumSteps
     rep = {"scene": name, "bodies": len(O.bodies), "contacts": contacts, "ms_per_step_median": {v: statistics.median(per[v]) for v in VARIANTS},
            "ratio_to_none_median": ratios, "drag_share_of_step": shares, "law_sum_steps": used,
+           "engine_ms_per_step": engines, "ns_per_contact_and_step_median": {v: statistics.median(per[v]) * 1e6 / contacts for v in VARIANTS},
            "rounds": a.rounds, "steps_per_turn": a.steps}
     print(f"{name}: {len(O.bodies)} bodies, {contacts} contacts", flush=True)
     for v in VARIANTS:
         print(f"  {v:7s} {rep['ms_per_step_median'][v]:7.3f} ms/step  x{ratios[v]:.3f} of none  drag share "
               + (f"{shares[v] * 100:5.1f} %" if shares[v] is not None else "-"), flush=True)
+    for v in ("engine", "law"):
+        print(f"  by engine ({v}): " + ", ".join(f"{k.split(':')[1]} {t:.3f}" for k, t in engines[v].items()) + " ms/step", flush=True)
     return rep
 
 

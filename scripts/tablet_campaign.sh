@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The full Appendix F campaign on a 2-core machine: independent single-threaded jobs, two at a
 # time (faster here than -j2 jobs), longest first; then the figures from the runs' files and
-# the data and figures copied into docs/tablet/:
+# the data and figures copied into docs/tablet/ (the time-step study is a campaign of its own:
+# batch/tablet-timestep.table):
 #   bash scripts/tablet_campaign.sh [YADE] [OUT]
 # YADE defaults to the build-tree launcher, OUT to results/tablet. Runs whose CSV and JSON are
 # in OUT already are read back, not repeated; the cached states are made once (stages.ensure).
@@ -22,7 +23,6 @@ fig18.py --amplitudes 0.1
 fig18.py --amplitudes 0.3
 fig17.py
 fig19.py
-timestep.py
 drag.py
 prepare.py --material table2 --kc-over-kp 0 --out $OUT/kc-table2-0
 prepare.py --material appendixF --kc-over-kp 0.2 --out $OUT/kc-appendixF-0.2

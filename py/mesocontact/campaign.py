@@ -732,3 +732,64 @@ def report(outdir, docsdir):
                           "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in _tablet.WALLS) + ",Lx,Ly,Lz\n"
                           + "".join(",".join(str(x) for x in r) + "\n" for r in rows))
     return rows
+
+
+def _job_steps(figure, cells, t_cross, dt):
+    """Steps of one campaign job (a table line's figure and cells) at time step dt."""
+    import ast
+
+    def numbers(key, default):
+        v = cells.get(key)
+        v = ast.literal_eval(v) if v not in (None, "None") else None
+        return tuple(float(x) for x in str(v).split(",")) if v is not None else default
+
+    cycle = lambda period: int(round(period * t_cross / dt))  # noqa: E731
+    if figure in ("fig16", "fig18"):
+        mode = "tension" if figure == "fig16" else "compression"
+        amps = numbers("amplitudes", TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES)
+        return sum(FULL["cycles"] * cycle(p) for _ in amps for p in numbers("periods", PERIODS[mode]))
+    if figure == "fig19":
+        return FULL["cycles"] * cycle(numbers("periods", PERIODS["compression"])[0])
+    if figure == "fig17":
+        until, speed = numbers("until", (9.0,))[0], numbers("speed", (PULL_SPEED,))[0]
+        return int(until * _tablet.D0 / (2 * speed * dt))
+    if figure == "drag":
+        return 3 * cycle(FAST)
+    if figure == "rates":
+        return sum(FULL["cycles"] * cycle(p) for p in numbers("periods", RATE_PERIODS)) * 2
+    return 0  # prepare and the rest: minutes, not counted
+
+
+def plan(table, outdir, lanes=2, progress=True):
+    """The plan of a campaign table before it runs: each job's steps at the campaign's time step,
+    the ms per step measured on the unconfined start (300 steps, walls at rest), the estimated
+    hours of each job, their sum (single-job time) and the wall time on ``lanes`` lanes taking
+    the longest job first. Prints it; returns it."""
+    prepare(outdir, False, progress)
+    test = _uni.Test(progress=False)
+    O.run(20, True)
+    t0, n = time.time(), 300
+    O.run(n, True)
+    ms = 1e3 * (time.time() - t0) / n
+    jobs = []
+    with open(table) as f:
+        lines = [ln.split() for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+    head = lines[0]
+    for cells in lines[1:]:
+        c = dict(zip(head, cells))
+        figure = c["figure"].strip("'\"")
+        steps = _job_steps(figure, c, test.t_cross, O.dt)
+        jobs.append({"job": c["description"], "figure": figure, "steps": steps, "hours": steps * ms / 3.6e6})
+    finish = [0.0] * lanes
+    for j in sorted(jobs, key=lambda j: -j["hours"]):
+        k = finish.index(min(finish))
+        finish[k] += j["hours"]
+    out = {"table": table, "dt": O.dt, "ms_per_step": ms, "jobs": jobs, "single_job_hours": sum(j["hours"] for j in jobs),
+           "lanes": lanes, "wall_hours_estimate": max(finish)}
+    if progress:
+        for j in jobs:
+            print(f"  {j['job']:20s} {j['figure']:8s} {j['steps']:>10,d} steps  {j['hours']:5.2f} h", flush=True)
+        print(f"plan: {len(jobs)} jobs, {sum(j['steps'] for j in jobs):,d} steps at {ms:.2f} ms/step (measured): "
+              f"{out['single_job_hours']:.2f} h of single-job time, about {out['wall_hours_estimate']:.2f} h on {lanes} lanes",
+              flush=True)
+    return out

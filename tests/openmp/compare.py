@@ -14,7 +14,8 @@ launcher = sys.argv[1]
 scene = os.path.join(os.path.dirname(os.path.abspath(__file__)), "scene.py")
 reports = {}
 with tempfile.TemporaryDirectory() as tmp:
-    for run, (threads, extra) in {1: (1, []), 2: (2, []), "norot": (1, ["norot"])}.items():
+    for run, (threads, extra) in {1: (1, []), 2: (2, []), "norot": (1, ["norot"]), "drag1": (1, ["drag"]),
+                                  "drag2": (2, ["drag"])}.items():
         out = os.path.join(tmp, f"{run}.json")
         subprocess.run([launcher, f"-j{threads}", "-n", "-x", scene, out] + extra, check=True, stdout=subprocess.DEVNULL)
         with open(out) as f:
@@ -28,6 +29,20 @@ if not same:
     failures.append("results depend on ScGeom6D's relative rotations")
 if r2["threads"] != 2:
     failures.append(f"the -j2 run used {r2['threads']} threads")
+# The drag on free spheres (3 steps; the blocked ones above get none): its reference gathered by
+# the law on both threads, summed per thread, gives the -j1 forces to rounding.
+d1, d2 = reports["drag1"], reports["drag2"]
+drag_energy = d1["energy"].get("mesoBackground", 0)
+print(f"drag on free spheres: the law's sums used in {d1['law_sum_steps']} (-j1) and {d2['law_sum_steps']} (-j2) of 3 steps; "
+      f"mesoBackground {drag_energy:.3e}", flush=True)
+if not (d1["law_sum_steps"] == d2["law_sum_steps"] == 2 and drag_energy > 0 and d2["threads"] == 2):
+    failures.append("the drag did not act, or not from the law's sums, in the free run")
+for part, name in ((slice(0, 3), "forces"), (slice(3, 6), "torques")):
+    scale = max(max(abs(x) for x in f[part]) for f in d1["forces"])
+    diff = max(max(abs(a - b) for a, b in zip(f[part], g[part])) for f, g in zip(d1["forces"], d2["forces"]))
+    print(f"drag run {name}: max |(-j2) - (-j1)| = {diff / scale:.1e} of the largest", flush=True)
+    if not diff <= 1e-13 * scale:
+        failures.append(f"drag run {name} differ by {diff / scale:.1e} of the largest")
 if r1["contacts"] != r2["contacts"]:
     differ = [k for k in r1["contacts"] if r1["contacts"][k] != r2["contacts"].get(k)]
     failures.append(f"per-contact state differs in {len(differ)} of {len(r1['contacts'])} contacts (e.g. {differ[:3]})")

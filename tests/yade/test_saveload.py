@@ -162,4 +162,22 @@ for reference in ("lab", "contacts"):
           f"(mesoBackground {direct.get('mesoBackground', 0):.9e} / {resumed.get('mesoBackground', 0):.9e})", flush=True)
     if not ok:
         failures.append(f"background drag energy after load ({reference})")
+# A file written by the plugin of commit 798c4df, before MesoBackgroundDamping had sumInLaw (a new
+# attribute must not shift the binary layout: such a file failed with "vector::_M_default_append"
+# when sumInLaw was saved): it loads with its values and goes on, the law gathering the sums.
+import json
+from yade import wrapper as _w
+HERE = os.path.dirname(os.path.abspath(__import__("harness").__file__))
+with open(os.path.join(HERE, "golden", "drag_v0.json")) as f:
+    v0 = json.load(f)
+O.load(os.path.join(HERE, "golden", "drag_v0.yade.gz"))
+drag = [e for e in O.engines if isinstance(e, _w.MesoBackgroundDamping)][0]
+kept = (drag.gammaB, drag.gammaBR, drag.reference, len(O.bodies), O.iter) == \
+    (v0["gammaB"], v0["gammaBR"], v0["reference"], v0["bodies"], v0["iter"]) and O.energy["mesoBackground"] == v0["mesoBackground"]
+O.run(100, True)
+ok = kept and drag.sumInLaw and drag.lawSumSteps == 99 and O.energy["mesoBackground"] > v0["mesoBackground"]
+print(("ok   " if ok else "FAIL ") + f"drag       a file of the first layout (798c4df) loads with its values ({kept}) and runs on, "
+      f"the law gathering the sums in {drag.lawSumSteps} of 100 steps", flush=True)
+if not ok:
+    failures.append("drag file of the first layout")
 finish()

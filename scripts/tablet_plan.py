@@ -1,0 +1,15 @@
+# The plan of a tablet campaign table before it runs: jobs, steps, hours from a measured ms per step.
+#   yade -j1 -n -x scripts/tablet_plan.py [TABLE] [--out DIR] [--lanes N]
+import argparse
+import sys
+
+from mesocontact import campaign
+
+p = argparse.ArgumentParser(prog="tablet_plan.py")
+p.add_argument("table", nargs="?", default="batch/tablet-campaign.table")
+p.add_argument("--out", default="results/tablet")
+p.add_argument("--lanes", type=int, default=2)
+a = p.parse_args(sys.argv[1:])
+if a.lanes < 1:
+    p.error(f"--lanes {a.lanes} is invalid: at least 1")
+campaign.plan(a.table, a.out, a.lanes)
