@@ -317,7 +317,29 @@ def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,))
            "largest_accepted_factor": max(accepted) if accepted else None}
     with _out.Bundle(os.path.join(root(outdir, quick), "timestep")) as b:
         b.write_json("timestep.json", out)
+        b.write_text("timestep.md", timestep_markdown(out))
     return out
+
+
+def timestep_markdown(ts):
+    """The study's table (timestep.json) as Markdown: one row per factor, changes against 1 dt in %."""
+    cols = (("tension_peak", "tension peak", ".5f"), ("tension_F_at_Dx0", "tension F at Dx=0", "+.5f"),
+            ("compression_peak", "compression peak", ".5f"), ("compression_F_at_Dx0", "compression F at Dx=0", "+.5f"),
+            ("pull_max_tension", "pull peak", ".5f"), ("first_gap_Dx", "first gap Dx", ".3f"),
+            ("last_contact_Dx", "last chain Dx", ".3f"))
+    out = ["| dt / dt_campaign | " + " | ".join(c[1] for c in cols) + " | energy residual (t, c, pull) | ms/step (t, c, pull) |",
+           "|---" * (len(cols) + 3) + "|"]
+    for r in ts["rows"]:
+        cells = []
+        for key, _, fmt in cols:
+            v, ch = r.get(key), r.get("change_vs_1dt", {}).get(key)
+            cells.append("—" if v is None else f"{v:{fmt}}" + ("" if ch is None or r["factor"] == 1.0 else f" ({100 * ch:.2f} %)"))
+        res = ", ".join("—" if r.get(f"{m}_energy_residual") is None else f"{r[f'{m}_energy_residual']:.1e}"
+                        for m in ("tension", "compression", "pull"))
+        ms = ", ".join("—" if r.get(f"{m}_ms_per_step") is None else f"{r[f'{m}_ms_per_step']:.2f}"
+                       for m in ("tension", "compression", "pull"))
+        out.append(f"| {r['factor']:g} | " + " | ".join(cells) + f" | {res} | {ms} |")
+    return "\n".join(out) + "\n"
 
 
 def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,), runs=TIMESTEP_RUNS, progress=True):

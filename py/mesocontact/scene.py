@@ -97,13 +97,12 @@ def time_step(safety=0.1):
     for b in O.bodies:
         if b is None or not isinstance(b.material, w.MesoMat):
             continue
-        if isinstance(b.shape, w.Sphere):
-            if b.isClumpMember or b.dynamic:
-                r = b.shape.radius
-                count[b.material.id] = count.get(b.material.id, 0) + 1
-                if b.material.id not in smallest or r < smallest[b.material.id][1]:
-                    smallest[b.material.id] = (b.material, r)
-        else:
+        if isinstance(b.shape, w.Sphere) and (b.isClumpMember or b.dynamic):
+            r = b.shape.radius
+            count[b.material.id] = count.get(b.material.id, 0) + 1
+            if b.material.id not in smallest or r < smallest[b.material.id][1]:
+                smallest[b.material.id] = (b.material, r)
+        else:  # walls, boxes, facets and fixed spheres: partners that do not move back (infinite mass)
             walls[b.material.id] = b.material
     if not smallest:
         raise ValueError("time_step: O.bodies holds no dynamic MesoMat sphere")

@@ -6,7 +6,9 @@
 # leapfrog's 1/(1 - 0.95^2) = 10.3 of the kick: the velocities are half-step ones), at 1.1 it grows
 # without bound. And the case YADE's GlobalStiffnessTimeStepper gets wrong: it sees kn and ks but
 # not the rolling and torsion springs, so a spinning sphere with kr = ko = 100 kp blows up at its
-# step and stays bounded at scene.time_step.
+# step and stays bounded at scene.time_step. A fixed sphere counts as a wall (it does not move back).
+import math
+
 from yade import O, utils
 from yade import wrapper as w
 from mesocontact import params, scene
@@ -89,6 +91,12 @@ O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff), utils.box((0,
 want = ip2.stableStep(stiff, wall, 0.5 * R, 0.0)
 check(abs(scene.time_step(safety=1.0) - want) < 1e-15 * want and want > ip2.stableStep(stiff, stiff, 0.5 * R, 0.5 * R),
       "one sphere on a wall: the sphere-wall bound", f"{scene.time_step(safety=1.0):.4e} s")
+scene.reset()  # a sphere against a fixed sphere (no other partner): the fixed one counts as a wall (it does not move back)
+O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff), utils.sphere((0, 0, -2 * R), R, material=wall, fixed=True)])
+want = ip2.stableStep(stiff, wall, 0.5 * R, 0.0)
+got = scene.time_step(safety=1.0)
+check(math.isfinite(got) and abs(got - want) < 1e-15 * want, "a sphere against a fixed sphere: the sphere-wall bound, not inf",
+      f"{got:.4e} s")
 for bad, says in ((0.0, "safety"), (1.5, "safety")):
     try:
         scene.time_step(safety=bad)
