@@ -255,7 +255,7 @@ TIMESTEP_TOLERANCE = 0.005  # the largest change against 1 dt accepted for a qua
 def timestep_run(outdir, run, factor, quick=False, progress=True):
     """One run of the time-step study (run: 'tension', 'compression' or 'pull'), with energy
     balance; read back when complete. Returns its JSON description."""
-    tag = f"timestep-x{factor:g}"
+    tag = f"timestep-x{factor:.10g}"  # 1.000001 too
     if run == "pull":
         where = os.path.join(root(outdir, quick), f"{tag}-pull")
         if _out.complete(where):

@@ -37,21 +37,23 @@ print(f"drag on free spheres: the law's sums used in {d1['law_sum_steps']} (-j1)
       f"mesoBackground {drag_energy:.3e}", flush=True)
 if not (d1["law_sum_steps"] == d2["law_sum_steps"] == 2 and drag_energy > 0 and d2["threads"] == 2):
     failures.append("the drag did not act, or not from the law's sums, in the free run")
-for part, name in ((slice(0, 3), "forces"), (slice(3, 6), "torques")):
-    scale = max(max(abs(x) for x in f[part]) for f in d1["forces"])
-    diff = max(max(abs(a - b) for a, b in zip(f[part], g[part])) for f, g in zip(d1["forces"], d2["forces"]))
-    print(f"drag run {name}: max |(-j2) - (-j1)| = {diff / scale:.1e} of the largest", flush=True)
-    if not diff <= 1e-13 * scale:
-        failures.append(f"drag run {name} differ by {diff / scale:.1e} of the largest")
+
+
+def compare_bodies(a, b, label):
+    """Forces and torques on the bodies of two runs: equal to summation order (1e-13 of the largest)."""
+    for part, name in ((slice(0, 3), "forces"), (slice(3, 6), "torques")):
+        scale = max(max(abs(x) for x in f[part]) for f in a["forces"])
+        diff = max(max(abs(x - y) for x, y in zip(f[part], g[part])) for f, g in zip(a["forces"], b["forces"]))
+        print(f"{label}{name}: max |(-j2) - (-j1)| = {diff / scale:.1e} of the largest", flush=True)
+        if not diff <= 1e-13 * scale:
+            failures.append(f"{label}{name} differ by {diff / scale:.1e} of the largest")
+
+
+compare_bodies(d1, d2, "drag run ")
 if r1["contacts"] != r2["contacts"]:
     differ = [k for k in r1["contacts"] if r1["contacts"][k] != r2["contacts"].get(k)]
     failures.append(f"per-contact state differs in {len(differ)} of {len(r1['contacts'])} contacts (e.g. {differ[:3]})")
-for part, name in ((slice(0, 3), "forces"), (slice(3, 6), "torques")):
-    scale = max(max(abs(x) for x in f[part]) for f in r1["forces"])
-    diff = max(max(abs(a - b) for a, b in zip(f[part], g[part])) for f, g in zip(r1["forces"], r2["forces"]))
-    print(f"{name}: max |(-j2) - (-j1)| = {diff / scale:.1e} of the largest", flush=True)
-    if not diff <= 1e-13 * scale:
-        failures.append(f"{name} differ by {diff / scale:.1e} of the largest")
+compare_bodies(r1, r2, "")
 # Each energy term sums ~contacts x steps = 1.3e6 increments in an order that depends on the threads:
 # rounding may differ by ~1.3e6 x 1.1e-16 = 1.4e-10 of the summed magnitudes, which exceed a term by
 # up to a few times where its increments cancel (dissipation against storage): 1e-9 of the term
