@@ -65,6 +65,10 @@ PERIODS = {"tension": (480.0, 1920.0), "compression": (120.0, 480.0)}
 PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us]: the peak wall speed of 240 t_w cycles at Dx = 0.2, where the first pull's peak agrees within 2.2 % from 120 t_w on (Dx = 9 in about 1 040 000 steps)
 FAST, SLOW = PERIODS["compression"]
 GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
+# The campaign's time step per test, as a multiple of tablet.time_step (t_c/50), from the
+# time-step study (docs/tablet/timestep.md): the largest factor whose outcome stays within 0.5 %
+# of 1 dt, or within the spread of perturbed runs where that is larger.
+DT_FACTORS = {"tension": 1.0, "compression": 4.0, "pull": 1.0}
 
 
 def prepare(outdir, quick=False, progress=True, **tablet_kw):
@@ -119,12 +123,13 @@ def _test(progress):
     return test, f0
 
 
-def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None, dt_factor=1.0,
+def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None, dt_factor=None,
                energy=False):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle is read back, not
-    repeated (unless a hook must see the run). ``dt_factor`` scales the campaign's time step;
+    repeated (unless a hook must see the run). ``dt_factor`` scales tablet.time_step (default
+    DT_FACTORS[mode]);
     ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance) to the JSON.
     Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
@@ -135,6 +140,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     cfg = QUICK if quick else FULL
     t0 = time.time()
     prepare(outdir, quick, progress and is_master())
+    dt_factor = DT_FACTORS[mode] if dt_factor is None else dt_factor
     O.dt *= dt_factor
     bundle = _out.Bundle(where) if is_master() else None
     try:
@@ -281,8 +287,8 @@ def timestep_run(outdir, run, factor, quick=False, progress=True):
 def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE):
     """Gathers the study's complete runs into timestep.json: per factor the peaks, the force back
     at Dx = 0, the pull's events, the energy balance, the cost, and each quantity's change against
-    1 dt (relative; the force at Dx = 0 against the cycle's peak). For the cycles and for the pull
-    apart: the largest factor up to which every quantity stays within TIMESTEP_TOLERANCE, or
+    1 dt (relative; the force at Dx = 0 against the cycle's peak). For each test (tension,
+    compression, pull): the largest factor up to which every quantity stays within TIMESTEP_TOLERANCE, or
     within PERTURBED's change (the sample's own sensitivity) where that is larger."""
     import glob
     rows = {}
@@ -314,7 +320,7 @@ def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) 
         row["change_vs_1dt"] = {k: change(row, k) for k in keys if row.get(k) is not None and ref.get(k) not in (None, 0)}
     perturbed = [rows[f]["change_vs_1dt"] for f in (PERTURBED,) + PERTURBED_MORE if f in rows]
     sensitivity = {k: max(p[k] for p in perturbed if k in p) for k in keys if any(k in p for p in perturbed)}
-    groups = {"cycles": keys[:4], "pull": keys[4:]}
+    groups = {"tension": keys[:2], "compression": keys[2:4], "pull": keys[4:]}
 
     def accepted(group):
         # the largest factor up to which every factor has all the group's quantities within bounds
@@ -460,7 +466,7 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
     plt.close(fig)
 
 
-def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX, tag="fig17", dt_factor=1.0,
+def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX, tag="fig17", dt_factor=None,
          energy=False, check_every=10):
     """Fig. 17: monotonic tension to Dx = until, each wall moving out at ``speed`` [mm/us], with
     PNG and VTK snapshots at dx_marks (one frame for all); records where the first crack is
@@ -468,9 +474,11 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     through the sample, where the last contact chain between the walls breaks, and the force
     after that (no drag acts on a detached half moving as a body: it must vanish). Under
     yade.mpy (--mpi) the same force rows, without the events and snapshots. ``tag`` names the
-    bundle; ``dt_factor`` scales the time step; ``energy`` adds the run's energy balance."""
+    bundle; ``dt_factor`` scales tablet.time_step (default DT_FACTORS['pull']); ``energy`` adds
+    the run's energy balance."""
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress and is_master())
+    dt_factor = DT_FACTORS["pull"] if dt_factor is None else dt_factor
     O.dt *= dt_factor
     test, f0 = _test(progress)
     if energy:
@@ -772,8 +780,9 @@ def report(outdir, docsdir):
     return rows
 
 
-def _job_steps(figure, cells, t_cross, dt):
-    """Steps of one campaign job (a table line's figure and cells) at time step dt."""
+def _job_steps(figure, cells, t_cross, dt0):
+    """Steps of one campaign job (a table line's figure and cells), each test at its time step
+    (dt0 times DT_FACTORS)."""
     import ast
 
     def numbers(key, default):
@@ -781,20 +790,20 @@ def _job_steps(figure, cells, t_cross, dt):
         v = ast.literal_eval(v) if v not in (None, "None") else None
         return tuple(float(x) for x in str(v).split(",")) if v is not None else default
 
-    cycle = lambda period: int(round(period * t_cross / dt))  # noqa: E731
+    cycle = lambda period, mode: int(round(period * t_cross / (dt0 * DT_FACTORS[mode])))  # noqa: E731
     if figure in ("fig16", "fig18"):
         mode = "tension" if figure == "fig16" else "compression"
         amps = numbers("amplitudes", TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES)
-        return sum(FULL["cycles"] * cycle(p) for _ in amps for p in numbers("periods", PERIODS[mode]))
+        return sum(FULL["cycles"] * cycle(p, mode) for _ in amps for p in numbers("periods", PERIODS[mode]))
     if figure == "fig19":
-        return FULL["cycles"] * cycle(numbers("periods", PERIODS["compression"])[0])
+        return FULL["cycles"] * cycle(numbers("periods", PERIODS["compression"])[0], "compression")
     if figure == "fig17":
         until, speed = numbers("until", (9.0,))[0], numbers("speed", (PULL_SPEED,))[0]
-        return int(until * _tablet.D0 / (2 * speed * dt))
+        return int(until * _tablet.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
     if figure == "drag":
-        return 3 * cycle(FAST)
+        return 3 * int(round(FAST * t_cross / dt0))  # drag_share runs at the campaign's base step
     if figure == "rates":
-        return sum(FULL["cycles"] * cycle(p) for p in numbers("periods", RATE_PERIODS)) * 2
+        return sum(FULL["cycles"] * cycle(p, m) for p in numbers("periods", RATE_PERIODS) for m in _uni.MODES)
     return 0  # prepare and the rest: minutes, not counted
 
 

@@ -5,6 +5,7 @@
 # re-loading with positive slope, the pull's gap and break and a force-free detached half,
 # snapshots that are pictures of the sample; and the crack measures on known pictures.
 import glob
+import json
 import math
 import os
 import tempfile
@@ -208,5 +209,10 @@ check(set(rows) == {1.0, 2.0} and all(abs(rows[f][f"{m}_energy_residual"]) < 1e-
 check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12 and set(rows[2.0]["change_vs_1dt"]) ==
       {"tension_peak", "tension_F_at_Dx0", "compression_peak", "compression_F_at_Dx0"},
       f"time-step study: 2 dt against 1 dt {rows[2.0]['change_vs_1dt']}")
+
+# The campaign's time steps are those the committed study accepts (docs/tablet/timestep.json).
+with open(os.path.join(os.path.dirname(os.path.abspath(campaign.__file__)), "..", "..", "docs", "tablet", "timestep.json")) as f:
+    accepted = json.load(f)["largest_accepted_factor"]
+check(accepted == campaign.DT_FACTORS, f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
 
 finish()
