@@ -68,7 +68,7 @@ GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visi
 # The campaign's time step per test, as a multiple of tablet.time_step (t_c/50), from the
 # time-step study (docs/tablet/timestep.md): the largest factor whose outcome stays within 0.5 %
 # of 1 dt, or within the spread of perturbed runs where that is larger.
-DT_FACTORS = {"tension": 1.0, "compression": 4.0, "pull": 1.0}
+DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
 
 
 def prepare(outdir, quick=False, progress=True, **tablet_kw):
