@@ -253,7 +253,7 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
 # measures how much the rupture moves for a change far below any integration error.
 TIMESTEP_FACTORS = (1.0, 2.0, 3.0, 4.0)
 PERTURBED = 1.000001
-# More perturbed runs (tension only in the committed study): the spread among them all is the
+# More perturbed runs (tension and pull in the committed study): the spread among them all is the
 # sample's sensitivity; one run alone can be lucky.
 PERTURBED_MORE = (1.000002, 0.999999)
 TIMESTEP_RUNS = ("tension", "compression", "pull")
