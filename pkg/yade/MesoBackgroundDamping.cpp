@@ -78,11 +78,11 @@ void MesoBackgroundDamping::sumNeighbours()
 	}
 }
 
-std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> MesoBackgroundDamping::precedingLaws() const
+MesoBackgroundDamping::Laws MesoBackgroundDamping::precedingLaws() const
 {
 	// The laws run right before this engine, provided they are all meso laws: then every contact in
 	// overlap was visited by one of them, and nothing moved a body in between.
-	std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> laws;
+	Laws        laws;
 	const auto& engines = scene->engines;
 	for (size_t k = 1; k < engines.size(); ++k) {
 		if (engines[k].get() != this) continue;
@@ -98,12 +98,12 @@ std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>> MesoBackgroundDamping::preced
 	return {};
 }
 
-bool MesoBackgroundDamping::takeLawSums()
+bool MesoBackgroundDamping::takeLawSums(const Laws& laws)
 {
 	const long n = static_cast<long>(scene->bodies->size());
 	if (sums->step.load() != scene->iter || sums->perThread.empty() || static_cast<long>(sums->perThread[0].size()) != n) return false;
-	if (precedingLaws() != sumLaws) return false; // the engines changed since the last step
-	neighbours = sums->perThread[0];
+	if (laws != sumLaws) return false; // the engines changed since the last step
+	neighbours.swap(sums->perThread[0]); // zeroed again by prepareLawSums
 	for (size_t t = 1; t < sums->perThread.size(); ++t)
 		for (long id = 0; id < n; ++id) {
 			const Neighbours& s = sums->perThread[t][id];
@@ -117,9 +117,8 @@ bool MesoBackgroundDamping::takeLawSums()
 	return true;
 }
 
-void MesoBackgroundDamping::prepareLawSums(long n)
+void MesoBackgroundDamping::prepareLawSums(const Laws& laws, long n)
 {
-	auto laws = precedingLaws();
 	for (const auto& law : sumLaws) // handed to before, gone from the loop now: stop adding
 		if (std::find(laws.begin(), laws.end(), law) == laws.end()) law->neighbourSums.reset();
 	sumLaws = laws;
@@ -151,7 +150,8 @@ void MesoBackgroundDamping::action()
 		hasPrev.resize(n, 0);
 	}
 	const BodyContainer& bodies     = *scene->bodies;
-	const bool fromLaw  = relative && sumInLaw && takeLawSums();
+	const Laws laws     = relative && sumInLaw ? precedingLaws() : Laws();
+	const bool fromLaw  = relative && sumInLaw && takeLawSums(laws);
 	if (relative && !fromLaw) sumNeighbours();
 	if (fromLaw) ++lawSumSteps;
 	Real                 dissipated = 0;
@@ -192,7 +192,7 @@ void MesoBackgroundDamping::action()
 		if (rot > 0) scene->forces.addTorque(id, torque);
 	}
 	if (track) scene->energy->add(dissipated, "mesoBackground", energyIx, false);
-	if (relative && sumInLaw) prepareLawSums(n);
+	if (relative && sumInLaw) prepareLawSums(laws, n);
 	else if (!sumLaws.empty()) {
 		for (const auto& law : sumLaws)
 			law->neighbourSums.reset();

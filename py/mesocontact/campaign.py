@@ -124,20 +124,19 @@ def _test(progress):
 
 
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None, dt_factor=None,
-               energy=False):
+               energy=False, cycles=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle is read back, not
     repeated (unless a hook must see the run). ``dt_factor`` scales tablet.time_step (default
-    DT_FACTORS[mode]);
-    ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance) to the JSON.
-    Returns (description, rows)."""
+    DT_FACTORS[mode]); ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance)
+    to the JSON; ``cycles`` overrides the campaign's cycle count. Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
     if hook is None and _out.complete(where):
         with open(os.path.join(where, name + ".json")) as f:
             return json.load(f), read_csv(os.path.join(where, name + ".csv"))
-    cfg = QUICK if quick else FULL
+    n_cycles = cycles or (QUICK if quick else FULL)["cycles"]
     t0 = time.time()
     prepare(outdir, quick, progress and is_master())
     dt_factor = DT_FACTORS[mode] if dt_factor is None else dt_factor
@@ -147,7 +146,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
         test, f0 = _test(progress)
         if energy:
             test.track_energy()
-        rows = test.cycles(mode, amplitude, n_cycles=cfg["cycles"], period=period,
+        rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period,
                            on_record=hook(test, bundle.tmp) if hook else None)
         if _MPY is not None:
             rows = _MPY.comm.bcast(rows, root=0)  # the master's rows: one result on every rank
@@ -156,7 +155,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
         if bundle is not None:
             bundle.discard()
         raise
-    info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": cfg["cycles"],
+    info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": n_cycles,
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
@@ -273,14 +272,8 @@ def timestep_run(outdir, run, factor, quick=False, progress=True):
         return pull(outdir, quick, until=TIMESTEP_PULL_UNTIL, progress=progress, dx_marks=(), tag=f"{tag}-pull",
                     dt_factor=factor, energy=True, check_every=2)
     amplitude, period = (0.2, PERIODS["tension"][0]) if run == "tension" else (0.3, PERIODS["compression"][0])
-    cfg = QUICK if quick else FULL
-    saved = cfg["cycles"]
-    cfg["cycles"] = 1  # one cycle is enough to see the step's effect
-    try:
-        info, _ = run_cycles(outdir, run, amplitude, period, quick, progress, prefix=tag + "-", dt_factor=factor,
-                             energy=True)
-    finally:
-        cfg["cycles"] = saved
+    info, _ = run_cycles(outdir, run, amplitude, period, quick, progress, prefix=tag + "-", dt_factor=factor,
+                         energy=True, cycles=1)  # one cycle shows the step's effect
     return info
 
 
@@ -364,7 +357,8 @@ def timestep_markdown(ts):
     return "\n".join(out) + "\n"
 
 
-def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,), runs=TIMESTEP_RUNS, progress=True):
+def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE, runs=TIMESTEP_RUNS,
+                   progress=True):
     """The runs of the study for these factors and runs (complete ones are read back), then the
     table of every complete run (timestep_table)."""
     for factor in factors:
@@ -475,7 +469,8 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     after that (no drag acts on a detached half moving as a body: it must vanish). Under
     yade.mpy (--mpi) the same force rows, without the events and snapshots. ``tag`` names the
     bundle; ``dt_factor`` scales tablet.time_step (default DT_FACTORS['pull']); ``energy`` adds
-    the run's energy balance."""
+    the run's energy balance; ``check_every``: records (each 100 campaign steps of wall travel, the
+    same Dx at any dt_factor) between the costly gap and connectivity checks, their resolution."""
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress and is_master())
     dt_factor = DT_FACTORS["pull"] if dt_factor is None else dt_factor
@@ -487,8 +482,6 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
               "gap_area": []}
-    # check_every: records (each 100 campaign steps, the same Dx at any dt_factor) between the
-    # (costly) gap and connectivity checks, their resolution in Dx
 
     def hook(t, row):
         dx = row[1]
@@ -592,7 +585,7 @@ def parse_args(figure, argv):
     p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
     p.add_argument("--until", type=float, default=9.0, help="fig17: pull until Dx = UNTIL (in d0)")
     p.add_argument("--factors", default=None,
-                   help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and 1.000001)")
+                   help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and the perturbed 1.000001, 1.000002, 0.999999)")
     p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
     p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
@@ -655,7 +648,7 @@ def _main(figure, a, amps, slow, periods):
     elif figure == "drag":
         out = drag_share(a.out, a.quick)
     elif figure == "timestep":
-        out = timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,),
+        out = timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE,
                              runs=a.runs or TIMESTEP_RUNS)
     elif figure == "rates":
         out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods, run_missing=not a.no_run)
