@@ -1,38 +1,38 @@
 #!/usr/bin/env bash
-# The full Appendix F campaign on a 2-core machine: independent single-threaded jobs, two at a
-# time (faster here than -j2 jobs), longest first; then the figures from the runs' files and
-# the data and figures copied into docs/tablet/ (the time-step study is a campaign of its own:
-# batch/tablet-timestep.table):
-#   bash scripts/tablet_campaign.sh [YADE] [OUT]
-# YADE defaults to the build-tree launcher, OUT to results/tablet. Runs whose CSV and JSON are
-# in OUT already are read back, not repeated; the cached states are made once (stages.ensure).
+# The Appendix F campaign in one command: the sample prepared once, the plan printed (jobs, steps,
+# hours from a measured ms per step), the jobs of the table run by yade-batch on N lanes (each job
+# single-threaded: on this project's 2-core machines two -j1 jobs beat one -j2 job, see
+# docs/performance.md), the measured total printed (job time, wall time), then the figures and
+# the data copied into DOCS:
+#   bash scripts/tablet_campaign.sh [--lanes N] [--yade YADE] [--out OUT] [--table TABLE] [--docs DOCS]
+# Defaults: 2 lanes, build/yade-meso, results/tablet, batch/tablet-campaign.table, docs/tablet.
+# Runs whose bundles are in OUT already are read back, not repeated: a campaign stopped at any
+# point goes on where it stopped when the same command runs again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-YADE=${1:-build/yade-meso}
-OUT=${2:-results/tablet}
+LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=batch/tablet-campaign.table DOCS=docs/tablet
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --lanes) LANES=$2 ;; --yade) YADE=$2 ;; --out) OUT=$2 ;; --table) TABLE=$2 ;; --docs) DOCS=$2 ;;
+    *) echo "tablet_campaign.sh: unknown option $1 (--lanes, --yade, --out, --table, --docs)" >&2; exit 2 ;;
+  esac
+  shift 2
+done
+case "$LANES" in ''|*[!0-9]*|0) echo "tablet_campaign.sh: --lanes $LANES is invalid: a positive integer" >&2; exit 2 ;; esac
+BATCH=${YADE_BATCH_COMMAND:-yade-batch}  # the yade-batch that matches YADE (Debian's: yade-batch)
 mkdir -p "$OUT"
+start=$(date +%s)
 "$YADE" -j1 -n -x scripts/tablet_prepare.py --out "$OUT"
-jobs="fig16.py --amplitudes 0.2 --periods 30,120,480,1920
-fig18.py --amplitudes 0.2 --periods 30,120,480
-fig16.py --amplitudes 0.025
-fig16.py --amplitudes 0.05
-fig16.py --amplitudes 0.1
-fig16.py --amplitudes 0.3
-fig18.py --amplitudes 0.05
-fig18.py --amplitudes 0.1
-fig18.py --amplitudes 0.3
-fig17.py
-fig19.py
-drag.py
-prepare.py --material table2 --kc-over-kp 0 --out $OUT/kc-table2-0
-prepare.py --material appendixF --kc-over-kp 0.2 --out $OUT/kc-appendixF-0.2
-prepare.py --material table2 --kc-over-kp 0.5 --out $OUT/kc-table2-0.5"
-export YADE OUT
-# Each line: a script of scripts/tablet_*.py and its options (a later --out overrides OUT).
-echo "$jobs" | xargs -P 2 -I{} sh -c 'set -f; set -- {}; script=$1; shift; name=$(echo "{}" | tr " ./" "___"); \
-  "$YADE" -j1 -n -x "scripts/tablet_$script" --out "$OUT" "$@" > "$OUT/log-$name.txt" 2>&1 \
-  && echo "done: {}" || { echo "FAILED: {} (see $OUT/log-$name.txt)"; exit 255; }'
+"$YADE" -j1 -n -x scripts/tablet_plan.py "$TABLE" --out "$OUT" --lanes "$LANES"
+# The table with OUT in its column 'out' (added if the table has none), so that every job writes there.
+awk -v out="'$OUT'" 'NF && $1 !~ /^#/ {
+  if (!head++) { for (i = 1; i <= NF; i++) if ($i == "out") col = i; print $0 (col ? "" : " out"); next }
+  if (col) { $col = out; print } else print $0, out }' "$TABLE" > "$OUT/campaign.table"
+"$BATCH" -j "$LANES" --nice 0 --executable "$YADE" --log "$OUT/log-@.log" \
+  "$OUT/campaign.table" scripts/tablet_batch.py
+"$YADE" -j1 -n -x scripts/tablet_totals.py --out "$OUT" --since "$start" --lanes "$LANES" \
+  --wall-seconds "$(( $(date +%s) - start ))"
 "$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT"   # the figures, from the runs above
 "$YADE" -j1 -n -x scripts/tablet_fig18.py --out "$OUT"
-"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --periods 30,120,480,1920
-"$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" docs/tablet
+"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --no-run
+"$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" "$DOCS"

@@ -1,9 +1,12 @@
-# The plan of a tablet campaign table before it runs: jobs, steps, hours from a measured ms per step.
+# The plan of a tablet campaign table before it runs: jobs, steps, hours from a measured ms per step
+# (also written to <out>/campaign-plan.json).
 #   yade -j1 -n -x scripts/tablet_plan.py [TABLE] [--out DIR] [--lanes N]
 import argparse
+import json
+import os
 import sys
 
-from mesocontact import campaign
+from mesocontact import campaign, outputs
 
 p = argparse.ArgumentParser(prog="tablet_plan.py")
 p.add_argument("table", nargs="?", default="batch/tablet-campaign.table")
@@ -12,4 +15,5 @@ p.add_argument("--lanes", type=int, default=2)
 a = p.parse_args(sys.argv[1:])
 if a.lanes < 1:
     p.error(f"--lanes {a.lanes} is invalid: at least 1")
-campaign.plan(a.table, a.out, a.lanes)
+plan = campaign.plan(a.table, a.out, a.lanes)
+outputs.write_atomic(os.path.join(a.out, "campaign-plan.json"), json.dumps(plan, indent=1))

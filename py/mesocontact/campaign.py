@@ -461,7 +461,7 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
 
 
 def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG17_DX, tag="fig17", dt_factor=None,
-         energy=False, check_every=10):
+         energy=False, check_every=10, protocol=None, drag="contacts", stop_after_last=None):
     """Fig. 17: monotonic tension to Dx = until, each wall moving out at ``speed`` [mm/us], with
     PNG and VTK snapshots at dx_marks (one frame for all); records where the first crack is
     visible from the front face (snapshots.visible_gap >= GAP_AREA d0^2), where one first sees
@@ -470,9 +470,19 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     yade.mpy (--mpi) the same force rows, without the events and snapshots. ``tag`` names the
     bundle; ``dt_factor`` scales tablet.time_step (default DT_FACTORS['pull']); ``energy`` adds
     the run's energy balance; ``check_every``: records (each 100 campaign steps of wall travel, the
-    same Dx at any dt_factor) between the costly gap and connectivity checks, their resolution."""
+    same Dx at any dt_factor) between the costly gap and connectivity checks, their resolution.
+    ``protocol``: the preparation's options (tablet.prepare's packing, glue); ``drag``: the
+    background drag's reference in the test ('contacts' as in every test, or 'lab'). Also records
+    the contacts crossing each plane x = const (uniaxial.crossing_profile) at Dx = 0 and at the
+    largest tension seen at a check, and the first gap at half and twice the area criterion.
+    ``stop_after_last``: end the pull this far (in Dx) past the last chain's break."""
     speed = speed or PULL_SPEED
-    prepare(outdir, quick, progress and is_master())
+    if drag not in ("contacts", "lab"):
+        raise ValueError(f"drag = {drag!r} is invalid: 'contacts' or 'lab'")
+    prepare(outdir, quick, progress and is_master(), **(protocol or {}))
+    for e in O.engines:
+        if isinstance(e, _w.MesoBackgroundDamping):
+            e.reference = drag
     dt_factor = DT_FACTORS["pull"] if dt_factor is None else dt_factor
     O.dt *= dt_factor
     test, f0 = _test(progress)
@@ -481,7 +491,8 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag)) if is_master() else None
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
-              "gap_area": []}
+              "gap_area": [], "planes_at_start": _uni.crossing_profile() if _MPY is None else None, "planes_at_peak": None}
+    peak = [0.0]
 
     def hook(t, row):
         dx = row[1]
@@ -492,10 +503,13 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
             _snap.vtk(os.path.join(bundle.tmp, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         if len(t.rows) % check_every == 0:
-            if events["first_gap_Dx"] is None:
+            if row[2] < peak[0]:  # the largest tension so far (F < 0 in tension): where does the sample tear?
+                peak[0] = row[2]
+                events["planes_at_peak"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
+            if not events["gap_area"] or events["gap_area"][-1][1] < 2 * GAP_AREA:  # up to twice the criterion
                 area = _snap.visible_gap()
                 events["gap_area"].append((dx, area))
-                if area >= GAP_AREA:
+                if area >= GAP_AREA and events["first_gap_Dx"] is None:
                     events["first_gap_Dx"] = dx
             if events["see_through_Dx"] is None and _snap.see_through_holes() > GAP_AREA:
                 events["see_through_Dx"] = dx
@@ -507,8 +521,10 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         win = _snap.window(margin=1.0, stretch=0.5 * until)
     t0 = time.time()
     try:
+        stop = None if stop_after_last is None else (
+            lambda: events["last_contact_Dx"] is not None and test.dx() > events["last_contact_Dx"] + stop_after_last)
         rows = test.pull(speed, until=until, every=max(1, int(round(100 / dt_factor))),
-                         on_record=hook if _MPY is None else None)
+                         on_record=hook if _MPY is None else None, stop=stop)
     except BaseException:
         if bundle is not None:
             bundle.discard()
@@ -526,6 +542,9 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                    rms_force_after_last_contact=(sum(f * f for f in after) / len(after)) ** 0.5 if after else None,
                    gap_criterion=f"a crack of >= {GAP_AREA:g} d0^2 seen >= 3 d0 behind the front face, "
                                  "in the central 60 % of the height, between the walls",
+                   first_gap_Dx_by_area={f"{k:g}": next((d for d, a in events["gap_area"] if a >= k), None)
+                                         for k in (0.5 * GAP_AREA, GAP_AREA, 2 * GAP_AREA)},
+                   protocol=dict(protocol or {}), drag=drag,
                    mpi_ranks=_MPY.numThreads if _MPY else 1, dt=O.dt, dt_factor=dt_factor,
                    steps=O.iter - rows[0][0], ms_per_step=1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]))
     if energy:
@@ -538,6 +557,82 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         bundle.write_json(tag + ".json", summary)
         _plot_pull(rows, events, bundle.path(tag + ".png"))
     return summary
+
+
+FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", "contacts"), ("full", "all", "contacts"),
+                   ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
+
+
+def factor_dir(outdir, packing, glue):
+    """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
+    return os.path.join(outdir, "factors", f"{packing}-{glue}")
+
+
+def factor_run(outdir, packing, glue, drag, quick=False, progress=True):
+    """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
+    factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
+    last chain's break (bundle pull-<drag>)."""
+    out = factor_dir(outdir, packing, glue)
+    return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol={"packing": packing, "glue": glue},
+                drag=drag, stop_after_last=1.0, until=12.0)
+
+
+def _stage_numbers(s, L=None):
+    return {"solid_fraction": s["solid_fraction"], "coordination": s["coordination"], "rattlers": s["rattlers"],
+            "Lx_d0": (L if L is not None else s["side"][0]) / _tablet.D0}
+
+
+def _factor_row(st, p):
+    """One row of the factor study from a preparation's description ``st`` and a pull's ``p``."""
+    start = st["unconfined"]["stats"]
+    return {"packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
+            "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
+            "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
+            "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
+            "weakest_at_start": p["planes_at_start"]["weakest"], "mean_at_start": p["planes_at_start"]["mean"],
+            "weakest_at_peak": p["planes_at_peak"]["weakest"], "mean_at_peak": p["planes_at_peak"]["mean"],
+            "planes_at_peak_Dx": p["planes_at_peak"]["Dx"], "first_gap_Dx_by_area": p["first_gap_Dx_by_area"],
+            "last_chain_Dx": p["last_contact_Dx"], "mean_force_after_last_chain": p["mean_force_after_last_contact"],
+            "steps": p.get("steps"), "wall_clock_s": p["wall_clock_s"]}
+
+
+def factor_table(outdir, quick=False):
+    """The factor study's table from the files in <outdir>/factors/: one row per pull, with the
+    sample after sintering, after release and at the test start, the peak tension, the weakest
+    plane at Dx = 0 and at the peak, the first gap (at 0.5, 1 and 2 d0^2), the last chain and the
+    force after it. Returns the rows (also factors.json and factors.md in <outdir>/factors/)."""
+    import glob
+    rows = []
+    for prep_dir in sorted(glob.glob(os.path.join(outdir, "factors", "*-*"))):
+        pulls = sorted(glob.glob(os.path.join(root(prep_dir, quick), "pull-*", "pull-*.json")))
+        if not pulls or not os.path.exists(_stages.path("unconfined", prep_dir, quick) + ".json"):
+            continue
+        with open(_stages.path("unconfined", prep_dir, quick) + ".json") as f:
+            st = json.load(f)
+        for js in pulls:
+            with open(js) as f:
+                rows.append(_factor_row(st, json.load(f)))
+    fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
+    md = ["| packing | glue | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
+          "rattlers test | peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 13]
+    for r in rows:
+        s3 = [r["sintered"], r["released"], r["test_start"]]
+        w0, wp = r["weakest_at_start"], r["weakest_at_peak"]
+        g = r["first_gap_Dx_by_area"]
+        md.append(f"| {r['packing']} | {r['glue']} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
+                  + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
+                  + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
+                  f"{fmt(r['peak_tension'], '.4g')} at {fmt(r['peak_Dx'], '.3f')} | "
+                  f"{w0['count']} ({r['mean_at_start']:.0f}), {w0['from_left_d0']:.2f} / {w0['from_right_d0']:.2f} | "
+                  f"{wp['count']} ({r['mean_at_peak']:.0f}), {wp['from_left_d0']:.2f} / {wp['from_right_d0']:.2f} | "
+                  + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float)) + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
+                  f"{fmt(r['mean_force_after_last_chain'], '.2g')} |")
+    base = os.path.join(outdir, "factors", "quick" if quick else "")
+    os.makedirs(base, exist_ok=True)
+    _out.write_atomic(os.path.join(base, "factors.json"), json.dumps(rows, indent=1))
+    _out.write_atomic(os.path.join(base, "factors.md"), "\n".join(md) + "\n")
+    return rows
 
 
 def _plot_pull(rows, events, png):
@@ -560,7 +655,7 @@ def _plot_pull(rows, events, png):
     plt.close(fig)
 
 
-FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19")
+FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19", "factors")
 MPI_FIGURES = ("fig16", "fig17", "fig18")
 
 
@@ -591,6 +686,13 @@ def parse_args(figure, argv):
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
     p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
+    p.add_argument("--packing", default="full", choices=_tablet.PACKINGS,
+                   help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")
+    p.add_argument("--glue", default="loading", choices=_tablet.GLUES,
+                   help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
+    p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
+                   help="factors: the background drag's reference in the pull")
+    p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
     p.add_argument("--mpi", type=int, default=None, metavar="N",
                    help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
                         " fig17 without crack events and snapshots)")
@@ -660,6 +762,10 @@ def _main(figure, a, amps, slow, periods):
         out = cyclic("compression", a.out, (amp,), a.quick, periods[:1], snapshot_amplitude=amp, figure="fig19")
     elif figure == "fig17":
         out = pull(a.out, a.quick, speed=a.speed, until=a.until)
+    elif figure == "factors":
+        if not a.table:
+            factor_run(a.out, a.packing, a.glue, a.drag, a.quick)
+        out = factor_table(a.out, a.quick)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")
     if not is_master():
@@ -741,6 +847,9 @@ def report(outdir, docsdir):
         for f in os.listdir(d):
             if f.rsplit(".", 1)[-1] in ("csv", "json", "png") and f != _out.MANIFEST:
                 shutil.copy(os.path.join(d, f), docsdir)
+    for name in ("campaign-plan.json", "campaign-time.json"):  # the campaign's cost, planned and measured
+        if os.path.exists(os.path.join(outdir, name)):
+            shutil.copy(os.path.join(outdir, name), docsdir)
     for fig, tag in (("fig17", "fig17"), ("fig19", "fig19-compression-Dx0.3")):
         pngs = sorted(glob.glob(os.path.join(outdir, fig, f"{tag}-[0-9][0-9].png")))
         if pngs:
@@ -798,6 +907,46 @@ def _job_steps(figure, cells, t_cross, dt0):
     if figure == "rates":
         return sum(FULL["cycles"] * cycle(p, m) for p in numbers("periods", RATE_PERIODS) for m in _uni.MODES)
     return 0  # prepare and the rest: minutes, not counted
+
+
+JOBS_LOG = "jobs.jsonl"
+
+
+def log_job(outdir, job, figure, start, end):
+    """Appends one finished campaign job to <outdir>/jobs.jsonl: its name (the table line's
+    description when yade-batch ran it), figure, start and end (epoch s), job time and the
+    steps its tests ran (uniaxial.Test.steps_run)."""
+    try:
+        job = O.tags["description"] or job
+    except KeyError:
+        pass
+    rec = {"job": job, "figure": figure, "start": start, "end": end, "seconds": end - start,
+           "steps": _uni.Test.steps_run}
+    os.makedirs(outdir, exist_ok=True)
+    with open(os.path.join(outdir, JOBS_LOG), "a") as f:  # one short line per write: appends do not interleave
+        f.write(json.dumps(rec) + "\n")
+
+
+def totals(outdir, since=None, lanes=None, progress=True):
+    """The measured time of a campaign from <outdir>/jobs.jsonl (jobs that started at or after
+    ``since``, epoch s): each job's time and steps, their sum (single-job time), the wall time
+    from the first start to the last end, and the mean ms per step. Prints it; returns it."""
+    with open(os.path.join(outdir, JOBS_LOG)) as f:
+        jobs = [json.loads(ln) for ln in f if ln.strip()]
+    jobs = [j for j in jobs if since is None or j["start"] >= since]
+    if not jobs:
+        raise ValueError(f"totals: no job in {os.path.join(outdir, JOBS_LOG)}" + (f" since {since}" if since else ""))
+    seconds, steps = sum(j["seconds"] for j in jobs), sum(j["steps"] for j in jobs)
+    out = {"jobs": jobs, "single_job_hours": seconds / 3600, "steps": steps,
+           "wall_hours": (max(j["end"] for j in jobs) - min(j["start"] for j in jobs)) / 3600,
+           "ms_per_step": 1e3 * seconds / steps if steps else None, "lanes": lanes}
+    if progress:
+        for j in sorted(jobs, key=lambda j: j["start"]):
+            print(f"  {j['job']:20s} {j['figure']:8s} {j['steps']:>10,d} steps  {j['seconds'] / 3600:5.2f} h", flush=True)
+        print(f"total: {len(jobs)} jobs, {steps:,d} steps, {out['single_job_hours']:.2f} h of job time"
+              + (f" ({out['ms_per_step']:.2f} ms/step)" if steps else "")
+              + f", {out['wall_hours']:.2f} h of wall time" + (f" on {lanes} lanes" if lanes else ""), flush=True)
+    return out
 
 
 def plan(table, outdir, lanes=2, progress=True):

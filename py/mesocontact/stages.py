@@ -44,10 +44,10 @@ def _locked(outdir):
             fcntl.flock(lock, fcntl.LOCK_UN)
 
 
-def _config(quick, material, kc_over_kp, n):
+def _config(quick, material, kc_over_kp, n, packing="full", glue="loading"):
     n = n or (QUICK_N if quick else 1728)
     kc = _tablet.particle_material(material)["kc"] / _tablet.KP if kc_over_kp is None else float(kc_over_kp)
-    return {"n": int(n), "material": material, "kc_over_kp": kc}
+    return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue}
 
 
 class _Unreadable(Exception):
@@ -59,7 +59,8 @@ def _load(p, config):
         with open(p + ".json") as f:
             info = json.load(f)
         built = info["built"]
-        have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"]}
+        have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"],
+                "packing": built.get("packing", "full"), "glue": built.get("glue", "loading")}  # older files: today's
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
     if any(abs(have[k] - config[k]) > 1e-12 if k == "kc_over_kp" else have[k] != config[k] for k in config):
@@ -94,10 +95,12 @@ def _try_load(p, config, progress):
         return None
 
 
-def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True):
+def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True,
+           packing="full", glue="loading"):
     """Loads ``stage`` ('released' or 'unconfined') of the tablet in ``outdir`` into O, making
-    it first if it is missing; returns its description. quick: the 216-particle tablet."""
-    config = _config(quick, material, kc_over_kp, n)
+    it first if it is missing; returns its description. quick: the 216-particle tablet;
+    packing, glue: the preparation's options (tablet.prepare)."""
+    config = _config(quick, material, kc_over_kp, n, packing, glue)
     p = path(stage, outdir, quick)
     with _locked(outdir):
         info = _try_load(p, config, progress)
@@ -107,8 +110,8 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
             return _tablet.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
-                                   progress=progress)
-    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress)
+                                   progress=progress, packing=packing, glue=glue)
+    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue)
     with _locked(outdir):
         made = _try_load(p, config, progress)  # made meanwhile by another job
         if made is not None:

@@ -42,6 +42,11 @@ COMPACTION_SPEED = 2.0           # largest wall speed while compacting the gas [
 SINTER_SPEED = 0.05              # largest wall speed while sintering and releasing [mm/us]
 RELEASE_STEPS = 40000            # steps over which the wall stress is lowered from p_s to p_r
 WALLS = ("left", "right", "bottom", "top", "back", "front")  # YADE's aabbWalls order: -x +x -y +y -z +z
+# The preparation's options (the factor study of the tested sample, docs/tablet/factors.md):
+PACKINGS = ("full", "frictionless")  # the law while the gas is compacted: the full law, or without friction,
+#                                      rolling, torsion and adhesion (the full law switched on for sintering)
+PACKING_RATIO = 0.1                  # the frictionless packing's stress, over p_s
+GLUES = ("loading", "all")           # the walls made adhesive after sintering: the two x walls, or all six
 
 
 # Particle parameter sets (MesoMat keywords, the paper's units): Table 2 of Luding 2008 and the
@@ -356,6 +361,18 @@ def make_adhesive_walls(wall_ids):
             ip2.adoptMaterials(I)
 
 
+def _switch_particles(label):
+    """Gives every sphere the material ``label`` and lets each of its contacts adopt it, keeping
+    the contact's history (overlap, delta_max, springs): the force stays continuous."""
+    mat = [m for m in O.materials if m.label == label][0]
+    ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
+    for i in sphere_ids():
+        O.bodies[i].material = mat
+    for I in O.interactions:
+        if I.isReal:
+            ip2.adoptMaterials(I)
+
+
 def _wall_contacts(name):
     wid = wall_ids()[name]
     return sum(1 for I in O.bodies[wid].intrs() if I.isReal and I.geom.penetrationDepth > 0)
@@ -387,7 +404,8 @@ def _compact(goal, speed, progress, chunk=500, max_steps=200000):
 
 
 def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, seed=1, tol_stress=0.01,
-            tol_ke=1e-4, compaction_speed=COMPACTION_SPEED, release_steps=RELEASE_STEPS, progress=True):
+            tol_ke=1e-4, compaction_speed=COMPACTION_SPEED, release_steps=RELEASE_STEPS, progress=True,
+            packing="full", glue="loading"):
     """Makes the released tablet with the full law (adhesion, friction, rolling, torsion) from
     the start: a gas of the particles is compacted by the six walls (at up to
     ``compaction_speed`` [mm/us], without background drag) until they carry d0 p_s/kp = 0.02,
@@ -395,16 +413,38 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     x walls (make_adhesive_walls), released to
     p_r/p_s = 1e-3 (the goal lowered geometrically over ``release_steps`` steps) and relaxed.
     Saves the released state to ``path`` (O.save) and its description to ``path + '.json'``
-    (both atomically); returns the description."""
+    (both atomically); returns the description.
+
+    ``packing='frictionless'`` compacts the gas without friction, rolling, torsion and adhesion
+    (the particles' normal law otherwise) and lets it come to rest at PACKING_RATIO p_s with the
+    drag (a dense random packing), then switches the full law on for sintering, each contact
+    keeping its history; ``glue='all'`` makes all six walls adhesive after sintering
+    (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined)."""
+    if packing not in PACKINGS:
+        raise ValueError(f"packing = {packing!r} is invalid: one of {PACKINGS}")
+    if glue not in GLUES:
+        raise ValueError(f"glue = {glue!r} is invalid: one of {GLUES}")
     t0 = time.time()
     info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp)}
+    info["built"].update(packing=packing, glue=glue)
     O.engines = engines(_controller(SINTER_STRESS, SINTER_SPEED), reference="lab")
-    info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
+    if packing == "frictionless":
+        O.materials.append(_w.MesoMat(**particle_material(material, kc=0.0, frictionAngle=0.0, muR=0.0, muO=0.0,
+                                                          label="packing")))
+        _switch_particles("packing")
+    if packing == "frictionless":  # packed to rest at PACKING_RATIO p_s, then the full law and p_s
+        _set_goal(PACKING_RATIO * SINTER_STRESS)
+        info["compacted"] = _compact(PACKING_RATIO * SINTER_STRESS, compaction_speed, progress)
+        info["packed"] = _relax(PACKING_RATIO * SINTER_STRESS, tol_stress, tol_ke, "packing", progress)
+        _switch_particles("particles")
+        _set_goal(SINTER_STRESS)
+    else:
+        info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
     info["sintered"] = _relax(SINTER_STRESS, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
     # The loading walls are glued to the sample where it was sintered against them: released
     # against the smooth mould first, only the few particles still touching at p_r (12 and 16
     # of about 144 per face) held it, and the pull tore it off a wall.
-    make_adhesive_walls([wall_ids()["left"], wall_ids()["right"]])
+    make_adhesive_walls([wall_ids()[w] for w in (WALLS if glue == "all" else ("left", "right"))])
     info["loading_wall_contacts_sintered"] = {k: _wall_contacts(k) for k in ("left", "right")}
     _release(RELEASE_RATIO * SINTER_STRESS, release_steps, progress)
     info["released"] = _relax(RELEASE_RATIO * SINTER_STRESS, tol_stress, tol_ke, "release", progress)

@@ -112,6 +112,41 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
             "stats": _tablet.stats()}
 
 
+def crossing_profile(spacing=0.25):
+    """The contacts in overlap that cross each plane x = const between the loading walls' inner
+    faces, planes ``spacing`` d0 apart: a particle pair crosses the planes between its centres,
+    a particle-wall contact those between the centre and the wall's face. Returns {'x': plane
+    distances from the left face [d0], 'count': contacts crossing each, 'weakest': the plane
+    with the fewest (its count and distances from the left and right faces [d0]), 'mean'}; the
+    weakest plane is where a pull tears the sample."""
+    walls = _tablet.wall_ids()
+    lo, hi = _tablet.inner_box()
+    x0, x1 = lo[0], hi[0]
+    n = max(1, int((x1 - x0) / (spacing * _tablet.D0)))
+    xs = [x0 + (k + 0.5) * (x1 - x0) / n for k in range(n)]
+    diff = [0] * (n + 1)
+    face = {walls["left"]: x0, walls["right"]: x1}
+    lateral = set(walls.values()) - set(face)  # present only before the unconfined start
+    for I in O.interactions:
+        if I.geom.penetrationDepth <= 0 or I.id1 in lateral or I.id2 in lateral:
+            continue
+        a, b = (face[i] if i in face else O.bodies[i].state.pos[0] for i in (I.id1, I.id2))
+        lo_x, hi_x = min(a, b), max(a, b)
+        first = max(0, int(math.ceil((lo_x - x0) / (x1 - x0) * n - 0.5)))  # planes with lo_x < x < hi_x
+        last = min(n - 1, int(math.floor((hi_x - x0) / (x1 - x0) * n - 0.5)))
+        if first <= last:
+            diff[first] += 1
+            diff[last + 1] -= 1
+    count, run = [], 0
+    for k in range(n):
+        run += diff[k]
+        count.append(run)
+    k = min(range(n), key=lambda j: count[j])
+    d = [(x - x0) / _tablet.D0 for x in xs]
+    return {"x": d, "count": count, "mean": sum(count) / n, "spacing_d0": (x1 - x0) / n / _tablet.D0,
+            "weakest": {"count": count[k], "from_left_d0": d[k], "from_right_d0": (x1 - xs[k]) / _tablet.D0}}
+
+
 class _WallWork:
     """The work the loading walls do on the sample, added up every step by a PyRunner after the
     NewtonIntegrator (this step's force on each wall times the velocity it moved with) [nJ]; also
@@ -140,7 +175,11 @@ class Test:
     """An unconfined uni-axial test on the loaded unconfined start (stages.ensure('unconfined')).
     ``run(n)`` advances the scene by n steps (default ``O.run(n, True)``; under yade.mpy
     ``mpy.mpirun``, with ``records`` true on the master only: a worker may not hold both walls,
-    and ``share(x)`` giving every rank the master's x, for decisions made from the walls)."""
+    and ``share(x)`` giving every rank the master's x, for decisions made from the walls).
+    ``Test.steps_run`` counts the steps every test of this process has run (a campaign job's
+    total)."""
+
+    steps_run = 0
 
     def __init__(self, progress=True, run=None, records=True, share=None):
         self.progress = progress and records
@@ -227,7 +266,9 @@ class Test:
         chunk = max(every, steps_per_cycle // 4 // every * every)
         start = O.iter
         while O.iter - start < total:
-            self._run(min(chunk, total - (O.iter - start)))
+            k = min(chunk, total - (O.iter - start))
+            self._run(k)
+            Test.steps_run += k
             if self.progress:
                 print(f"  {mode} Dx={amplitude:g}: cycle {(O.iter - start) / steps_per_cycle:5.2f}/{n_cycles}"
                       f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
@@ -239,9 +280,9 @@ class Test:
         self._record()
         return self.rows
 
-    def pull(self, speed, until=9.0, every=100, on_record=None):
-        """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until. Returns
-        the recorded rows."""
+    def pull(self, speed, until=9.0, every=100, on_record=None, stop=None):
+        """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until (or, checked
+        between chunks of 50 records, until ``stop()`` is true). Returns the recorded rows."""
         if not speed > 0:
             raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
         motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed,
@@ -251,8 +292,9 @@ class Test:
         self._record()
         t0 = time.time()
         chunk = 50 * every
-        while self._share(self.dx() < until if self.records else None):
+        while self._share(self.dx() < until and not (stop and stop()) if self.records else None):
             self._run(chunk)
+            Test.steps_run += chunk
             if self.progress:
                 print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
                       flush=True)

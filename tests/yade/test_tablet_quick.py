@@ -46,7 +46,30 @@ for missing in (False, True):
     else:
         check(area < 1.0, f"whole front layer: largest deep region {area:.2f} d0^2 < 1 (the lattice's pores)")
 
-out = tempfile.mkdtemp(prefix="tablet-quick-")
+# The contacts crossing planes x = const (uniaxial.crossing_profile), on a known sample: two
+# walls 10 d0 apart (ids 0, 1 as in the tablet) and two chains of ten spheres of radius
+# 0.5005 d0, d0 apart, from wall to wall, every contact in overlap; in the second chain the last
+# six spheres are shifted by 0.002 d0, which opens the contact between its 4th and 5th sphere
+# (centres 3.5 and 4.502 d0 from the left face). With planes 0.25 d0 apart (40), every plane
+# crosses two contacts except the four between 3.5 and 4.502 d0, which cross one: the weakest
+# is the first of them, 3.625 d0 from the left face, 6.375 from the right; the mean is 1.9.
+O.reset()
+d, L = tablet.D0, 10 * tablet.D0
+O.bodies.append(utils.box((-0.25 * d, 0, 2 * d), (0.25 * d, 5 * d, 5 * d), fixed=True))
+O.bodies.append(utils.box((L + 0.25 * d, 0, 2 * d), (0.25 * d, 5 * d, 5 * d), fixed=True))
+for z, shift in ((0.0, 0.0), (3 * d, 0.002 * d)):
+    O.bodies.append([utils.sphere(((k + 0.5) * d + (shift if k >= 4 else 0.0), 0, z), 0.5005 * d) for k in range(10)])
+O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()]),
+             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom()], [w.Ip2_FrictMat_FrictMat_FrictPhys()],
+                               [w.Law2_ScGeom_FrictPhys_CundallStrack()]), w.NewtonIntegrator()]
+O.dt = 1e-9
+O.step()
+prof = uniaxial.crossing_profile(spacing=0.25)
+expect = [1 if 3.5 < x < 4.502 else 2 for x in prof["x"]]
+wk = prof["weakest"]
+check(len(prof["x"]) == 40 and prof["count"] == expect and abs(prof["mean"] - 1.9) < 1e-12
+      and abs(wk["from_left_d0"] - 3.625) < 1e-9 and abs(wk["from_right_d0"] - 6.375) < 1e-9 and wk["count"] == 1,
+      f"crossing profile of two chains, one open: weakest plane {wk}, mean {prof['mean']}")
 
 # 2. Preparation: the full law from the start, targets reached and static.
 info = campaign.prepare(out, quick=True)
@@ -179,6 +202,13 @@ f_mean, f_rms = pull["mean_force_after_last_contact"], pull["rms_force_after_las
 # them would show as a steady mean (the lab-frame drag gave about the peak itself).
 check(f_mean is not None and abs(f_mean) < 0.02 * abs(pull["max_tension"]),
       f"pull: detached halves force-free on average: mean F = {f_mean:.2e} (rms {f_rms:.1e}, peak tension {pull['max_tension']:.3g})")
+g = [pull["first_gap_Dx_by_area"][k] for k in sorted(pull["first_gap_Dx_by_area"], key=float)]
+check(len(g) == 3 and g[1] == pull["first_gap_Dx"] and all(x is not None for x in g) and g[0] <= g[1] <= g[2],
+      f"pull: the first gap at 0.5, 1 and 2 d0^2 in order: {g}")
+p0, pp = pull["planes_at_start"], pull["planes_at_peak"]
+check(p0["weakest"]["count"] <= p0["mean"] and pp["weakest"]["count"] <= p0["weakest"]["count"]
+      and abs(pp["F"] - pull["max_tension"]) <= 0.05 * abs(pull["max_tension"]),
+      f"pull: weakest plane {p0['weakest']} at Dx = 0, {pp['weakest']} near the peak (Dx = {pp['Dx']:.3f})")
 fig17 = os.path.join(campaign.root(out, quick=True), "fig17")
 check(outputs.complete(fig17), "pull: fig17 bundle complete")
 pngs = sorted(glob.glob(os.path.join(fig17, "fig17-0*.png")))
@@ -214,5 +244,27 @@ check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12 and set(rows[2.0]["chan
 with open(os.path.join(os.path.dirname(os.path.abspath(campaign.__file__)), "..", "..", "docs", "tablet", "timestep.json")) as f:
     accepted = json.load(f)["largest_accepted_factor"]
 check(accepted == campaign.DT_FACTORS, f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
+
+# 7. The preparation's options (the factor study): frictionless packing, all six walls glued.
+#    The stage cache tells the preparations apart; the full law acts after the packing.
+fout = campaign.factor_dir(out, "frictionless", "all")
+finfo = campaign.prepare(fout, quick=True, progress=False, packing="frictionless", glue="all")
+check(finfo["built"]["packing"] == "frictionless" and finfo["built"]["glue"] == "all",
+      f"factor preparation recorded: {finfo['built']['packing']}, {finfo['built']['glue']}")
+spheres = [O.bodies[i] for i in tablet.sphere_ids()]
+check(all(b.material.label == "particles" for b in spheres), "frictionless packing: the full law on every sphere for the tests")
+sphere_contacts = [I for I in O.interactions if I.id1 in tablet.sphere_ids() and I.id2 in tablet.sphere_ids()]
+check(sphere_contacts and all(abs(I.phys.muS - 1.0) < 1e-12 and abs(I.phys.kc - 0.2 * tablet.KP) < 1e-12 for I in sphere_contacts),
+      f"frictionless packing: {len(sphere_contacts)} contacts adopted the full law (mu = 1, kc = 0.2 kp)")
+try:
+    campaign.prepare(fout, quick=True, progress=False)
+    check(False, "a directory holding another preparation is refused")
+except ValueError as e:
+    check("frictionless" in str(e), f"a directory holding another preparation is refused: {str(e)[:90]}...")
+try:
+    tablet.prepare(os.path.join(out, "x.yade.gz"), n=8, packing="loose")
+    check(False, "bad packing rejected")
+except ValueError as e:
+    check(str(e).startswith("packing"), f"bad packing rejected: {e}")
 
 finish()
