@@ -220,8 +220,9 @@ def walls_connected(left, right):
     return False
 
 
-def montage(pngs, path, ncols=4):
-    """The panels ``pngs`` side by side in one picture (a series shares its frame and scale)."""
+def montage(pngs, path, ncols=4, titles=None):
+    """The panels ``pngs`` side by side in one picture (a series shares its frame and scale),
+    lettered (a), (b), ... as the paper's snapshot figures, each with its title if given."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.image as mpimg
@@ -232,8 +233,9 @@ def montage(pngs, path, ncols=4):
     fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 3.2 * nrows * h / w), squeeze=False)
     for ax in axes.flat:
         ax.axis("off")
-    for ax, img in zip(axes.flat, imgs):
+    for k, (ax, img) in enumerate(zip(axes.flat, imgs)):
         ax.imshow(img)
+        ax.set_title(f"({chr(97 + k)})" + (f" {titles[k]}" if titles else ""), fontsize=9, loc="left")
     fig.tight_layout(pad=0.2)
     fig.savefig(path, dpi=130)
     plt.close(fig)

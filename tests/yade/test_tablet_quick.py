@@ -71,6 +71,8 @@ check(len(prof["x"]) == 40 and prof["count"] == expect and abs(prof["mean"] - 1.
       and abs(wk["from_left_d0"] - 3.625) < 1e-9 and abs(wk["from_right_d0"] - 6.375) < 1e-9 and wk["count"] == 1,
       f"crossing profile of two chains, one open: weakest plane {wk}, mean {prof['mean']}")
 
+out = tempfile.mkdtemp(prefix="tablet-quick-")
+
 # 2. Preparation: the full law from the start, targets reached and static.
 info = campaign.prepare(out, quick=True)
 # Stage files that cannot be used are made again, not loaded: a truncated state, a truncated
