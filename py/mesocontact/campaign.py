@@ -618,6 +618,10 @@ def _stage_numbers(s, L=None):
 def _factor_row(st, p):
     """One row of the factor study from a preparation's description ``st`` and a pull's ``p``."""
     start = st["unconfined"]["stats"]
+    for key in ("planes_at_start", "planes_at_peak"):  # the weakest plane from the counts, by today's rule
+        prof = p[key]
+        prof.setdefault("length_d0", p["L0"] / _tablet.D0 + (prof.get("Dx") or 0.0))
+        prof["weakest"] = _uni.weakest_plane(prof)
     return {"packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],

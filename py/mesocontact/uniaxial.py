@@ -116,9 +116,8 @@ def crossing_profile(spacing=0.25):
     """The contacts in overlap that cross each plane x = const between the loading walls' inner
     faces, planes ``spacing`` d0 apart: a particle pair crosses the planes between its centres,
     a particle-wall contact those between the centre and the wall's face. Returns {'x': plane
-    distances from the left face [d0], 'count': contacts crossing each, 'weakest': the plane
-    with the fewest (its count and distances from the left and right faces [d0]), 'mean'}; the
-    weakest plane is where a pull tears the sample."""
+    distances from the left face [d0], 'count': contacts crossing each, 'mean', 'length_d0',
+    'weakest': weakest_plane()}; the weakest plane is where a pull tears the sample."""
     walls = _tablet.wall_ids()
     lo, hi = _tablet.inner_box()
     x0, x1 = lo[0], hi[0]
@@ -141,10 +140,20 @@ def crossing_profile(spacing=0.25):
     for k in range(n):
         run += diff[k]
         count.append(run)
-    k = min(range(n), key=lambda j: count[j])
-    d = [(x - x0) / _tablet.D0 for x in xs]
-    return {"x": d, "count": count, "mean": sum(count) / n, "spacing_d0": (x1 - x0) / n / _tablet.D0,
-            "weakest": {"count": count[k], "from_left_d0": d[k], "from_right_d0": (x1 - xs[k]) / _tablet.D0}}
+    prof = {"x": [(x - x0) / _tablet.D0 for x in xs], "count": count, "mean": sum(count) / n,
+            "length_d0": (x1 - x0) / _tablet.D0}
+    prof["weakest"] = weakest_plane(prof)
+    return prof
+
+
+def weakest_plane(prof, margin=0.5):
+    """The plane of a crossing_profile with the fewest contacts, at least ``margin`` d0 from both
+    walls' faces (nearer, only the contacts with the glued wall cross, 20 times as adhesive as
+    the particles'): its count and distances from the left and right faces [d0]."""
+    xs, count, length = prof["x"], prof["count"], prof["length_d0"]
+    inner = [k for k, x in enumerate(xs) if margin <= x <= length - margin] or list(range(len(xs)))
+    k = min(inner, key=lambda j: count[j])
+    return {"count": count[k], "from_left_d0": xs[k], "from_right_d0": length - xs[k]}
 
 
 class _WallWork:

@@ -70,6 +70,11 @@ wk = prof["weakest"]
 check(len(prof["x"]) == 40 and prof["count"] == expect and abs(prof["mean"] - 1.9) < 1e-12
       and abs(wk["from_left_d0"] - 3.625) < 1e-9 and abs(wk["from_right_d0"] - 6.375) < 1e-9 and wk["count"] == 1,
       f"crossing profile of two chains, one open: weakest plane {wk}, mean {prof['mean']}")
+# Planes nearer than 0.5 d0 to a wall's face cross only the glued wall's contacts: not the weakest.
+syn = {"x": [0.125, 0.375, 0.625, 5.0, 9.875], "count": [1, 3, 4, 2, 1], "length_d0": 10.0}
+wk = uniaxial.weakest_plane(syn)
+check(wk == {"count": 2, "from_left_d0": 5.0, "from_right_d0": 5.0} and uniaxial.weakest_plane(syn, margin=0)["count"] == 1,
+      f"weakest plane away from the walls' faces: {wk}")
 
 out = tempfile.mkdtemp(prefix="tablet-quick-")
 
