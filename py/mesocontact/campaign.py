@@ -524,8 +524,10 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag)) if is_master() else None
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
-              "gap_area": [], "planes_at_start": _uni.crossing_profile() if _MPY is None else None, "planes_at_peak": None}
+              "gap_area": [], "planes_at_start": _uni.crossing_profile() if _MPY is None else None, "planes_at_peak": None,
+              "planes_at_marks": {}}
     peak = [0.0]
+    plane_marks = sorted({0.2, *dx_marks[1:]})  # Dx = 0.2: "mostly, but not completely lost mechanical contact"
 
     def hook(t, row):
         dx = row[1]
@@ -535,6 +537,8 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                       f"tension, Dx = {dx:.2f} (mark {marks[0]:g}), F/(kp d0) = {row[2]:+.3g}", win=win)
             _snap.vtk(os.path.join(bundle.tmp, tag), len(events["snapshots"]))
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
+        while plane_marks and dx >= plane_marks[0]:
+            events["planes_at_marks"][f"{plane_marks.pop(0):g}"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
         if len(t.rows) % check_every == 0:
             if row[2] < peak[0]:  # the largest tension so far (F < 0 in tension): where does the sample tear?
                 peak[0] = row[2]

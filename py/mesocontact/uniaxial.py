@@ -117,18 +117,19 @@ def crossing_profile(spacing=0.25):
     faces, planes ``spacing`` d0 apart: a particle pair crosses the planes between its centres,
     a particle-wall contact those between the centre and the wall's face. Returns {'x': plane
     distances from the left face [d0], 'count': contacts crossing each, 'mean', 'length_d0',
-    'weakest': weakest_plane()}; the weakest plane is where a pull tears the sample."""
+    'total' (all contacts in overlap), 'weakest': weakest_plane()}; the weakest plane is where a pull tears the sample."""
     walls = _tablet.wall_ids()
     lo, hi = _tablet.inner_box()
     x0, x1 = lo[0], hi[0]
     n = max(1, int((x1 - x0) / (spacing * _tablet.D0)))
     xs = [x0 + (k + 0.5) * (x1 - x0) / n for k in range(n)]
-    diff = [0] * (n + 1)
+    diff, total = [0] * (n + 1), 0
     face = {walls["left"]: x0, walls["right"]: x1}
     lateral = set(walls.values()) - set(face)  # present only before the unconfined start
     for I in O.interactions:
         if I.geom.penetrationDepth <= 0 or I.id1 in lateral or I.id2 in lateral:
             continue
+        total += 1
         a, b = (face[i] if i in face else O.bodies[i].state.pos[0] for i in (I.id1, I.id2))
         lo_x, hi_x = min(a, b), max(a, b)
         first = max(0, int(math.ceil((lo_x - x0) / (x1 - x0) * n - 0.5)))  # planes with lo_x < x < hi_x
@@ -141,7 +142,7 @@ def crossing_profile(spacing=0.25):
         run += diff[k]
         count.append(run)
     prof = {"x": [(x - x0) / _tablet.D0 for x in xs], "count": count, "mean": sum(count) / n,
-            "length_d0": (x1 - x0) / _tablet.D0}
+            "length_d0": (x1 - x0) / _tablet.D0, "total": total}
     prof["weakest"] = weakest_plane(prof)
     return prof
 

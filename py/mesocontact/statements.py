@@ -1,0 +1,253 @@
+"""Every statement of Appendix F on the tablet, measured the way it is stated, from a campaign's
+committed files (plain Python: the JSON and CSV that ``campaign.report`` copies into a docs
+directory):
+
+    python3 -m mesocontact.statements docs/tablet      # writes statements.md and statements.json there
+
+Each statement gets the project's number, the definition it is measured by, and a verdict:
+'✓' met, '◐' met in part or only approximately (the reason given), '✗' not met, '–' not in this
+campaign's files. The thresholds are stated with each statement; the cycle measures are those of
+``mesocontact.measures`` (loop area against the elastic energy of the force swing, permanent set
+from the starting force).
+"""
+import glob
+import json
+import os
+import sys
+
+from . import measures
+
+PHI_F = 0.05
+TOL_L0 = 0.01  # the tested sample's length against the paper's 0.115: 1 %
+
+
+def _load(d, name):
+    p = os.path.join(d, name)
+    if not os.path.exists(p):
+        return None
+    with open(p) as f:
+        return json.load(f)
+
+
+def _csv(path):
+    with open(path) as f:
+        return [tuple(float(x) for x in ln.split(",")) for ln in f.read().split("\n")[1:] if ln]
+
+
+def _runs(d):
+    """The cyclic runs of the campaign: {(mode, amplitude, period): (json, measures per cycle)}."""
+    out = {}
+    for js in sorted(glob.glob(os.path.join(d, "*-Dx*-P*.json"))):
+        base = os.path.basename(js)
+        if base.startswith(("fig", "timestep")):
+            continue
+        j = _load(d, base)
+        if not j or "steps_per_cycle" not in j or not os.path.exists(js[:-5] + ".csv"):
+            continue
+        rows = _csv(js[:-5] + ".csv")
+        out[(j["mode"], j["amplitude"], j["period_crossings"])] = (j, measures.cycle_measures(
+            rows, j["steps_per_cycle"], j["mode"], j["cycles"]))
+    return out
+
+
+def _slowest(runs, mode, amp):
+    keys = sorted((k for k in runs if k[0] == mode and k[1] == amp), key=lambda k: -k[2])
+    return runs[keys[0]] if keys else None
+
+
+def _pct(x):
+    return f"{100 * x:.2g} %"
+
+
+def statements(d):
+    """The list of statements of Appendix F with number, definition and verdict (see the module)."""
+    st = _load(d, "unconfined.yade.gz.json") or _load(d, "released.yade.gz.json")
+    runs = _runs(d)
+    pull = _load(d, "fig17.json")
+    out = []
+
+    def add(quote, number, definition, verdict, note=""):
+        out.append({"n": len(out) + 1, "paper": quote, "project": number, "definition": definition,
+                    "verdict": verdict, "note": note})
+
+    amps = {m: sorted({k[1] for k in runs if k[0] == m}) for m in ("tension", "compression")}
+    L0s = sorted({j["L0"] for j, _ in runs.values()})
+    # -- the sample
+    if L0s:
+        L0 = L0s[0]
+        err = L0 / 0.115 - 1
+        add("an agglomerate (cubic) of size L0 = 0.115", f"L0 = {L0:.5f} ({_pct(err)} from 0.115)",
+            "x length between the loading walls at the start of every test",
+            "✓" if abs(err) <= TOL_L0 else ("◐" if abs(err) <= 0.05 else "✗"), f"within {_pct(TOL_L0)}: ✓; 5 %: ◐")
+    else:
+        add("an agglomerate (cubic) of size L0 = 0.115", "–", "x length at the test start", "–")
+    if st:
+        b = st["built"]
+        add("N = 1728 primary particles of diameter d0 = 0.01 (with some variation in size)",
+            f"N = {b['n']}, radii {b['radii'][0] / 0.005:.3f}–{b['radii'][1] / 0.005:.3f} d0/2",
+            "particles built; Gaussian radii, relative std 5 %, cut at 2 sigma", "✓" if b["n"] == 1728 else "✗")
+        s = st["sintered"]
+        ws = max(abs(v / s["goal"] - 1) for v in s["wall_stress"].values()) if "goal" in s else None
+        add("compressed (pressure-sintered) with a dimensionless wall stress d0 p_s/kp = 0.02",
+            f"every wall within {_pct(ws)} of p_s" if ws is not None else "–",
+            "wall stresses when sintering ends", "✓" if ws is not None and ws < 0.01 else "–")
+        add("to form a stable, rather dense agglomerate",
+            f"solid fraction {s['solid_fraction']:.3f}, C {s['coordination']:.2f}, {s['rattlers']} rattlers, "
+            f"E_kin/E_ref {s['kinetic_energy_ratio']:.1e}",
+            "sintered state; static: E_kin below 1e-4 of the elastic energy scale; dense: solid fraction >= 0.60",
+            "✓" if s["kinetic_energy_ratio"] < 1e-4 and s["solid_fraction"] >= 0.60 else "◐")
+        r = st["released"]
+        wr = max(abs(v / r["goal"] - 1) for v in r["wall_stress"].values()) if "goal" in r else None
+        add("the stress is first released to 2e-5, i.e. p_r/p_s = 1e-3, for all walls",
+            (f"every wall within {_pct(wr)} of p_r; " if wr is not None else "")
+            + f"solid fraction {r['solid_fraction']:.3f}, C {r['coordination']:.2f}, {r['rattlers']} rattlers",
+            "wall stresses of the released state", "✓" if wr is not None and wr < 0.01 else "–")
+        add("kc/kp = 0.2, mu_r = mu_o = 0.2, gamma_r/gamma = gamma_o/gamma = 0.1 (else Table 2 of Luding 2008)",
+            f"material set '{b['material']}', kc/kp = {b['kc_over_kp']:g}", "the particles' MesoMat",
+            "✓" if b["material"] == "appendixF" and abs(b["kc_over_kp"] - 0.2) < 1e-12 else "✗")
+    if runs:
+        same = len(L0s) == 1
+        add("all simulations start from the same configuration, the released state (0, 0)",
+            f"{len(runs)} runs, {len(L0s)} distinct L0", "the L0 of every cyclic run's JSON", "✓" if same else "✗")
+        cyc = sorted({j["cycles"] for j, _ in runs.values()})
+        add("each test, when it reaches zero strain, is repeated for three more cycles", f"cycles per run: {cyc}",
+            "cycles of every run", "✓" if cyc == [4] else "✗")
+    # -- tension
+    t = {a: _slowest(runs, "tension", a) for a in amps["tension"]}
+    small = [a for a in amps["tension"] if a < 0.2]
+    if t and small and 0.2 in t:
+        rev = {a: max(c["loop_over_elastic"] for c in t[a][1][1:]) for a in amps["tension"]}
+        add("repeated cyclic loading remains on the same branch with positive slope (elastic)",
+            ", ".join(f"{a:g}: {_pct(rev[a])}" for a in small),
+            "largest loop area of cycles 2–4 against the elastic energy of the force swing, amplitudes below 0.2 "
+            "(slowest run); reversible: <= 5 %", "✓" if max(rev[a] for a in small) <= 0.05 else "✗")
+        far = {a: max(abs(c["peak"]) for c in t[a][1]) for a in amps["tension"]}
+        add("while it is not completely, perfectly detached",
+            "tensile force at every cycle's far point: " + ", ".join(f"{a:g}: {far[a]:.3g}" for a in amps["tension"]),
+            "|F|/(kp d0) at each amplitude's peak (> 0: still attached)", "✓" if all(far[a] > 0 for a in far) else "✗")
+        ratio = rev[0.2] / max(rev[a] for a in small)
+        add("for the largest amplitude (0.2) the behaviour is not perfectly elastic, first plastic effects",
+            f"loop of cycles 2–4 at 0.2: {_pct(rev[0.2])}, {ratio:.1f} x the smaller amplitudes' largest",
+            "loop area against elastic energy, 0.2 against the smaller amplitudes; plastic effects: > 2 x",
+            "✓" if ratio > 2 else "✗")
+    # -- the pull and Dx = 0.2
+    if pull:
+        at = (pull.get("planes_at_marks") or {}).get("0.2")
+        p0 = pull.get("planes_at_start")
+        if at and p0:
+            add("at 0.2 d0 the sample has mostly, but not completely lost mechanical contact",
+                f"contacts across the weakest plane {at['weakest']['count']} of {p0['weakest']['count']} at Dx = 0; "
+                f"in total {at.get('total', '–')} of {p0.get('total', '–')}",
+                "contacts in overlap crossing the weakest plane (and all of them) at Dx = 0.2 in the pull, against Dx = 0; "
+                "mostly lost: < 50 % left, not completely: > 0",
+                "✓" if 0 < at["weakest"]["count"] < 0.5 * p0["weakest"]["count"] else "✗")
+        else:
+            add("at 0.2 d0 the sample has mostly, but not completely lost mechanical contact", "–",
+                "contacts across the weakest plane at Dx = 0.2 (not recorded by this campaign's pull)", "–")
+        lc = pull.get("last_contact_Dx")
+        add("complete detachment at much higher amplitude than expected from a two-particle interaction",
+            f"last chain at Dx = {lc:.2f}" if lc else "–",
+            "last chain of contacts between the walls against a pair's separation from the sintered overlap to "
+            "detachment (about 0.05 d0): much higher: > 20 x", "✓" if lc and lc > 1.0 else "–")
+    if t and 0.2 in t:
+        rev2 = max(c["loop_over_elastic"] for c in t[0.2][1][1:])
+        add("the reversible, elastic un-/re-loading stretches to four times phi_f d0 and higher",
+            f"loop of cycles 2–4 at Dx = 0.2 = {0.2 / PHI_F:g} phi_f d0: {_pct(rev2)}",
+            "loop area against elastic energy at Dx = 4 phi_f d0; elastic: <= 10 %", "✓" if rev2 <= 0.10 else "✗")
+    rate = [(a, t[a]) for a in amps["tension"] if len([k for k in runs if k[:2] == ("tension", a)]) > 1]
+    if rate:
+        worst = 0.0
+        for a, _ in rate:
+            ks = sorted(k for k in runs if k[:2] == ("tension", a))[-2:]
+            p1, p2 = ([c["peak"] for c in runs[k][1]] for k in ks)
+            worst = max(worst, max(abs(x / y - 1) for x, y in zip(p1, p2)))
+        add("thick lines, four times slower: not an effect of viscosity (tension)",
+            f"largest change of a cycle's peak between the two slowest periods: {_pct(worst)}",
+            "every cycle's peak, fast against 4 x slower; quasi-static: <= 5 %", "✓" if worst <= 0.05 else "✗")
+    if pull:
+        marks = [round(s["mark"], 2) for s in pull.get("snapshots", [])]
+        add("snapshots at Dx = 0, 0.81, 1.8, 3.1, 4.7, 7.4 and 8.6 (a)–(g)", f"snapshots at {marks}",
+            "the pull's snapshot marks", "✓" if marks == [0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6] else "✗")
+        add("the contact surface has developed a roughness of the size of several primary particles", "–",
+            "not measured (the snapshots show it)", "–")
+        g = pull.get("first_gap_Dx")
+        add("the first visible gap is opened at Dx ~ d0", f"Dx = {g:.2f}" if g else "–",
+            pull.get("gap_criterion", "") + "; ~ d0: 0.6–1.4", "✓" if g and 0.6 <= g <= 1.4 else "✗")
+        add("the contact is lost only at Dx ~ 8 d0, when the last of the thin threads breaks",
+            f"Dx = {lc:.2f}" if lc else "–", "no chain of contacts in overlap from wall to wall; ~ 8 d0: 6–10",
+            "✓" if lc and 6 <= lc <= 10 else "✗")
+        add("the contact is completely lost only at the extreme, final deformation (g)",
+            f"last chain at {lc:.2f}" if lc else "–", "between snapshots (f) 7.4 and (g) 8.6",
+            "✓" if lc and 7.4 < lc <= 8.6 else ("◐" if lc and 6 <= lc <= 10 else "✗"))
+        pdx = pull.get("max_tension_Dx")
+        add("the elastic, irreversible tension branch is strongly developed only for Dx ~ d0/5",
+            f"peak tension {-pull['max_tension']:.3g} at Dx = {pdx:.2f}", "Dx of the pull's largest tension; ~ 0.2: 0.1–0.4",
+            "✓" if 0.1 <= pdx <= 0.4 else "✗")
+    # -- compression
+    c = {a: _slowest(runs, "compression", a) for a in amps["compression"]}
+    if c and all(a in c for a in (0.05, 0.1, 0.2, 0.3)):
+        rv = {a: max(x["loop_over_elastic"] for x in c[a][1][1:]) for a in c}
+        sets = {a: c[a][1][-1]["set"] for a in c}
+        add("the smallest amplitudes remain elastic throughout", f"0.05: loop {_pct(rv[0.05])}, set {_pct(sets[0.05])}",
+            "loop of cycles 2–4 against elastic energy and the permanent set after the last cycle at Dx = 0.05; "
+            "elastic: loop <= 5 %, set <= 5 % of the amplitude", "✓" if rv[0.05] <= 0.05 and sets[0.05] <= 0.05 else "✗")
+        add("plastic deformation kicks in for Dx > 0.1 (the red curve)",
+            "set " + ", ".join(f"{a:g}: {_pct(sets[a])}" for a in sorted(sets)),
+            "permanent set after the last cycle against the amplitude; kicks in: the set at 0.2 over 1.5 x that at 0.1",
+            "✓" if sets[0.2] > 1.5 * sets[0.1] else "✗")
+        drift = abs(c[0.2][1][-1]["set"] - c[0.2][1][1]["set"])  # a fraction of the amplitude
+        add("unloading and re-loading on the same branch: a new elastic branch (Dx = 0.2)",
+            f"loop of cycles 2–4 {_pct(rv[0.2])}, set changes by {drift * 0.2:.2g} d0 ({_pct(drift)} of the amplitude) "
+            "from cycle 2 to 4",
+            "loop against elastic energy <= 5 % and set constant within 1 % of the amplitude over cycles 2–4",
+            "✓" if rv[0.2] <= 0.05 and drift <= 0.01 else "◐")
+        pk = [x["peak"] for x in c[0.3][1]]
+        st3 = [x["set"] for x in c[0.3][1]]
+        lp3 = [x["loop_over_elastic"] for x in c[0.3][1]]
+        add("at 0.3 (yellow): continuous damage by irreversible re-arrangement during each cycle",
+            f"peaks {', '.join(f'{x:.3g}' for x in pk)}; sets {', '.join(_pct(x) for x in st3)}; "
+            f"loops {', '.join(_pct(x) for x in lp3)}",
+            "peak, set and loop of each cycle at 0.3; continuing damage: loop of cycles 2–4 above 5 % and above "
+            "the 0.2 loop", "✓" if min(lp3[1:]) > 0.05 and min(lp3[1:]) > rv[0.2] else "✗")
+        worst = 0.0
+        for a in c:
+            ks = sorted(k for k in runs if k[:2] == ("compression", a))[-2:]
+            if len(ks) == 2:
+                p1, p2 = ([x["peak"] for x in runs[k][1]] for k in ks)
+                worst = max(worst, max(abs(x / y - 1) for x, y in zip(p1, p2)))
+        add("thick lines four times slower: small quantitative difference, qualitative agreement (compression)",
+            f"largest change of a cycle's peak: {_pct(worst)}", "every cycle's peak, fast against 4 x slower; <= 5 %",
+            "✓" if worst <= 0.05 else "✗")
+    f19 = _load(d, "fig19.json")
+    big = (f19 or {}).get("amplitudes") or []
+    add("Fig. 19: the continuous plastic deformation of the sample at large strains",
+        f"compression to Dx = {max(big):g}" if big else "–",
+        "a compression well beyond the cyclic amplitudes (> 1 d0) with snapshots",
+        "✓" if big and max(big) > 1.0 else "✗")
+    return out
+
+
+def markdown(items, source):
+    lines = [f"# Appendix F, statement by statement ({source})", "",
+             "Computed by `python3 -m mesocontact.statements DIR` from the files in this directory; "
+             "✓ met, ◐ in part, ✗ not met, – not in these files.", "",
+             "| # | the paper | the project | measured as | verdict |", "|---|---|---|---|---|"]
+    for s in items:
+        note = f" ({s['note']})" if s["note"] else ""
+        lines.append(f"| {s['n']} | {s['paper']} | {s['project']} | {s['definition']}{note} | {s['verdict']} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv):
+    if len(argv) != 1 or not os.path.isdir(argv[0]):
+        sys.exit("usage: python3 -m mesocontact.statements DOCS_DIR (a campaign's docs directory)")
+    items = statements(argv[0])
+    with open(os.path.join(argv[0], "statements.json"), "w") as f:
+        json.dump(items, f, indent=1, ensure_ascii=False)
+    with open(os.path.join(argv[0], "statements.md"), "w") as f:
+        f.write(markdown(items, argv[0]))
+    print(markdown(items, argv[0]))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

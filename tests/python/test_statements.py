@@ -1,0 +1,31 @@
+"""mesocontact.statements on the committed campaign of docs/tablet: one row per statement of
+Appendix F, numbers read from the files (checked here against the files directly)."""
+import json
+import os
+import unittest
+
+from mesocontact import statements
+
+DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
+
+
+class TestStatements(unittest.TestCase):
+    def test_committed_campaign(self):
+        items = statements.statements(DOCS)
+        self.assertEqual(len(items), 27)
+        self.assertTrue(all(s["verdict"] in ("✓", "◐", "✗", "–") for s in items))
+        with open(os.path.join(DOCS, "tension-Dx0.2-P480.json")) as f:
+            L0 = json.load(f)["L0"]
+        first = items[0]
+        self.assertIn(f"{L0:.5f}", first["project"])
+        expect = "✓" if abs(L0 / 0.115 - 1) <= 0.01 else ("◐" if abs(L0 / 0.115 - 1) <= 0.05 else "✗")
+        self.assertEqual(first["verdict"], expect)
+        with open(os.path.join(DOCS, "fig17.json")) as f:
+            last = json.load(f)["last_contact_Dx"]
+        row = next(s for s in items if s["paper"].startswith("the contact is lost only at Dx ~ 8"))
+        self.assertEqual(row["project"], f"Dx = {last:.2f}")
+        self.assertEqual(row["verdict"], "✓" if 6 <= last <= 10 else "✗")
+
+
+if __name__ == "__main__":
+    unittest.main()
