@@ -596,6 +596,81 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     return summary
 
 
+FIG19_DX = (0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0)  # compression marks of Fig. 19's panels (a)-(g) [d0]
+
+
+def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True, dx_marks=FIG19_DX, tag="fig19"):
+    """Fig. 19: monotonic unconfined compression to Dx = -until (3 d0: ten times the largest
+    cyclic amplitude, a quarter of the sample's length), the walls moving in at ``speed``
+    [mm/us] (the pull's), with lettered PNG and VTK snapshots at ``dx_marks`` and, at each mark,
+    the sample's lateral widths, solid fraction and coordination (the continuous plastic
+    deformation: the sample flattens and spreads while the force stays on a plateau). At the
+    pull's time step (large strains are beyond the time-step study's cycles)."""
+    speed = speed or PULL_SPEED
+    prepare(outdir, quick, progress)
+    O.dt *= DT_FACTORS["pull"]
+    test, f0 = _test(progress)
+    bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
+    marks, snaps = list(dx_marks), []
+    win = _snap.window(margin=1.5 + 0.3 * until)
+
+    def hook(t, row):
+        if marks and -row[1] >= marks[0]:
+            k = len(snaps)
+            label = f"{tag}-{k:02d}"
+            _snap.png(os.path.join(bundle.tmp, label + ".png"),
+                      f"({chr(97 + k)}) compression, Dx = {-row[1]:.2f}, F/(kp d0) = {row[2]:+.3g}", win=win)
+            _snap.vtk(os.path.join(bundle.tmp, tag), k)
+            s = _tablet.stats()
+            wy, wz = _spread_widths()
+            snaps.append({"mark": marks.pop(0), "Dx": row[1], "F": row[2], "png": label + ".png",
+                          "width_y_d0": wy / _tablet.D0, "width_z_d0": wz / _tablet.D0,
+                          "coordination": s["coordination"], "rattlers": s["rattlers"]})
+
+    t0 = time.time()
+    try:
+        rows = test.compress(speed, until=until, every=100, on_record=hook)
+    except BaseException:
+        bundle.discard()
+        raise
+    if f0 is not None:
+        rows[0] = (*rows[0][:2], f0)
+    summary = {"speed": speed, "until": until, "L0": test.L0, "quick": quick, "snapshots": snaps, "dt": O.dt,
+               "max_force": max(r[2] for r in rows), "final_force": rows[-1][2], "steps": O.iter - rows[0][0],
+               "wall_clock_s": time.time() - t0, "strain_at_end": until * _tablet.D0 / test.L0}
+    with bundle:
+        bundle.write_text(tag + ".csv", _csv_text(rows))
+        bundle.write_json(tag + ".json", summary)
+        _plot_compression(rows, snaps, bundle.path(tag + ".png"))
+    return summary
+
+
+def _spread_widths():
+    """The sample's widths in y and z from the spread of the particle centres, sqrt(12) std + d0
+    (exact for centres spread evenly over a slab; a few particles squeezed out barely move it,
+    where they would set the extent)."""
+    import statistics
+    ids = _tablet.sphere_ids()
+    return tuple(math.sqrt(12) * statistics.pstdev(O.bodies[i].state.pos[k] for i in ids) + _tablet.D0 for k in (1, 2))
+
+
+def _plot_compression(rows, snaps, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.plot([-r[1] for r in rows], [r[2] for r in rows], "k-", lw=0.8)
+    for k, s in enumerate(snaps):
+        ax.plot(-s["Dx"], s["F"], "o", color="tab:red", ms=4)
+        ax.annotate(f"({chr(97 + k)})", (-s["Dx"], s["F"]), textcoords="offset points", xytext=(3, 5), fontsize=8)
+    ax.set_xlabel("compression (L0 - L)/d0")
+    ax.set_ylabel("F/(kp d0)  [compressive > 0]")
+    ax.set_title("Fig. 19: unconfined compression to large strain, snapshots (a)-(g)", fontsize=10)
+    fig.tight_layout()
+    _out.savefig_atomic(fig, png, dpi=130)
+    plt.close(fig)
+
+
 FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", "contacts"), ("full", "all", "contacts"),
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
@@ -719,7 +794,8 @@ def parse_args(figure, argv):
                    help="fig16, fig18: comma-separated amplitudes that also run at the slower periods (default: all)")
     p.add_argument("--no-run", action="store_true", help="rates: only the periods whose runs are complete")
     p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
-    p.add_argument("--until", type=float, default=9.0, help="fig17: pull until Dx = UNTIL (in d0)")
+    p.add_argument("--until", type=float, default=None,
+                   help="fig17: pull until Dx = UNTIL (default 9); fig19: compress until Dx = -UNTIL (default 3) (in d0)")
     p.add_argument("--factors", default=None,
                    help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and the perturbed 1.000001, 1.000002, 0.999999)")
     p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
@@ -761,7 +837,8 @@ def parse_args(figure, argv):
         p.error(f"--runs {','.join(a.runs)}: each must be one of {', '.join(TIMESTEP_RUNS)}")
     periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
-    _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull in d0")
+    if a.until is not None:
+        _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull or compression in d0")
     if a.kc_over_kp is not None and not (math.isfinite(a.kc_over_kp) and 0 <= a.kc_over_kp <= 100):
         p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
     try:  # an unwritable --out fails now, not after the computation
@@ -799,10 +876,9 @@ def _main(figure, a, amps, slow, periods):
         out = cyclic("tension" if figure == "fig16" else "compression", a.out, amps, a.quick, periods,
                      slow_amplitudes=slow)
     elif figure == "fig19":
-        amp = (amps or (0.3,))[-1]
-        out = cyclic("compression", a.out, (amp,), a.quick, periods[:1], snapshot_amplitude=amp, figure="fig19")
+        out = large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0)
     elif figure == "fig17":
-        out = pull(a.out, a.quick, speed=a.speed, until=a.until)
+        out = pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0)
     elif figure == "factors":
         if not a.table:
             factor_run(a.out, a.packing, a.glue, a.drag, a.quick)
@@ -891,7 +967,7 @@ def report(outdir, docsdir):
     for name in ("campaign-plan.json", "campaign-time.json"):  # the campaign's cost, planned and measured
         if os.path.exists(os.path.join(outdir, name)):
             shutil.copy(os.path.join(outdir, name), docsdir)
-    for fig, tag in (("fig17", "fig17"), ("fig19", "fig19-compression-Dx0.3")):
+    for fig, tag in (("fig17", "fig17"), ("fig19", "fig19")):
         pngs = sorted(glob.glob(os.path.join(outdir, fig, f"{tag}-[0-9][0-9].png")))
         if pngs:
             titles = None
@@ -947,7 +1023,8 @@ def _job_steps(figure, cells, t_cross, dt0):
         amps = numbers("amplitudes", TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES)
         return sum(FULL["cycles"] * cycle(p, mode) for _ in amps for p in numbers("periods", PERIODS[mode]))
     if figure == "fig19":
-        return FULL["cycles"] * cycle(numbers("periods", PERIODS["compression"])[0], "compression")
+        until, speed = numbers("until", (3.0,))[0], numbers("speed", (PULL_SPEED,))[0]
+        return int(until * _tablet.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
     if figure == "fig17":
         until, speed = numbers("until", (9.0,))[0], numbers("speed", (PULL_SPEED,))[0]
         return int(until * _tablet.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))

@@ -293,19 +293,28 @@ class Test:
     def pull(self, speed, until=9.0, every=100, on_record=None, stop=None):
         """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until (or, checked
         between chunks of 50 records, until ``stop()`` is true). Returns the recorded rows."""
+        return self._monotonic(1.0, speed, until, every, on_record, stop)
+
+    def compress(self, speed, until=3.0, every=100, on_record=None, stop=None):
+        """Monotonic compression: each wall moves in at ``speed`` [mm/us] until Dx = -until."""
+        if not 0 < until < 0.9 * self.L0 / _tablet.D0:
+            raise ValueError(f"until = {until} is invalid: between 0 and 90 % of the sample's length in d0")
+        return self._monotonic(-1.0, speed, until, every, on_record, stop)
+
+    def _monotonic(self, sign, speed, until, every, on_record, stop):
         if not speed > 0:
             raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
-        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed,
+        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(sign * s, 0, 0), velocity=speed,
                                        label=f"pull_{wid}")
                   for wid, s in ((self.right, 1.0), (self.left, -1.0))]
         self._install(motion, every, on_record)
         self._record()
         t0 = time.time()
         chunk = 50 * every
-        while self._share(self.dx() < until and not (stop and stop()) if self.records else None):
+        while self._share(sign * self.dx() < until and not (stop and stop()) if self.records else None):
             self._run(chunk)
             Test.steps_run += chunk
             if self.progress:
-                print(f"  pull: Dx={self.dx():.3f}/{until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
+                print(f"  {'pull' if sign > 0 else 'compression'}: Dx={self.dx():.3f}/{sign * until:g}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
                       flush=True)
         return self.rows
