@@ -720,7 +720,8 @@ def factor_table(outdir, quick=False):
     import glob
     rows = []
     for prep_dir in sorted(glob.glob(os.path.join(outdir, "factors", "*-*"))):
-        pulls = sorted(glob.glob(os.path.join(root(prep_dir, quick), "pull-*", "pull-*.json")))
+        pulls = [p for p in sorted(glob.glob(os.path.join(root(prep_dir, quick), "pull-*", "pull-*.json")))
+                 if os.path.basename(p) != _out.MANIFEST]
         if not pulls or not os.path.exists(_stages.path("unconfined", prep_dir, quick) + ".json"):
             continue
         with open(_stages.path("unconfined", prep_dir, quick) + ".json") as f:
@@ -749,6 +750,27 @@ def factor_table(outdir, quick=False):
     _out.write_atomic(os.path.join(base, "factors.json"), json.dumps(rows, indent=1))
     _out.write_atomic(os.path.join(base, "factors.md"), "\n".join(md) + "\n")
     return rows
+
+
+def factor_report(outdir, docsdir):
+    """Copies the factor study's files (each preparation's stage descriptions; each pull's CSV,
+    JSON and force plot) from <outdir>/factors/ to <docsdir>/factors/, in the same layout, and
+    writes the table there from the copies (factor_table(docsdir))."""
+    import glob
+    import shutil
+    for prep_dir in sorted(glob.glob(os.path.join(outdir, "factors", "*-*"))):
+        dest = os.path.join(docsdir, "factors", os.path.basename(prep_dir))
+        os.makedirs(dest, exist_ok=True)
+        for f in glob.glob(os.path.join(prep_dir, "*.yade.gz.json")):
+            shutil.copy(f, dest)
+        for bundle in sorted(glob.glob(os.path.join(prep_dir, "pull-*"))):
+            if not _out.complete(bundle):
+                continue
+            os.makedirs(os.path.join(dest, os.path.basename(bundle)), exist_ok=True)
+            tag = os.path.basename(bundle)
+            for ext in ("csv", "json", "png"):
+                shutil.copy(os.path.join(bundle, f"{tag}.{ext}"), os.path.join(dest, tag))
+    return factor_table(docsdir)
 
 
 def _plot_pull(rows, events, png):
@@ -810,6 +832,8 @@ def parse_args(figure, argv):
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
     p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
+    p.add_argument("--report", default=None, metavar="DOCS",
+                   help="factors: copy the study's files to DOCS/factors/ and write the table there from them")
     p.add_argument("--mpi", type=int, default=None, metavar="N",
                    help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
                         " fig17 without crack events and snapshots)")
@@ -880,9 +904,12 @@ def _main(figure, a, amps, slow, periods):
     elif figure == "fig17":
         out = pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0)
     elif figure == "factors":
-        if not a.table:
-            factor_run(a.out, a.packing, a.glue, a.drag, a.quick)
-        out = factor_table(a.out, a.quick)
+        if a.report:
+            out = factor_report(a.out, a.report)
+        else:
+            if not a.table:
+                factor_run(a.out, a.packing, a.glue, a.drag, a.quick)
+            out = factor_table(a.out, a.quick)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")
     if not is_master():
