@@ -301,9 +301,16 @@ class Test:
             raise ValueError(f"until = {until} is invalid: between 0 and 90 % of the sample's length in d0")
         return self._monotonic(-1.0, speed, until, every, on_record, stop)
 
+    MAX_STEPS = 10 ** 8  # a monotonic test that would need more steps is refused, not run for days
+
     def _monotonic(self, sign, speed, until, every, on_record, stop):
         if not speed > 0:
             raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
+        need = until * _tablet.D0 / (2 * speed * O.dt)  # both walls move
+        if not need <= self.MAX_STEPS:
+            raise ValueError(f"speed = {speed:g} is invalid: the walls would need {need:.3g} steps to reach "
+                             f"Dx = {sign * until:g} (at most {self.MAX_STEPS:.0e}; speed >= "
+                             f"{until * _tablet.D0 / (2 * self.MAX_STEPS * O.dt):.3g} mm/us)")
         motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(sign * s, 0, 0), velocity=speed,
                                        label=f"pull_{wid}")
                   for wid, s in ((self.right, 1.0), (self.left, -1.0))]

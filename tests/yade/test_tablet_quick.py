@@ -135,6 +135,11 @@ try:
     check(False, "adoptMaterials refuses a change of k1")
 except ValueError as e:
     check("k1" in str(e), f"adoptMaterials refuses a change of k1: {e}")
+try:  # a pull that would take forever is refused before it starts (it used to hang)
+    test.pull(1e-300, until=9.0)
+    check(False, "pull at speed 1e-300 refused")
+except ValueError as e:
+    check(str(e).startswith("speed = 1e-300 is invalid"), f"pull at speed 1e-300 refused: {e}")
 try:
     test.cycles("shear", 0.1)
     check(False, "bad mode rejected")
