@@ -683,8 +683,12 @@ def factor_dir(outdir, packing, glue):
 def factor_run(outdir, packing, glue, drag, quick=False, progress=True):
     """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
     factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
-    last chain's break (bundle pull-<drag>)."""
+    last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes)."""
     out = factor_dir(outdir, packing, glue)
+    done = os.path.join(root(out, quick), f"pull-{drag}")
+    if _out.complete(done):  # made by an earlier job: read back, not repeated
+        with open(os.path.join(done, f"pull-{drag}.json")) as f:
+            return json.load(f)
     return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol={"packing": packing, "glue": glue},
                 drag=drag, stop_after_last=1.0, until=12.0)
 
