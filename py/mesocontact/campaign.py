@@ -71,10 +71,21 @@ GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visi
 DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
 
 
+# The preparation the campaign's tests start from (tablet.prepare's packing and glue; the factor
+# study, docs/tablet/factors.md, chose it). Every run records it; a run made from another
+# preparation is not read back but made again.
+PROTOCOL = {"packing": "full", "glue": "loading"}
+
+
+def _protocol_of(info):
+    return dict(PROTOCOL, **{k: v for k, v in (info.get("protocol") or {"packing": "full", "glue": "loading"}).items()})
+
+
 def prepare(outdir, quick=False, progress=True, **tablet_kw):
     """The unconfined start of the tests loaded into O, with the released state it is made from
-    (each made once and reused: stages.ensure); returns the description."""
-    return _stages.ensure("unconfined", outdir, quick, progress=progress, **tablet_kw)
+    (each made once and reused: stages.ensure), by the campaign's PROTOCOL unless tablet_kw
+    says otherwise; returns the description."""
+    return _stages.ensure("unconfined", outdir, quick, progress=progress, **dict(PROTOCOL, **tablet_kw))
 
 
 def run_name(mode, amplitude, period, prefix=""):
@@ -135,7 +146,12 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     where = run_dir(outdir, name, quick)
     if hook is None and _out.complete(where):
         with open(os.path.join(where, name + ".json")) as f:
-            return json.load(f), read_csv(os.path.join(where, name + ".csv"))
+            info = json.load(f)
+        if _protocol_of(info) == PROTOCOL:
+            return info, read_csv(os.path.join(where, name + ".csv"))
+        if progress:
+            print(f"{name}: the run in {where} was made from another preparation ({_protocol_of(info)}): made again",
+                  flush=True)
     n_cycles = cycles or (QUICK if quick else FULL)["cycles"]
     t0 = time.time()
     prepare(outdir, quick, progress and is_master())
@@ -161,7 +177,8 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
             "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
-            "mpi_ranks": _MPY.numThreads if _MPY else 1, "dt_factor": dt_factor, "final_F": rows[-1][2]}
+            "mpi_ranks": _MPY.numThreads if _MPY else 1, "dt_factor": dt_factor, "final_F": rows[-1][2],
+            "protocol": dict(PROTOCOL)}
     if energy:
         info["energy_balance"] = test.energy_balance()
     if bundle is None:
@@ -581,7 +598,7 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
                                  "in the central 60 % of the height, between the walls",
                    first_gap_Dx_by_area={f"{k:g}": next((d for d, a in events["gap_area"] if a >= k), None)
                                          for k in (0.5 * GAP_AREA, GAP_AREA, 2 * GAP_AREA)},
-                   protocol=dict(protocol or {}), drag=drag,
+                   protocol=dict(PROTOCOL, **(protocol or {})), drag=drag,
                    mpi_ranks=_MPY.numThreads if _MPY else 1, dt=O.dt, dt_factor=dt_factor,
                    steps=O.iter - rows[0][0], ms_per_step=1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]))
     if energy:
@@ -636,6 +653,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
     if f0 is not None:
         rows[0] = (*rows[0][:2], f0)
     summary = {"speed": speed, "until": until, "L0": test.L0, "quick": quick, "snapshots": snaps, "dt": O.dt,
+               "protocol": dict(PROTOCOL),
                "max_force": max(r[2] for r in rows), "final_force": rows[-1][2], "steps": O.iter - rows[0][0],
                "wall_clock_s": time.time() - t0, "strain_at_end": until * _tablet.D0 / test.L0}
     with bundle:

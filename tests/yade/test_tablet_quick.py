@@ -203,6 +203,12 @@ try:
 except ValueError as e:
     check(name in str(e), f"restore refuses a tampered CSV: {e}")
 
+# Every run records the preparation it was made from; a file without it is of the first protocol.
+protos = [json.load(open(os.path.join(campaign.run_dir(out, n, quick=True), n + ".json")))["protocol"]
+          for n in summaries["tension"]["runs"]]
+check(all(p == campaign.PROTOCOL for p in protos) and campaign._protocol_of({}) == {"packing": "full", "glue": "loading"},
+      f"runs record their preparation {protos[0]}")
+
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
 pull = campaign.pull(out, quick=True, speed=3 * campaign.PULL_SPEED, progress=False)  # 3x faster: the protocol, not the figure
