@@ -767,6 +767,21 @@ def factor_table(outdir, quick=False):
                   f"{wp['count']} ({r['mean_at_peak']:.0f}), {wp['from_left_d0']:.2f} / {wp['from_right_d0']:.2f} | "
                   + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float)) + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
                   f"{fmt(r['mean_force_after_last_chain'], '.2g')} |")
+    md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
+           "weakest plane at the peak, its distance from the nearer loading wall [d0]; first gap; last chain.", ""]
+    key = lambda r: (r["packing"], r["glue"], r["drag"])  # noqa: E731
+    for k, name in enumerate(("packing", "glue", "drag")):
+        for a in rows:
+            for b in rows:
+                ka, kb = key(a), key(b)
+                if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(3) if j != k):
+                    def say(r):
+                        w = r["weakest_at_peak"]
+                        return (f"{r[name]}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
+                                f"{min(w['from_left_d0'], w['from_right_d0']):.2f} from a wall, first gap "
+                                f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
+                    others = ", ".join(f"{n} {v}" for j, (n, v) in enumerate(zip(("packing", "glue", "drag"), ka)) if j != k)
+                    md.append(f"- {name} ({others}): {say(a)} | {say(b)}")
     base = os.path.join(outdir, "factors", "quick" if quick else "")
     os.makedirs(base, exist_ok=True)
     _out.write_atomic(os.path.join(base, "factors.json"), json.dumps(rows, indent=1))
