@@ -12,6 +12,8 @@ import time
 
 from mesocontact import batch, campaign
 
+batch.help_requested(sys.argv[1:], sys.argv[0])
+
 args = batch.argv(sys.argv[1:], positional="figure", figure=None, amplitudes=None, periods=None, slow_amplitudes=None,
                   out=None, quick=False, speed=None, material=None, kc_over_kp=None, n=None, no_run=False, factors=None, runs=None,
                   packing=None, glue=None, drag=None, table=False, report=None)

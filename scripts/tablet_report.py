@@ -2,6 +2,8 @@
 #   yade -n -x scripts/tablet_report.py OUT DOCS
 import sys
 
-from mesocontact import campaign
+from mesocontact import batch, campaign
+
+batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 
 campaign.report(sys.argv[1], sys.argv[2])

@@ -3,7 +3,9 @@
 #   yade -n -x scripts/tablet_restore.py DOCS OUT
 import sys
 
-from mesocontact import campaign
+from mesocontact import batch, campaign
+
+batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 
 names = campaign.restore(sys.argv[1], sys.argv[2])
 print(f"restored {len(names)} runs into {sys.argv[2]}/runs: {', '.join(names)}", flush=True)

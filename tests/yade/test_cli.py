@@ -61,6 +61,19 @@ ok = rc == 0 and "usage" in text and not os.path.exists(os.path.join(tmp, "--hel
 print(("ok   " if ok else "FAIL ") + f"figure.py --help: rc {rc}, {secs:.0f} s, folder '--help': {os.path.exists('--help')}", flush=True)
 if not ok:
     failures.append("figure.py --help")
+# Every script without argparse honours --help too (pair_batch.py used to run a job), and the two
+# that take positional arguments refuse a wrong count with their usage.
+for script in ("pair_batch.py", "tablet_batch.py", "tablet_report.py", "tablet_restore.py"):
+    rc, text, secs = run(script, "--help")
+    ok = rc == 0 and "yade" in text and not os.path.exists(os.path.join(tmp, "results")) and secs < 60
+    print(("ok   " if ok else "FAIL ") + f"{script} --help: rc {rc}, {secs:.0f} s", flush=True)
+    if not ok:
+        failures.append(f"{script} --help")
+rc, text, secs = run("tablet_report.py", "onlyone")
+ok = rc == 2 and "expected 2 argument(s)" in text
+print(("ok   " if ok else "FAIL ") + f"tablet_report.py with one argument: rc {rc}", flush=True)
+if not ok:
+    failures.append("tablet_report.py onlyone")
 # The atlas refuses what it does not have, naming it, before any collision.
 for args, says in ((["4"], "figure 4 of the long paper"), (["7", "--paper", "short"], "figure 7 of the short paper"),
                    ([], "give a figure number or --all"), (["5", "--all"], "give a figure number or --all"),
