@@ -46,7 +46,8 @@ WALLS = ("left", "right", "bottom", "top", "back", "front")  # YADE's aabbWalls 
 PACKINGS = ("full", "frictionless")  # the law while the gas is compacted: the full law, or without friction,
 #                                      rolling, torsion and adhesion (the full law switched on for sintering)
 PACKING_RATIO = 0.1                  # the frictionless packing's stress, over p_s
-GLUES = ("loading", "all")           # the walls made adhesive after sintering: the two x walls, or all six
+GLUES = ("loading", "all", "sinter")  # the walls made adhesive: the two x walls after sintering, all six after
+#                                      sintering, or all six from the start of sintering (the first protocol's)
 
 
 # Particle parameter sets (MesoMat keywords, the paper's units): Table 2 of Luding 2008 and the
@@ -418,8 +419,8 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     ``packing='frictionless'`` compacts the gas without friction, rolling, torsion and adhesion
     (the particles' normal law otherwise) and lets it come to rest at PACKING_RATIO p_s with the
     drag (a dense random packing), then switches the full law on for sintering, each contact
-    keeping its history; ``glue='all'`` makes all six walls adhesive after sintering
-    (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined)."""
+    keeping its history; ``glue='all'`` makes all six walls adhesive after sintering, ``'sinter'``
+    before it (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined)."""
     if packing not in PACKINGS:
         raise ValueError(f"packing = {packing!r} is invalid: one of {PACKINGS}")
     if glue not in GLUES:
@@ -440,11 +441,13 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
         _set_goal(SINTER_STRESS)
     else:
         info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
+    if glue == "sinter":  # sintered against six adhesive walls
+        make_adhesive_walls([wall_ids()[w] for w in WALLS])
     info["sintered"] = _relax(SINTER_STRESS, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
     # The loading walls are glued to the sample where it was sintered against them: released
     # against the smooth mould first, only the few particles still touching at p_r (12 and 16
     # of about 144 per face) held it, and the pull tore it off a wall.
-    make_adhesive_walls([wall_ids()[w] for w in (WALLS if glue == "all" else ("left", "right"))])
+    make_adhesive_walls([wall_ids()[w] for w in (("left", "right") if glue == "loading" else WALLS)])
     info["loading_wall_contacts_sintered"] = {k: _wall_contacts(k) for k in ("left", "right")}
     _release(RELEASE_RATIO * SINTER_STRESS, release_steps, progress)
     info["released"] = _relax(RELEASE_RATIO * SINTER_STRESS, tol_stress, tol_ke, "release", progress)
