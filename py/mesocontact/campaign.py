@@ -752,7 +752,16 @@ def factor_table(outdir, quick=False):
             with open(js) as f:
                 rows.append(_factor_row(st, json.load(f)))
     fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
-    md = ["| packing | glue | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
+    md = ["# The tested tablet: the factor study", "",
+          "Written by `yade -n -x scripts/tablet_factors.py --out DIR --table` from the files under "
+          "`factors/` (each preparation's stage descriptions, each pull's CSV and JSON). One row per pull "
+          "(Fig. 17's pull at the campaign's speed, ended 1 Dx after the last chain broke). Sample columns: "
+          "after sintering / after release / at the test start (L0 between the loading walls; ν and C of the "
+          "stage's statistics). Weakest plane: the plane x = const with the fewest contacts in overlap across "
+          "it, at least 0.5 d0 from the walls' faces, planes 0.25 d0 apart; n (the mean over the planes); its "
+          "distances from the left and right loading walls. First gap at three area thresholds; last chain: "
+          "no chain of contacts from wall to wall.", "",
+          "| packing | glue | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
           "rattlers test | peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
           "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 13]
     for r in rows:
@@ -767,6 +776,15 @@ def factor_table(outdir, quick=False):
                   f"{wp['count']} ({r['mean_at_peak']:.0f}), {wp['from_left_d0']:.2f} / {wp['from_right_d0']:.2f} | "
                   + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float)) + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
                   f"{fmt(r['mean_force_after_last_chain'], '.2g')} |")
+    md += ["", "Against the criteria of the tested sample (L0 = 0.115 within 1 %; weakest plane at the peak at "
+           "least 3 d0 from both loading walls; first gap 0.6–1.4; last chain 6–10):", ""]
+    for r in rows:
+        w = r["weakest_at_peak"]
+        checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": min(w["from_left_d0"], w["from_right_d0"]) >= 3,
+                  "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
+                  "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
+        md.append(f"- {r['packing']}, {r['glue']}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
+                  + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
     md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
            "weakest plane at the peak, its distance from the nearer loading wall [d0]; first gap; last chain.", ""]
     key = lambda r: (r["packing"], r["glue"], r["drag"])  # noqa: E731
