@@ -723,7 +723,13 @@ def _factor_row(st, p):
         prof = p[key]
         prof.setdefault("length_d0", p["L0"] / _tablet.D0 + (prof.get("Dx") or 0.0))
         prof["weakest"] = _uni.weakest_plane(prof)
-    return {"packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
+    p0 = p["planes_at_start"]
+    length = p0["length_d0"]
+    near = [c for x, c in zip(p0["x"], p0["count"]) if 0.5 <= x <= 1.5 or length - 1.5 <= x <= length - 0.5]
+    bulk = [c for x, c in zip(p0["x"], p0["count"]) if 3 <= x <= length - 3]
+    return {"near_wall_mean_at_start": sum(near) / len(near) if near else None,
+            "bulk_mean_at_start": sum(bulk) / len(bulk) if bulk else None,
+            "packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
@@ -753,7 +759,7 @@ def factor_table(outdir, quick=False):
                 rows.append(_factor_row(st, json.load(f)))
     fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
     md = ["# The tested tablet: the factor study", "",
-          "Written by `yade -n -x scripts/tablet_factors.py --out DIR --table` from the files under "
+          "Written by `yade -n -x scripts/tablet_factors.py --out DIR --table` (or `--report DOCS`) from the files under "
           "`factors/` (each preparation's stage descriptions, each pull's CSV and JSON). One row per pull "
           "(Fig. 17's pull at the campaign's speed, ended 1 Dx after the last chain broke). Sample columns: "
           "after sintering / after release / at the test start (L0 between the loading walls; ν and C of the "
@@ -762,8 +768,9 @@ def factor_table(outdir, quick=False):
           "distances from the left and right loading walls. First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
           "| packing | glue | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
-          "rattlers test | peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 13]
+          "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
+          "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 14]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
         w0, wp = r["weakest_at_start"], r["weakest_at_peak"]
@@ -771,6 +778,7 @@ def factor_table(outdir, quick=False):
         md.append(f"| {r['packing']} | {r['glue']} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
+                  f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
                   f"{fmt(r['peak_tension'], '.4g')} at {fmt(r['peak_Dx'], '.3f')} | "
                   f"{w0['count']} ({r['mean_at_start']:.0f}), {w0['from_left_d0']:.2f} / {w0['from_right_d0']:.2f} | "
                   f"{wp['count']} ({r['mean_at_peak']:.0f}), {wp['from_left_d0']:.2f} / {wp['from_right_d0']:.2f} | "
