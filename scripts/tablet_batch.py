@@ -16,7 +16,7 @@ batch.help_requested(sys.argv[1:], sys.argv[0])
 
 args = batch.argv(sys.argv[1:], positional="figure", figure=None, amplitudes=None, periods=None, slow_amplitudes=None,
                   out=None, quick=False, speed=None, material=None, kc_over_kp=None, n=None, no_run=False, factors=None, runs=None,
-                  packing=None, glue=None, drag=None, table=False, report=None)
+                  packing=None, glue=None, drag=None, table=False, report=None, rel_std=None)
 if not args or args[0] not in campaign.FIGURES:
     sys.exit(f"tablet_batch.py: the first argument (table column 'figure') must be one of {campaign.FIGURES}, not "
              f"{args[0] if args else 'nothing'!r}")

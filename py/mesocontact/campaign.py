@@ -74,11 +74,12 @@ DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
 # The preparation the campaign's tests start from (tablet.prepare's packing and glue; the factor
 # study, docs/tablet/factors.md, chose it). Every run records it; a run made from another
 # preparation is not read back but made again.
-PROTOCOL = {"packing": "full", "glue": "loading"}
+FIRST_PROTOCOL = {"packing": "full", "glue": "loading", "rel_std": 0.05}  # what a run without a record was made from
+PROTOCOL = dict(FIRST_PROTOCOL)
 
 
 def _protocol_of(info):
-    return dict(PROTOCOL, **{k: v for k, v in (info.get("protocol") or {"packing": "full", "glue": "loading"}).items()})
+    return dict(FIRST_PROTOCOL, **(info.get("protocol") or {}))
 
 
 def prepare(outdir, quick=False, progress=True, **tablet_kw):
@@ -693,21 +694,21 @@ FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", 
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
 
-def factor_dir(outdir, packing, glue):
+def factor_dir(outdir, packing, glue, rel_std=0.05):
     """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
-    return os.path.join(outdir, "factors", f"{packing}-{glue}")
+    return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else ""))
 
 
-def factor_run(outdir, packing, glue, drag, quick=False, progress=True):
+def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05):
     """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
     factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
     last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes)."""
-    out = factor_dir(outdir, packing, glue)
+    out = factor_dir(outdir, packing, glue, rel_std)
     done = os.path.join(root(out, quick), f"pull-{drag}")
     if _out.complete(done):  # made by an earlier job: read back, not repeated
         with open(os.path.join(done, f"pull-{drag}.json")) as f:
             return json.load(f)
-    return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol={"packing": packing, "glue": glue},
+    return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol={"packing": packing, "glue": glue, "rel_std": rel_std},
                 drag=drag, stop_after_last=1.0, until=12.0)
 
 
@@ -730,6 +731,7 @@ def _factor_row(st, p):
     return {"near_wall_mean_at_start": sum(near) / len(near) if near else None,
             "bulk_mean_at_start": sum(bulk) / len(bulk) if bulk else None,
             "packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
+            "rel_std": st["built"].get("rel_std", 0.05),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
@@ -767,15 +769,15 @@ def factor_table(outdir, quick=False):
           "it, at least 0.5 d0 from the walls' faces, planes 0.25 d0 apart; n (the mean over the planes); its "
           "distances from the left and right loading walls. First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
-          "| packing | glue | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
+          "| packing | glue | radii std | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
           "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
           "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 14]
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 15]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
         w0, wp = r["weakest_at_start"], r["weakest_at_peak"]
         g = r["first_gap_Dx_by_area"]
-        md.append(f"| {r['packing']} | {r['glue']} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
+        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
                   f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
@@ -791,22 +793,24 @@ def factor_table(outdir, quick=False):
         checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": min(w["from_left_d0"], w["from_right_d0"]) >= 3,
                   "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
-        md.append(f"- {r['packing']}, {r['glue']}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
+        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
                   + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
     md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
            "weakest plane at the peak, its distance from the nearer loading wall [d0]; first gap; last chain.", ""]
-    key = lambda r: (r["packing"], r["glue"], r["drag"])  # noqa: E731
-    for k, name in enumerate(("packing", "glue", "drag")):
+    names = ("packing", "glue", "rel_std", "drag")
+    key = lambda r: tuple(r[n] for n in names)  # noqa: E731
+    for k, name in enumerate(names):
         for a in rows:
             for b in rows:
                 ka, kb = key(a), key(b)
-                if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(3) if j != k):
+                if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(len(names)) if j != k):
                     def say(r):
                         w = r["weakest_at_peak"]
                         return (f"{r[name]}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
                                 f"{min(w['from_left_d0'], w['from_right_d0']):.2f} from a wall, first gap "
                                 f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
-                    others = ", ".join(f"{n} {v}" for j, (n, v) in enumerate(zip(("packing", "glue", "drag"), ka)) if j != k)
+                    others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
+                                       for j, (n, v) in enumerate(zip(names, ka)) if j != k)
                     md.append(f"- {name} ({others}): {say(a)} | {say(b)}")
     base = os.path.join(outdir, "factors", "quick" if quick else "")
     os.makedirs(base, exist_ok=True)
@@ -892,6 +896,8 @@ def parse_args(figure, argv):
                    help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")
     p.add_argument("--glue", default="loading", choices=_tablet.GLUES,
                    help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
+    p.add_argument("--rel-std", type=float, default=0.05,
+                   help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
     p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
@@ -971,7 +977,7 @@ def _main(figure, a, amps, slow, periods):
             out = factor_report(a.out, a.report)
         else:
             if not a.table:
-                factor_run(a.out, a.packing, a.glue, a.drag, a.quick)
+                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std)
             out = factor_table(a.out, a.quick)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")

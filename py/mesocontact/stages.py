@@ -44,10 +44,10 @@ def _locked(outdir):
             fcntl.flock(lock, fcntl.LOCK_UN)
 
 
-def _config(quick, material, kc_over_kp, n, packing="full", glue="loading"):
+def _config(quick, material, kc_over_kp, n, packing="full", glue="loading", rel_std=0.05):
     n = n or (QUICK_N if quick else 1728)
     kc = _tablet.particle_material(material)["kc"] / _tablet.KP if kc_over_kp is None else float(kc_over_kp)
-    return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue}
+    return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue, "rel_std": float(rel_std)}
 
 
 class _Unreadable(Exception):
@@ -60,10 +60,11 @@ def _load(p, config):
             info = json.load(f)
         built = info["built"]
         have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"],
-                "packing": built.get("packing", "full"), "glue": built.get("glue", "loading")}  # older files: today's
+                "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),  # older files: the first protocol
+                "rel_std": built.get("rel_std", 0.05)}
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
-    if any(abs(have[k] - config[k]) > 1e-12 if k == "kc_over_kp" else have[k] != config[k] for k in config):
+    if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std") else have[k] != config[k] for k in config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
     try:
         O.load(p)
@@ -96,11 +97,11 @@ def _try_load(p, config, progress):
 
 
 def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True,
-           packing="full", glue="loading"):
+           packing="full", glue="loading", rel_std=0.05):
     """Loads ``stage`` ('released' or 'unconfined') of the tablet in ``outdir`` into O, making
     it first if it is missing; returns its description. quick: the 216-particle tablet;
-    packing, glue: the preparation's options (tablet.prepare)."""
-    config = _config(quick, material, kc_over_kp, n, packing, glue)
+    packing, glue, rel_std: the preparation's options (tablet.prepare)."""
+    config = _config(quick, material, kc_over_kp, n, packing, glue, rel_std)
     p = path(stage, outdir, quick)
     with _locked(outdir):
         info = _try_load(p, config, progress)
@@ -110,8 +111,8 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
             return _tablet.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
-                                   progress=progress, packing=packing, glue=glue)
-    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue)
+                                   progress=progress, packing=packing, glue=glue, rel_std=rel_std)
+    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue, rel_std)
     with _locked(outdir):
         made = _try_load(p, config, progress)  # made meanwhile by another job
         if made is not None:
