@@ -204,9 +204,8 @@ except ValueError as e:
     check(name in str(e), f"restore refuses a tampered CSV: {e}")
 
 # Every run records the preparation it was made from; a file without it is of the first protocol.
-protos = [json.load(open(os.path.join(campaign.run_dir(out, n, quick=True), n + ".json")))["protocol"]
-          for n in summaries["tension"]["runs"]]
-check(all(p == campaign.PROTOCOL for p in protos) and campaign._protocol_of({}) == {"packing": "full", "glue": "loading"},
+protos = [info["protocol"] for m in summaries for info in summaries[m]["runs"].values()]
+check(all(p == campaign.PROTOCOL for p in protos) and campaign._protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
       f"runs record their preparation {protos[0]}")
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
