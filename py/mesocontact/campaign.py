@@ -71,9 +71,9 @@ GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visi
 DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
 
 
-# The preparation the campaign's tests start from (tablet.prepare's packing and glue; the factor
-# study, docs/tablet/factors.md, chose it). Every run records it; a run made from another
-# preparation is not read back but made again.
+# The preparation the campaign's tests start from (tablet.prepare's packing, glue, rel_std; the
+# first protocol until the factor study, docs/tablet/factors/, finds one that meets the paper's
+# sample). Every run records it; a run made from another preparation is made again, not read back.
 FIRST_PROTOCOL = {"packing": "full", "glue": "loading", "rel_std": 0.05}  # what a run without a record was made from
 PROTOCOL = dict(FIRST_PROTOCOL)
 
@@ -135,17 +135,17 @@ def _test(progress):
     return test, f0
 
 
-def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", hook=None, dt_factor=None,
+def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", dt_factor=None,
                energy=False, cycles=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
-    description, peaks per cycle) in the bundle runs/<name>/. A complete bundle is read back, not
-    repeated (unless a hook must see the run). ``dt_factor`` scales tablet.time_step (default
+    description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
+    campaign's PROTOCOL is read back, not repeated. ``dt_factor`` scales tablet.time_step (default
     DT_FACTORS[mode]); ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance)
     to the JSON; ``cycles`` overrides the campaign's cycle count. Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
-    if hook is None and _out.complete(where):
+    if _out.complete(where):
         with open(os.path.join(where, name + ".json")) as f:
             info = json.load(f)
         if _protocol_of(info) == PROTOCOL:
@@ -163,8 +163,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
         test, f0 = _test(progress)
         if energy:
             test.track_energy()
-        rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period,
-                           on_record=hook(test, bundle.tmp) if hook else None)
+        rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period)
         if _MPY is not None:
             rows = _MPY.comm.bcast(rows, root=0)  # the master's rows: one result on every rank
             rows[0] = (*rows[0][:2], f0)
@@ -192,16 +191,11 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     return info, rows
 
 
-def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True,
-           snapshot_amplitude=None, figure=None, slow_amplitudes=None):
+def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None):
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
     times, default PERIODS[mode]; thin lines the first, thick the others; the slower periods
-    only for ``slow_amplitudes`` when given). With snapshot_amplitude, the run of that
-    amplitude at the first period also writes PNG and VTK snapshots at the start, at every peak
-    and at every return (Fig. 19). figure: the name of the JSON and PNG written (default fig16
-    for tension, fig18 for compression), and the prefix of its runs' files when given."""
+    only for ``slow_amplitudes`` when given); writes the figure's bundle (fig16 or fig18)."""
     _uni._check_mode(mode)
-    prefix = f"{figure}-" if figure else ""
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
     periods = tuple(periods or PERIODS[mode])
     runs, data = {}, {}
@@ -209,13 +203,10 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
         for k, period in enumerate(periods):
             if k > 0 and slow_amplitudes is not None and amplitude not in slow_amplitudes:
                 continue
-            hook = None
-            if snapshot_amplitude == amplitude and k == 0:
-                hook = lambda test, where, a=amplitude: _cycle_snapshots(where, mode, a, test)
-            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, prefix, hook)
+            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress)
             runs[info["name"]] = info
             data[info["name"]] = rows
-    fig = figure or ("fig16" if mode == "tension" else "fig18")
+    fig = "fig16" if mode == "tension" else "fig18"
     summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
                "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
     if not is_master():
@@ -431,26 +422,6 @@ def _plot_rates(table, periods, png):
     plt.close(fig)
 
 
-def _cycle_snapshots(outdir, mode, amplitude, test):
-    """A record hook writing snapshots at the start, at the peaks and at the returns into outdir."""
-    state = {"next": 0}
-    tag = "fig19" if mode == "compression" else "fig16-snap"
-    win = _snap.window(margin=1.5, stretch=0.5 * amplitude if mode == "tension" else 0.0)  # one frame for all panels
-
-    def hook(t, row):
-        spc = t.steps_per_cycle
-        it = row[0] - t.rows[0][0]
-        k = state["next"]
-        if it >= k * spc // 2:  # half-cycle marks: 0 start, 1 first peak, 2 first return, ...
-            label = f"{tag}-{mode}-Dx{amplitude:g}-{k:02d}"
-            what = "start" if k == 0 else ("peak" if k % 2 else "return") + f" {(k + 1) // 2}"
-            _snap.png(os.path.join(outdir, label + ".png"),
-                      f"{mode}, amplitude {amplitude:g} d0: {what}, Dx = {row[1]:+.3f}, F/(kp d0) = {row[2]:+.3g}", win=win)
-            _snap.vtk(os.path.join(outdir, f"{tag}-{mode}-Dx{amplitude:g}"), k)
-            state["next"] = k + 1
-    return hook
-
-
 # The paper's colours where its text names them (Fig. 16: red, the largest amplitude of its set,
 # 0.2; Fig. 18: red the curve that turns plastic beyond 0.1, i.e. 0.2, and yellow 0.3).
 AMPLITUDE_COLOURS = {0.025: "tab:blue", 0.05: "tab:green", 0.1: "tab:purple", 0.2: "red", 0.3: "goldenrod"}
@@ -492,10 +463,9 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
                         label=f"Dx = {a:g}, {info['period_crossings']:g} t_w" + (" (4x slower)" if slow else ""))
                 if not slow:  # arrows on the thin line: first loading (black), last re-loading (colour)
                     far = max(range(len(xy)), key=lambda k: abs(xy[k][0]))
-                    spc = info.get("steps_per_cycle")
-                    first_far = next((k for k in range(1, len(xy)) if abs(xy[k][0]) >= 0.999 * abs(xy[far][0])), far)
+                    first_far = next(k for k in range(1, len(xy)) if abs(xy[k][0]) >= 0.999 * abs(xy[far][0]))
                     _arrow(ax, xy[:first_far + 1], 0.55, "black")
-                    last = xy[len(xy) - len(xy) // (info.get("cycles") or 4):] if spc else xy[far:]
+                    last = xy[len(xy) - len(xy) // info["cycles"]:]  # the last cycle
                     lf = max(range(len(last)), key=lambda k: abs(last[k][0]))
                     _arrow(ax, last[lf:], 0.45, colour)
         ax.plot([0], [0], "ko", ms=6, zorder=7)

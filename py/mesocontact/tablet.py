@@ -355,23 +355,22 @@ def make_adhesive_walls(wall_ids):
         kw.update(kc=20 * KP, frictionAngle=math.atan(10.0), dominant=True, label="loading walls")
         mat = _w.MesoMat(**kw)
         O.materials.append(mat)
+    _give_material(wall_ids, mat)
+
+
+def _give_material(ids, mat):
+    """Gives the bodies ``ids`` the material ``mat``; each of their contacts adopts it keeping its
+    history (overlap, delta_max, springs): the force stays continuous."""
     ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
-    for wid in wall_ids:
-        O.bodies[wid].material = mat
-        for I in O.bodies[wid].intrs():
-            ip2.adoptMaterials(I)
+    for i in ids:
+        O.bodies[i].material = mat
+    for I in {(I.id1, I.id2): I for i in ids for I in O.bodies[i].intrs() if I.isReal}.values():
+        ip2.adoptMaterials(I)
 
 
 def _switch_particles(label):
-    """Gives every sphere the material ``label`` and lets each of its contacts adopt it, keeping
-    the contact's history (overlap, delta_max, springs): the force stays continuous."""
-    mat = [m for m in O.materials if m.label == label][0]
-    ip2 = [e for e in O.engines if isinstance(e, _w.InteractionLoop)][0].physDispatcher.functors[0]
-    for i in sphere_ids():
-        O.bodies[i].material = mat
-    for I in O.interactions:
-        if I.isReal:
-            ip2.adoptMaterials(I)
+    """Gives every sphere the material ``label`` (_give_material)."""
+    _give_material(sphere_ids(), [m for m in O.materials if m.label == label][0])
 
 
 def _wall_contacts(name):
@@ -429,11 +428,10 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp)}
     info["built"].update(packing=packing, glue=glue)
     O.engines = engines(_controller(SINTER_STRESS, SINTER_SPEED), reference="lab")
-    if packing == "frictionless":
+    if packing == "frictionless":  # packed to rest at PACKING_RATIO p_s, then the full law and p_s
         O.materials.append(_w.MesoMat(**particle_material(material, kc=0.0, frictionAngle=0.0, muR=0.0, muO=0.0,
                                                           label="packing")))
         _switch_particles("packing")
-    if packing == "frictionless":  # packed to rest at PACKING_RATIO p_s, then the full law and p_s
         _set_goal(PACKING_RATIO * SINTER_STRESS)
         info["compacted"] = _compact(PACKING_RATIO * SINTER_STRESS, compaction_speed, progress)
         info["packed"] = _relax(PACKING_RATIO * SINTER_STRESS, tol_stress, tol_ke, "packing", progress)
