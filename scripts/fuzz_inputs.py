@@ -145,7 +145,7 @@ with quiet_fd2():
     funcs = [(theory.restitution_fa0, ("chi", "eta", "beta")), (theory.chi_c_c, ("eta", "beta")),
              (theory.max_sticking_overlap, ("eta", "beta")), (theory.low_velocity_restitution, ("chi", "eta")),
              (theory.pair_collision, ("v_inf", "k1", "kp", "kc", "phiF", "a12", "m_r")),
-             (theory.plastic_limit_velocity, ("k1", "kp", "phiF", "a12", "m_r")), (params.time_step, ("kp", "m_min")),
+             (theory.plastic_limit_velocity, ("k1", "kp", "phiF", "a12", "m_r")), (params.resolved_step, ("kp", "m_min")),
              (theory.max_overlap, ("v_i", "k1", "kp", "phiF", "a12", "m_r"))]
     for _ in range(args.n):
         f, names = rng.choice(funcs)

@@ -567,17 +567,15 @@ def from_groups(eta, beta, phiF, v_p, radius, density, against="particle"):
 
 def contact_duration(chi, eta, beta, interpolation="linear"):
     """Time with positive overlap of a head-on collision below v_p (fa = 0), in units of
-    sqrt(m_r/k1): a quarter period on k1, the unloading on k2 down to the -kc branch (arccos),
-    then the pull along -kc delta back to delta = 0 (atanh). Raises ValueError if the pair sticks."""
+    sqrt(m_r/k1) (theory.contact_duration in the law's own units: k1 = m_r = a12 = 1). Raises
+    ValueError if the pair sticks."""
     if not 0 < chi <= 1:
         raise ValueError(f"chi = {chi!r} is invalid: must lie in (0, 1] (below v_p)")
     if _theory.en_squared(chi, eta, beta, interpolation) <= 0:
         raise ValueError(f"chi = {chi!r} with eta = {eta!r}, beta = {beta!r}: the pair sticks, the contact does not end")
-    r = _theory.k2_over_k1(chi, eta, interpolation)
-    c = -beta * (r - 1) / (r + beta)          # cos of the k2 phase where f meets -kc delta
-    t = 0.5 * math.pi + math.acos(c) / math.sqrt(r)
-    y = (r - 1) / (r + beta) * math.sqrt(r) / math.sqrt(1 - c * c)  # delta_min / speed there (units delta_max, k1)
-    return t + (math.atanh(math.sqrt(beta) * y) / math.sqrt(beta) if beta > 0 else y)
+    phiF = 0.5 if eta > 0 else 1.0  # any: chi carries the scale
+    v = _theory.impact_velocity_for_chi(chi, 1.0, 1.0 + eta, phiF, 1.0, 1.0)
+    return _theory.contact_duration(v, 1.0, 1.0 + eta, beta, phiF, 1.0, 1.0, interpolation=interpolation)
 
 
 def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, against="particle",

@@ -41,8 +41,13 @@ def contact_time(k, m_r):
     return math.pi * math.sqrt(m_r / k)
 
 
-def time_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
-    """A time step resolving every stiffness of the law for the smallest particle mass m_min [s].
+def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
+    """An accuracy step, not a stability bound: the time step that resolves the half period of
+    the law's stiffest element by steps_per_contact steps, for the smallest particle mass m_min,
+    in closed form for equal spheres [s]. The tablet uses it (t_c/50). For a scene's O.dt use
+    mesocontact.scene.time_step(safety), a fraction of the stable step of every pair that can
+    meet (walls and mixed materials included); its default safety 0.1 gives about 8 steps per
+    half period of the stiffest element where resolved_step gives 50.
 
     Highest angular frequencies of a pair of equal spheres (the worst case; a sphere against a
     wall is slower): normal kp/m_r with m_r = m/2; sliding 3.5 kt/m_r (the spring drags
@@ -61,3 +66,168 @@ def time_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50
     if gamma > 0:
         dt = min(dt, 0.1 * m_r / gamma)
     return dt
+
+
+def _solve(f, lo, hi, name, what):
+    """The root of the monotonic f on [lo, hi] (log-spaced bisection to a relative 1e-13)."""
+    flo, fhi = f(lo), f(hi)
+    if flo == 0 or fhi == 0:
+        return lo if flo == 0 else hi
+    if (flo > 0) == (fhi > 0):
+        raise ValueError(f"{name}: no {what} in [{lo:.3g}, {hi:.3g}] reproduces it (the inputs contradict each other)")
+    for _ in range(200):
+        mid = math.sqrt(lo * hi)
+        fm = f(mid)
+        if (fm > 0) == (flo > 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+        if hi / lo - 1 < 1e-13:
+            break
+    return math.sqrt(lo * hi)
+
+
+def _newton(f, x, tol=1e-13):
+    """A root of the 2-vector f near x (Newton with a finite-difference Jacobian and step
+    halving), or None."""
+    r = f(x)
+    for _ in range(60):
+        if r is None:
+            return None
+        if max(abs(r[0]), abs(r[1])) < tol:
+            return x
+        h = 1e-7
+        cols = []
+        for n in range(2):
+            z = list(x)
+            z[n] += h
+            rz = f(z)
+            if rz is None:
+                return None
+            cols.append(((rz[0] - r[0]) / h, (rz[1] - r[1]) / h))
+        det = cols[0][0] * cols[1][1] - cols[1][0] * cols[0][1]
+        if det == 0:
+            return None
+        step = ((r[0] * cols[1][1] - r[1] * cols[1][0]) / det, (cols[0][0] * r[1] - cols[0][1] * r[0]) / det)
+        for _ in range(30):
+            z = [x[0] - step[0], x[1] - step[1]]
+            rz = f(z)
+            if rz is not None and max(abs(rz[0]), abs(rz[1])) < max(abs(r[0]), abs(r[1])):
+                x, r = z, rz
+                break
+            step = (0.5 * step[0], 0.5 * step[1])
+        else:
+            return None
+    return None
+
+
+def material_from(radius, density, impact_speed, restitution, contact_time, phiF=None, plastic_overlap=None,
+                  kc_over_kp=0.0, pull_off_force=None, fa=0.0, kca=None, adhesion="jumpIn", radius2=None,
+                  interpolation="linear", limit=None):
+    """MesoMat parameters from what a user can measure on a collision of two equal spheres (or of
+    a sphere on a wall: radius2 = inf), through the closed-form theory [SI units]. Returns a dict
+    for MesoMat(**kw): k1, kp, kc, phiF, fa, kca, adhesion, k2Interpolation, gammaN = 0, density.
+
+    What fixes what (the law has more parameters than one collision measures):
+    - restitution e and contact_time (how long the overlap lasts, first touch to separation,
+      theory.contact_duration) at one impact_speed (the approach speed before any force acts)
+      fix k1 and kp together, with everything else given;
+    - one speed's e and contact time can fit two materials, one whose collision reached the
+      plastic limit (beyond it e rises again with the speed, Eq. 33) and one whose did not:
+      limit=True or False says which (a collision beyond the limit leaves the full plastic_overlap);
+      without it, two fits raise ValueError listing both;
+    - phiF (or plastic_overlap = phiF a12, the permanent overlap a collision at or beyond the
+      plastic limit leaves) is an input: e at one speed cannot tell a stiffer limit branch from a
+      wider plastic range (Appendix A);
+    - the contact adhesion: kc_over_kp, or pull_off_force, the largest pull a contact loaded to
+      the plastic limit resists, kp kc/(kp + kc) phiF a12 (below kp phiF a12);
+    - the non-contact adhesion fa (with kca, default k1; its range is fa/kca) is an input: a
+      sticking speed does not fix it, since kc alone can hold a pair at the same speed
+      (fa_from_alpha turns an adhesivity into fa);
+    - not fixed here: the viscosity gammaN (0: one e mixes it with plasticity) and the sliding,
+      rolling and torsion elements (docs/tangential.md).
+    Raises ValueError naming the input that no parameters reproduce."""
+    from .theory import ADHESION_MODES, contact_duration, pair_collision
+    _positive("radius", radius)
+    _positive("density", density)
+    _positive("impact_speed", impact_speed)
+    if not (isinstance(restitution, (int, float)) and 0 < restitution < 1):
+        raise ValueError(f"restitution = {restitution!r} is invalid: must lie in (0, 1) (1 has no plasticity, 0 is the sticking regime)")
+    _positive("contact_time", contact_time)
+    _nonnegative("kc_over_kp", kc_over_kp)
+    _nonnegative("fa", fa)
+    if kca is not None:
+        _positive("kca", kca)
+    if adhesion not in ADHESION_MODES:
+        raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
+    if limit not in (None, True, False):
+        raise ValueError(f"limit = {limit!r} is invalid: None, True or False")
+    radius2 = radius if radius2 is None else radius2
+    _positive_or_inf("radius2", radius2)
+    m_r = reduced_mass(sphere_mass(radius, density), math.inf if math.isinf(radius2) else sphere_mass(radius2, density))
+    a12 = reduced_radius(radius, radius2)
+    if (phiF is None) == (plastic_overlap is None):
+        raise ValueError("phiF, plastic_overlap: give exactly one (phiF = plastic_overlap/a12)")
+    if plastic_overlap is not None:
+        _positive("plastic_overlap", plastic_overlap)
+        phiF = plastic_overlap / a12
+    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+        raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1] (plastic_overlap up to a12 = {a12!r})")
+    if pull_off_force is not None:
+        _positive("pull_off_force", pull_off_force)
+
+    def kc_of(kp):
+        if pull_off_force is None:
+            return kc_over_kp * kp
+        x = pull_off_force / (kp * phiF * a12)
+        return math.inf if x >= 1 else kp * x / (1 - x)
+
+    def law(x):  # x = (ln k1, ln(kp/k1 - 1))
+        k1 = math.exp(x[0])
+        kp = k1 * (1 + math.exp(x[1]))
+        kc = kc_of(kp)
+        if not math.isfinite(kc):
+            return None
+        return dict(k1=k1, kp=kp, kc=kc, phiF=phiF, a12=a12, m_r=m_r, fa=fa, kca=kca or k1,
+                    adhesion=adhesion if fa > 0 else "none", interpolation=interpolation)
+
+    def gaps(x):  # the misfits of e and of the contact time
+        p = law(x)
+        if p is None:
+            return None
+        o = pair_collision(impact_speed, **p)
+        if o.regime == "sticking-contact":
+            return None
+        return o.e - restitution, contact_duration(impact_speed, **p) / contact_time - 1
+
+    # e(kp) need not be monotonic (it turns where the collision crosses the plastic limit, and
+    # where the pull-off force ties kc to kp): a grid finds the cells where both misfits change
+    # sign, Newton refines each. The loading arc alone lasts pi/2 sqrt(m_r/k1) or longer, so
+    # k1 >= m_r (pi/(2 contact_time))^2; the grid spans e^10 above that, kp/k1 - 1 in [1e-6, 1.3e3].
+    a0 = math.log(m_r * (0.5 * math.pi / contact_time) ** 2)
+    xs = [a0 + 10 * i / 80 for i in range(81)]
+    ys = [math.log(1e-6) + 21 * j / 80 for j in range(81)]
+    grid = [[gaps((x, y)) for y in ys] for x in xs]
+    found = []
+    for i in range(80):
+        for j in range(80):
+            corners = [grid[i][j], grid[i + 1][j], grid[i][j + 1], grid[i + 1][j + 1]]
+            if None in corners or any(len({c[n] > 0 for c in corners}) < 2 for n in (0, 1)):
+                continue
+            x = _newton(gaps, [0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1])])
+            if x and not any(abs(x[0] - f[0]) < 1e-6 and abs(x[1] - f[1]) < 1e-6 for f in found):
+                found.append(x)
+    reached = {tuple(x): pair_collision(impact_speed, **law(x)).plastic_limit for x in found}
+    if limit is not None:
+        found = [x for x in found if reached[tuple(x)] == limit]
+    if not found:
+        raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: no k1, kp reproduce both at "
+                         f"impact_speed = {impact_speed!r}" + ("" if limit is None else f" with limit={limit!r}"))
+    if len(found) > 1:
+        alts = "; ".join(f"k1 = {law(x)['k1']:.4g}, kp = {law(x)['kp']:.4g}, kc = {law(x)['kc']:.4g} "
+                         f"({'beyond' if reached[tuple(x)] else 'below'} the plastic limit)" for x in found)
+        raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: {len(found)} materials reproduce "
+                         f"them at impact_speed = {impact_speed!r} ({alts}); say which with limit=True or limit=False")
+    p = law(found[0])
+    return dict(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=phiF, fa=fa, kca=p["kca"], adhesion=p["adhesion"],
+                k2Interpolation=interpolation, gammaN=0.0, density=density)

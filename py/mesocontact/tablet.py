@@ -91,7 +91,7 @@ def time_step(r_min):
     """t_c/50 of the stiffest, lightest pair (all springs of the law resolved)."""
     m = particle_material()
     m_min = _params.sphere_mass(r_min, DENSITY)
-    return _params.time_step(m["kp"], m_min, kt=m["kt"], kr=m["kr"], ko=m["ko"], gamma=m["gammaN"])
+    return _params.resolved_step(m["kp"], m_min, kt=m["kt"], kr=m["kr"], ko=m["ko"], gamma=m["gammaN"])
 
 
 def engines(controller=None, extra=(), reference="lab"):

@@ -293,3 +293,87 @@ def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
     _nonnegative("fa", fa)
     d = chi * delta_max_p(k1, kp, phiF, a12)
     return math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)
+
+
+# --- the duration of a contact -------------------------------------------------------------
+
+def _time_to(delta, v, k, b, m, target):
+    """Earliest t > 0 at which delta(t) = target under m delta'' = b - k delta (one linear branch
+    of the law; k < 0 on the tensile branch, whose pull weakens towards delta = 0), or None if the
+    motion turns back first. Exact: harmonic (k > 0), hyperbolic (k < 0), parabolic (k = 0)."""
+    if k > 0:
+        w = math.sqrt(k / m)
+        u0, ut = delta - b / k, target - b / k
+        amp = math.hypot(u0, v / w)
+        if abs(ut) > amp:
+            return None
+        phase = math.atan2(v / w, u0)  # u(t) = amp cos(w t - phase)
+        c = math.acos(ut / amp) if amp > 0 else 0.0
+        ts = [(phase + s * c + 2 * math.pi * n) / w for s in (1, -1) for n in (-1, 0, 1)]
+        t = min((t for t in ts if t > 0), default=None)
+        turn = ((phase % math.pi) or math.pi) / w  # the first zero of the velocity
+        return t if t is not None and t <= turn else None
+    if k < 0:
+        kap = math.sqrt(-k / m)
+        u0, ut = delta - b / k, target - b / k
+        A, B = 0.5 * (u0 + v / kap), 0.5 * (u0 - v / kap)  # u(t) = A x + B/x, x = exp(kap t)
+        if A == 0:
+            xs = [B / ut] if ut != 0 else []
+        else:
+            disc = ut * ut - 4 * A * B
+            xs = [] if disc < 0 else [(ut + s * math.sqrt(disc)) / (2 * A) for s in (1, -1)]
+        x = min((x for x in xs if x > 1), default=None)
+        if x is None or (A * B > 0 and 1 < math.sqrt(B / A) < x):  # turned back before arriving
+            return None
+        return math.log(x) / kap
+    a = b / m
+    if a == 0:
+        return (target - delta) / v if v != 0 and (target - delta) / v > 0 else None
+    disc = v * v + 2 * a * (target - delta)
+    if disc < 0:
+        return None
+    t = min((t for t in ((-v + s * math.sqrt(disc)) / a for s in (1, -1)) if t > 0), default=None)
+    return t if t is not None and (t <= -v / a or -v / a <= 0) else None
+
+
+@_in_range
+def contact_duration(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhesion="none",
+                     interpolation="linear"):
+    """How long the overlap of a head-on collision without viscosity stays positive, from the
+    first touch to the separation of the surfaces [s]; inf if the pair sticks in contact.
+
+    The law's branches are linear, so each phase is an exact arc: loading along k1 (and the limit
+    branch kp beyond deltaMax^p) to deltaMax, un-loading along k2 to deltaMin = k2 delta0/(k2 + kc)
+    (harmonic), then the tensile branch -kc delta to delta = 0 (hyperbolic: its pull weakens
+    towards the surface; parabolic for kc = 0). fa pulls with a constant force throughout the
+    contact (both adhesive modes); reversible adhesion speeds the approach up (Eq. 17)."""
+    out = pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa, kca, adhesion, interpolation)
+    if out.regime == "sticking-contact":
+        return math.inf
+    fa = fa if adhesion != "none" else 0.0
+    dmp, d0p = delta_max_p(k1, kp, phiF, a12), phiF * a12
+    v = out.v_contact
+    hit = _time_to(0.0, v, k1, fa, m_r, dmp) if math.isfinite(dmp) else None
+    if hit is None:  # the peak on the loading branch k1 (harmonic about fa/k1)
+        w, u = math.sqrt(k1 / m_r), -fa / k1
+        t = math.atan2(v / w, u) / w
+        d_max = fa / k1 + math.hypot(u, v / w)
+        f_max = k1 * d_max
+    else:  # on to the peak along the limit branch kp (delta - phiF a12), harmonic about d0p + fa/kp
+        v = math.sqrt(max(v * v - (k1 * dmp * dmp - 2 * fa * dmp) / m_r, 0.0))
+        w, u = math.sqrt(kp / m_r), dmp - d0p - fa / kp
+        t = hit + math.atan2(v / w, u) / w
+        d_max = d0p + fa / kp + math.hypot(u, v / w)
+        f_max = kp * (d_max - d0p)
+    k2 = k1 * k2_over_k1(min(d_max / dmp, 1.0) if math.isfinite(dmp) else 0.0, (kp - k1) / k1, interpolation)
+    delta0 = d_max - f_max / k2
+    d_min = k2 * delta0 / (k2 + kc)
+    # un-loading along k2 from rest at deltaMax to deltaMin: harmonic about delta0 + fa/k2
+    w2, c2 = math.sqrt(k2 / m_r), delta0 + fa / k2
+    ratio = (d_min - c2) / (d_max - c2)
+    if ratio < -1:
+        return math.inf  # turns back above deltaMin: held in contact
+    t += math.acos(min(1.0, ratio)) / w2
+    v = -w2 * math.sqrt(max((d_max - c2) ** 2 - (d_min - c2) ** 2, 0.0))
+    rest = _time_to(d_min, v, -kc, fa, m_r, 0.0) if d_min > 0 else 0.0  # tensile branch: m delta'' = kc delta + fa
+    return t + rest if rest is not None else math.inf

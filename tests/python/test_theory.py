@@ -126,15 +126,15 @@ class ReferenceValues(unittest.TestCase):
 class TimeStep(unittest.TestCase):
     def test_binding_stiffness(self):
         m = params.sphere_mass(1e-3, 2000)
-        base = params.time_step(1e3, m, steps_per_contact=1)
+        base = params.resolved_step(1e3, m, steps_per_contact=1)
         self.assertAlmostEqual(base, params.contact_time(1e3, m / 2), places=15)  # normal: pi sqrt(m_r/kp)
-        self.assertAlmostEqual(params.time_step(1e3, m, kt=1e3 / 3.5 * 0.99, steps_per_contact=1), base, places=15)
-        self.assertLess(params.time_step(1e3, m, kt=1e3, steps_per_contact=1), base)   # sliding binds
-        self.assertLess(params.time_step(1e3, m, kr=1e3, steps_per_contact=1), base)   # rolling binds (2.5 kr/m > kp/m_r)
-        self.assertLess(params.time_step(1e3, m, ko=1e3, steps_per_contact=1), base)   # torsion binds
-        self.assertAlmostEqual(params.time_step(1e3, m, steps_per_contact=50), base / 50, places=15)
+        self.assertAlmostEqual(params.resolved_step(1e3, m, kt=1e3 / 3.5 * 0.99, steps_per_contact=1), base, places=15)
+        self.assertLess(params.resolved_step(1e3, m, kt=1e3, steps_per_contact=1), base)   # sliding binds
+        self.assertLess(params.resolved_step(1e3, m, kr=1e3, steps_per_contact=1), base)   # rolling binds (2.5 kr/m > kp/m_r)
+        self.assertLess(params.resolved_step(1e3, m, ko=1e3, steps_per_contact=1), base)   # torsion binds
+        self.assertAlmostEqual(params.resolved_step(1e3, m, steps_per_contact=50), base / 50, places=15)
         with self.assertRaisesRegex(ValueError, "^kt"):
-            params.time_step(1e3, m, kt=-1)
+            params.resolved_step(1e3, m, kt=-1)
 
 
 class DimensionalForm(unittest.TestCase):
@@ -206,7 +206,7 @@ class OutsideTheDomain(unittest.TestCase):
         ("m2", params.reduced_mass, (1, nan)),
         ("a1", params.reduced_radius, (0, 1)),
         ("v_i", params.fa_from_alpha, (0.4, 100, 1e-6, -1)),
-        ("steps_per_contact", params.time_step, (500, 1e-6), {"steps_per_contact": -50}),
+        ("steps_per_contact", params.resolved_step, (500, 1e-6), {"steps_per_contact": -50}),
     ]
 
     def test_each_call_names_its_argument(self):

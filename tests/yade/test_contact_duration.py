@@ -1,12 +1,14 @@
 # ctest (inside yade): calibrate.contact_duration (the closed-form time with positive overlap,
 # used to set k1 from a measured contact time) against YADE pair collisions, below v_p, with and
 # without the tensile branch; and from_restitution_and_contact_time's parameters giving the
-# asked e and t_c in YADE.
+# asked e and t_c in YADE; params.material_from (e and t_c at one speed with phiF, kc/kp, a
+# non-contact fa given, below and beyond the plastic limit) the same, and theory.contact_duration
+# there.
 import math
 
 from yade import O
 
-from mesocontact import calibrate, pair, theory
+from mesocontact import calibrate, pair, params, theory
 from harness import check, finish
 
 R, RHO = 1e-3, 2500.0
@@ -37,4 +39,19 @@ r, t_yade = duration(s)
 check(abs(r.e - 0.7) <= 1e-3, "from_restitution_and_contact_time: e", f"YADE e = {r.e:.6f} (asked 0.7)")
 check(abs(t_yade - 2e-4) <= 2 * O.dt, "from_restitution_and_contact_time: t_c",
       f"YADE {t_yade:.6e} s (asked 2e-4 s)")
+
+# params.material_from: what a user asks for, below the plastic limit (0.5 m/s) and beyond it
+# (a 1 m/s collision fitted with limit=True), with jump-in adhesion; YADE's e carries the
+# non-contact tail's sampling error (the atlas: below 7.1e-4 with fa), t_c the 2 dt of the ends.
+for v, e, t_c, limit in ((0.5, 0.6, 6e-4, None), (1.0, 0.75, 5.5e-4, True)):
+    mat = params.material_from(R, RHO, v, e, t_c, phiF=0.1, kc_over_kp=0.2, fa=1e-4, kca=100.0, limit=limit)
+    law = {k: mat[k] for k in ("k1", "kp", "kc", "phiF", "fa", "kca", "adhesion")}
+    s = pair.build(R, v, law, density=RHO)
+    r, t_yade = duration(s)
+    got = theory.pair_collision(v, law["k1"], law["kp"], law["kc"], 0.1, a12, m_r, 1e-4, 100.0, "jumpIn")
+    check(got.plastic_limit == bool(limit), f"material_from at {v} m/s: regime",
+          f"k1 = {law['k1']:.4g}, kp = {law['kp']:.4g}, kc = {law['kc']:.4g} N/m, limit reached: {got.plastic_limit}")
+    check(abs(r.e - e) <= 1e-3, f"material_from at {v} m/s: e", f"YADE e = {r.e:.6f} (asked {e})")
+    check(abs(t_yade - t_c) <= 2 * O.dt, f"material_from at {v} m/s: t_c",
+          f"YADE {t_yade:.6e} s (asked {t_c:g} s, dt {O.dt:.2e} s)")
 finish()
