@@ -66,6 +66,32 @@ void validate(const MaterialParams& m)
 	if (!(m.muS >= 0)) reject("muS", m.muS, "must be >= 0");
 }
 
+void validatePair(const PairParams& p)
+{
+	const int adhesion = static_cast<int>(p.adhesion), interp = static_cast<int>(p.k2Interpolation);
+	if (adhesion < 0 || adhesion > 2) reject("adhesion", adhesion, "must be a mode: 0 none, 1 reversible, 2 jumpIn");
+	if (interp < 0 || interp > 1) reject("k2Interpolation", interp, "must be 0 linear or 1 sqrt");
+	MaterialParams m;
+#define MESO_COPY(name, def, unit, ok, rule, mix, dest, ...) m.name = p.dest;
+	MESO_ALL_PARAMS(MESO_COPY)
+#undef MESO_COPY
+	m.muS             = p.sliding.muS;
+	m.adhesion        = p.adhesion;
+	m.k2Interpolation = p.k2Interpolation;
+	validate(m);
+	for (const auto& [name, e] : { std::make_pair("sliding muD", &p.sliding), std::make_pair("rolling muD", &p.rolling), std::make_pair("torsion muD", &p.torsion) }) {
+		finite(name, e->muD);
+		if (!(e->muD >= 0)) reject(name, e->muD, "must be >= 0");
+	}
+	if (!(p.leverFactor == 1 || p.leverFactor == 2)) reject("leverFactor", p.leverFactor, "must be 1 (reduced) or 2 (a12)");
+	if (p.deltaA != ((p.fa > 0 && p.adhesion != Adhesion::None) ? -p.fa / p.kca : 0.0)) reject("deltaA", p.deltaA, "must be -fa/kca");
+	if (p.delta0PerMaxP != (p.kp > p.k1 ? 1 - p.k1 / p.kp : 0.0)) reject("delta0PerMaxP", p.delta0PerMaxP, "must be 1 - k1/kp");
+	const bool any = p.sliding.active() || p.rolling.active() || p.torsion.active();
+	if (p.tangential != any || p.slidingActs != p.sliding.active() || (p.rollingActs && !p.rolling.active()) || (p.torsionActs && !p.torsion.active())
+	    || (p.rollingOrTorsion && !(p.rolling.active() || p.torsion.active())))
+		throw std::invalid_argument("tangential flags are invalid: they must follow the elements (setMechanisms)");
+}
+
 double harmonicMean(double x, double y)
 {
 	if (x == 0 || y == 0) return 0.0;

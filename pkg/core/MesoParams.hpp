@@ -83,6 +83,11 @@ struct PairGeometry {
 	static double reducedRadius(double r1, double r2) { return (r1 > 0 && r2 > 0) ? harmonicMean(r1, r2) : 2 * (r1 > 0 ? r1 : r2); }
 };
 
+// A pair's parameters as read from a file: every number against its material rule (validate), the
+// mode enums in range, the derived values and flags as mixPair and setMechanisms make them. Throws
+// std::invalid_argument naming the field.
+void validatePair(const PairParams& p);
+
 // Mixes two materials: stiffnesses, fa and dashpots by harmonic mean; phiF by arithmetic mean;
 // friction coefficients by the smaller one (as YADE's Ip2_FrictMat_FrictMat_FrictPhys); phiD by the smaller;
 // adhesion is the weaker mode of the two (None < JumpIn < Reversible); the sqrt interpolation

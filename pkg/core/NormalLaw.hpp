@@ -187,4 +187,23 @@ MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeom
 	return f;
 }
 
+// Which branch of the law a contact was on at its last step, read back from what the step left
+// (the overlap, the history after the update, the hysteretic force): nothing is stored for it, so
+// the hot path pays nothing. Loading sets deltaMax to the overlap itself; the tensile limit returns
+// -kc delta itself; both are exact equalities of what the step computed.
+enum class Branch : int { New = 0, Apart, NonContact, Loading, Limit, Unloading, Tensile };
+inline const char* branchName(Branch b)
+{
+	static const char* const names[] = { "new", "apart", "nonContact", "loading", "limit", "unloading", "tensile" };
+	return names[static_cast<int>(b)];
+}
+MESO_INLINE Branch branchAfter(const PairParams& p, const PairGeometry& g, const NormalHistory& h, double delta, double fHysteretic)
+{
+	if (std::isnan(delta)) return Branch::New; // no step yet
+	if (delta <= 0) return adhesiveForceAfter(p, h, delta) != 0 ? Branch::NonContact : Branch::Apart;
+	if (fHysteretic == -p.kc * delta) return Branch::Tensile;
+	if (delta == h.deltaMax) return delta * g.invDeltaMaxP >= 1 ? Branch::Limit : Branch::Loading;
+	return Branch::Unloading;
+}
+
 } // namespace meso

@@ -144,10 +144,10 @@ void MesoBackgroundDamping::action()
 	const long n        = static_cast<long>(scene->bodies->size());
 	const bool track    = scene->trackEnergy;
 	const Real dt       = scene->dt;
-	if (track && static_cast<long>(prevVel.size()) < n) {
-		for (auto* v : {&prevVel, &prevAngVel, &prevForce, &prevTorque})
-			v->resize(n, Vector3r::Zero());
-		hasPrev.resize(n, 0);
+	if (track) { // each one checked: a saved scene may carry them with different lengths
+		for (auto* v : { &prevVel, &prevAngVel, &prevForce, &prevTorque })
+			if (static_cast<long>(v->size()) < n) v->resize(n, Vector3r::Zero());
+		if (static_cast<long>(hasPrev.size()) < n) hasPrev.resize(n, 0);
 	}
 	const BodyContainer& bodies     = *scene->bodies;
 	const Laws laws     = relative && sumInLaw ? precedingLaws() : Laws();

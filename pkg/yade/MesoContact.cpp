@@ -29,7 +29,8 @@ namespace {
 	using pychecks::Kind;
 	// The other attributes a MesoMat validates (numericFields are numbers too).
 	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
-		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag } };
+		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag },
+		                                  { "poisson", Kind::Number },  { "label", Kind::Text } }; // the last two inherited, unchecked values
 	void checkMesoMatKeywords(const boost::python::dict& kw)
 	{
 		for (const Field& f : numericFields)
@@ -76,7 +77,7 @@ meso::MaterialParams MesoMat::parse() const
 	if (!(std::isfinite(density) && density > 0))
 		throw std::invalid_argument("density = " + number(density) + " is invalid: must be a finite number > 0 [kg/m^3]");
 	if (!(std::isfinite(young) && young > 0))
-		throw std::invalid_argument("young = " + number(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law; PWaveTimeStep reads it)");
+		throw std::invalid_argument("young = " + number(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law)");
 	return m;
 }
 
@@ -94,22 +95,42 @@ void MesoMat::postLoad(MesoMat&)
 		validDensity         = density;
 		validYoung           = young;
 	} catch (const std::invalid_argument&) { // keep the material valid: undo every assignment (updateAttrs makes several), then report
-		for (const Field& f : numericFields)
-			this->*f.attr = valid.*f.param;
-		frictionAngle   = validFrictionAngle; // not atan(muS): that can differ by an ulp
-		density         = validDensity;
-		young           = validYoung;
-		dominant        = valid.dominant;
-		adhesion        = validAdhesion;
-		k2Interpolation = validK2Interpolation;
+		undoToValid();
 		throw;
 	}
 }
 
+void MesoMat::undoToValid()
+{
+	for (const Field& f : numericFields)
+		this->*f.attr = valid.*f.param;
+	frictionAngle   = validFrictionAngle; // not atan(muS): that can differ by an ulp
+	density         = validDensity;
+	young           = validYoung;
+	dominant        = valid.dominant;
+	adhesion        = validAdhesion;
+	k2Interpolation = validK2Interpolation;
+}
+
 void MesoMat::updateAttrsChecked(const boost::python::dict& d)
 {
-	checkMesoMatKeywords(d);
-	pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
+	checkMesoMatKeywords(d); // every type, before any value is set
+	const boost::python::object cls  = boost::python::import("yade.wrapper").attr("MesoMat");
+	const boost::python::list   keys = d.keys();
+	for (long i = 0; i < boost::python::len(keys); ++i) {
+		const boost::python::object key = keys[i];
+		if (!PyUnicode_Check(key.ptr()) || !PyObject_HasAttr(cls.ptr(), key.ptr())) {
+			const std::string name = boost::python::extract<std::string>(boost::python::str(key));
+			PyErr_SetString(PyExc_AttributeError, ("updateAttrs: MesoMat has no attribute '" + name + "'; nothing was set").c_str());
+			boost::python::throw_error_already_set();
+		}
+	}
+	try {
+		pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
+	} catch (...) { // anything YADE's own setters refuse half-way: undo what was set before it
+		undoToValid();
+		throw;
+	}
 }
 
 void MesoMat::setFrictionAngle(Real a)
@@ -155,15 +176,71 @@ const meso::TangentialState& MesoPhys::tangentialState() const
 	return t ? t->tangential : none;
 }
 
+void MesoPairParams::postLoad(MesoPairParams&)
+{
+	try {
+		meso::validatePair(params);
+	} catch (const std::invalid_argument& e) {
+		throw std::runtime_error(std::string("MesoPairParams (a saved contact's pair parameters): ") + e.what());
+	}
+}
+
 void MesoPhys::postLoad(MesoPhys&)
 {
 	if (!pairParams) return; // made from Python: the law remakes it (Law2_ScGeom_MesoPhys_Meso::dropForeign)
+	// A contact's state as read from a file (an edited or damaged one must not run on with NaN).
+	auto refuse = [this](const char* name, Real v, const char* rule) {
+		std::ostringstream out;
+		out.precision(17);
+		out << getClassName() << " (a saved contact): " << name << " = " << v << " is invalid: " << rule;
+		throw std::runtime_error(out.str());
+	};
+	for (const auto& [name, v] : { std::make_pair("deltaMax", Real(history.deltaMax)), std::make_pair("delta0", Real(history.delta0)),
+	                               std::make_pair("fHysteretic", fHysteretic), std::make_pair("fViscous", fViscous) })
+		if (!std::isfinite(v)) refuse(name, v, "must be finite");
+	if (std::isinf(lastDelta)) refuse("lastDelta", lastDelta, "must be finite (NaN before the first step)");
+	if (!(std::isfinite(geometry.radius1) && geometry.radius1 >= 0)) refuse("radius1", geometry.radius1, "must be finite and >= 0");
+	if (!(std::isfinite(geometry.radius2) && geometry.radius2 >= 0 && geometry.radius1 + geometry.radius2 > 0))
+		refuse("radius2", geometry.radius2, "must be finite and >= 0, one radius > 0");
+	if (!(std::isfinite(geometry.invDeltaMaxP) && geometry.invDeltaMaxP >= 0)) refuse("invDeltaMaxP", geometry.invDeltaMaxP, "must be finite and >= 0");
 	const bool springs = dynamic_cast<const MesoTangentialPhys*>(this) != nullptr;
 	if (pairParams->params.tangential != springs)
 		throw std::runtime_error(
 		        getClassName() + ": its pair parameters " + (springs ? "have no" : "have") + " sliding, rolling or torsion, which a "
 		        + (springs ? "MesoTangentialPhys does not fit" : "plain MesoPhys cannot hold (it has no springs)")
 		        + "; the saved contact was not made by Ip2_MesoMat_MesoMat_MesoPhys.");
+}
+
+boost::python::dict MesoPhys::stateDict() const
+{
+	boost::python::dict d = pyDict(); // what YADE lists: FrictPhys's attributes
+	d["deltaMax"]        = getDeltaMax();
+	d["delta0"]          = getDelta0();
+	d["k2"]              = getK2();
+	d["deltaMaxP"]       = getDeltaMaxP();
+	d["delta0P"]         = getDelta0P();
+	d["deltaA"]          = getDeltaA();
+	d["a12"]             = getA12();
+	d["touched"]         = getTouched();
+	d["branch"]          = getBranch();
+	d["hystereticForce"] = getFh();
+	d["adhesiveForce"]   = getFadh();
+	d["viscousForce"]    = getFv();
+	d["coulombLevel"]    = getCoulombLevel();
+	d["adhesion"]        = getAdhesion();
+	d["k2Interpolation"] = getK2Interpolation();
+#define MESO_DICT_ENTRY(name, def, unit, ok, rule, mix, dest, ...) d[#name] = pair().dest;
+	MESO_ALL_PARAMS(MESO_DICT_ENTRY)
+#undef MESO_DICT_ENTRY
+	if (pair().tangential) {
+		d["slidingSpring"] = getXiT();
+		d["rollingSpring"] = getXiR();
+		d["torsionSpring"] = getXiO();
+		d["rollingForce"]  = getFR();
+		d["torsionForce"]  = getFO();
+		d["leverArm"]      = getLeverArm();
+	}
+	return d;
 }
 
 int MesoPhys::byteSize() const { return dynamic_cast<const MesoTangentialPhys*>(this) ? sizeof(MesoTangentialPhys) : sizeof(MesoPhys); }
@@ -385,16 +462,28 @@ void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
 	}
 }
 
+namespace {
+	// A phys made in Python holds its Python object, whose last reference must go with the GIL held;
+	// the law runs in YADE's engine threads, often with the GIL released (O.run), so a dropped one
+	// is handed to the interpreter, which releases it in its own thread at its next chance.
+	int releaseDropped(void* dropped)
+	{
+		delete static_cast<shared_ptr<IPhys>*>(dropped);
+		return 0;
+	}
+}
+
 bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interaction* I)
 {
 	// No exception can leave YADE's OpenMP loop, so the phys is dropped: the Ip2 makes a proper one
 	// at the next step (from the bodies' materials, history afresh), and the user is told.
 	if (!foreignWarned.exchange(true))
-		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2()
-		          << " has a MesoPhys not made by Ip2_MesoMat_MesoMat_MesoPhys (no pair parameters, e.g. assigned from Python): it is "
+		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2() << " has a "
+		          << ip->getClassName() << " not made by Ip2_MesoMat_MesoMat_MesoPhys (e.g. assigned from Python): it is "
 		          << "dropped and remade from the bodies' materials at the next step. To change a live contact's materials, "
 		          << "use Ip2_MesoMat_MesoMat_MesoPhys.adoptMaterials. (Warned once.)" << std::endl;
-	ip.reset();
+	auto* dropped = new shared_ptr<IPhys>(std::move(ip)); // ip is empty now
+	if (Py_AddPendingCall(releaseDropped, dropped) != 0) { } // the interpreter's queue is full: kept, not released unsafely
 	return true;
 }
 
@@ -515,8 +604,11 @@ MESO_HOT void Law2_ScGeom_MesoPhys_Meso::tangentialStep(
 
 bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I)
 {
-	const auto& geom = *static_cast<const ScGeom*>(ig.get());
-	auto*       phys = static_cast<MesoPhys*>(ip.get());
+	const auto& geom  = *static_cast<const ScGeom*>(ig.get());
+	const int   index = ip->getClassIndex(); // the dispatcher's cached choice outlives a phys replaced from Python
+	if (index != MesoPhys::getClassIndexStatic() && index != MesoTangentialPhys::getClassIndexStatic()) [[unlikely]]
+		return dropForeign(ip, I);
+	auto* phys = static_cast<MesoPhys*>(ip.get());
 	if (!phys->pairParams) [[unlikely]]
 		return dropForeign(ip, I);
 	const auto&             p     = phys->pairParams->params;

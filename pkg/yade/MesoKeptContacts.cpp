@@ -49,7 +49,7 @@ long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
 	long   restored = 0;
 	if (keptFrom.lock().get() != sc) keptContacts.clear();
 	for (const auto& k : keptContacts) {
-		if (!Body::byId(k.id1, sc) || !Body::byId(k.id2, sc)) continue; // a body not on this rank
+		if (!sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue; // a body not on this rank (or no such id)
 		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);
 		if (!I || I->geom || I->phys) continue; // no candidate pair here, or one that kept its state
 		if (I->getId1() != k.id1) I->swapOrder(); // allowed while it has neither

@@ -421,7 +421,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         raise ValueError(f"free = {free}: a parameter is named twice")
     if adhesion == "none" and "fa" in free:
         raise ValueError("free parameter 'fa' needs adhesion 'reversible' or 'jumpIn' (with adhesion 'none' fa does nothing)")
-    if adhesion != "none" and not (isinstance(kca, (int, float)) and kca > 0):
+    if adhesion != "none" and not (_theory._number(kca) and kca > 0):
         raise ValueError(f"kca = {kca!r} is invalid: must be > 0 with adhesion {adhesion!r} (inf allowed for 'jumpIn')")
     if adhesion == "reversible" and not math.isfinite(kca):
         raise ValueError("kca = inf is invalid with adhesion 'reversible': the pull-in range fa/kca needs a finite kca")
@@ -558,7 +558,7 @@ def from_groups(eta, beta, phiF, v_p, radius, density, against="particle"):
     _theory._groups(eta, beta)
     _theory._positive("eta", eta)
     _theory._positive("v_p", v_p)
-    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+    if not (_theory._number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
     m_r, a12 = geometry(radius, density, against)
     k1 = m_r * (_phiF_for(v_p, 1.0, eta, 1.0, a12) / phiF) ** 2  # _phiF_for scales as 1/sqrt(k1/m_r)
@@ -587,7 +587,7 @@ def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, aga
     _theory._positive("t_c", t_c)
     _theory._positive("v", v)
     _theory._positive("eta", eta)
-    if not (isinstance(e, (int, float)) and 0 < e < 1):
+    if not (_theory._number(e) and 0 < e < 1):
         raise ValueError(f"e = {e!r} is invalid: must lie in (0, 1)")
     e_min = _theory.restitution_fa0(1.0, eta, beta, interpolation)
     # the branch from chi = 0 (e = 1) down to the first chi where e = 0 or chi = 1

@@ -22,6 +22,7 @@ from yade import wrapper as _w
 
 from . import mpi as _mpi
 from . import outputs as _out
+from . import scene as _scene
 from . import snapshots as _snap
 from . import stages as _stages
 from . import tablet as _tablet
@@ -110,7 +111,7 @@ def read_csv(path):
 
 
 def _csv_text(rows, header="iter,Dx,F_over_kp_d0"):
-    return header + "\n" + "".join(f"{int(r[0])},{r[1]!r},{r[2]!r}\n" for r in rows)
+    return header + "\n" + "".join(f"{int(r[0])}," + ",".join(repr(x) for x in r[1:]) + "\n" for r in rows)
 
 
 def cycle_peaks(mode, rows, steps_per_cycle):
@@ -187,6 +188,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
         return info, rows
     with bundle:
         bundle.write_text(name + ".csv", _csv_text(rows))
+        bundle.write_text(name + "-branches.csv", _csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
         bundle.write_json(name + ".json", info)
     if progress:
         print(f"{name}: {info['wall_clock_s']:.0f} s, peaks {['%.4g' % x for x in info['peaks']]}", flush=True)

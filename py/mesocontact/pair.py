@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 from . import params as _params
 from . import scene as _scene
+from .theory import _number
 from . import theory as _theory
 
 try:
@@ -60,10 +61,20 @@ def _materials(material, material2, density):
 
 
 def _check_step(dt, gap):
-    if dt is not None and not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt > 0):
+    if dt is not None and not (_number(dt) and math.isfinite(dt) and dt > 0):
         raise ValueError(f"dt = {dt!r} is invalid: must be a finite number > 0 [s]")
-    if gap is not None and not (isinstance(gap, (int, float)) and math.isfinite(gap) and gap >= 0):
+    if gap is not None and not (_number(gap) and math.isfinite(gap) and gap >= 0):
         raise ValueError(f"gap = {gap!r} is invalid: must be a finite number >= 0 [m] (the pair starts apart)")
+
+
+def _stable(m1, m2, radius1, radius2, rotations, dt, steps_per_contact):
+    """O.dt for a pair, refused above the leapfrog's stability bound of its stiffest element
+    (Ip2.stableStep): a collision there creates energy (e = 6.9 at 0.5 steps per contact)."""
+    bound = _w.Ip2_MesoMat_MesoMat_MesoPhys().stableStep(m1, m2, radius1, radius2, rotations)
+    step = O.dt if dt is None else dt
+    if step > bound:
+        given = f"dt = {dt!r}" if dt is not None else f"steps_per_contact = {steps_per_contact!r} (dt = {step:.4g} s)"
+        raise ValueError(f"{given} is invalid: above the pair's stable step {bound:.4g} s (Ip2_MesoMat_MesoMat_MesoPhys.stableStep)")
 
 
 def _material(material, density):
@@ -98,6 +109,7 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     a12 = _params.reduced_radius(radius1, radius2)
     t_c = _params.contact_time(mixed["kp"], m_r)
     O.dt = dt if dt is not None else t_c / steps_per_contact
+    _stable(m1, m2, radius1, radius2, False, dt, steps_per_contact)
 
     start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * v_inf * O.dt
     factor = 1.0 + 1.2 * max(start_gap, -delta_a) / (radius1 + radius2)  # detect the whole force range, with margin
@@ -145,6 +157,7 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     mass = _params.sphere_mass(radius, m.density)
     t_c = _params.contact_time(mixed["kp"], mass)
     O.dt = dt if dt is not None else t_c / steps_per_contact
+    _stable(m, w, radius, 0.0, six_d, dt, steps_per_contact)
     start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * max(v_inf, 1e-12) * O.dt
     factor = 1.0 + 1.2 * max(start_gap, -delta_a) / radius
     size = 50 * radius

@@ -1,14 +1,20 @@
 """Parameter helpers for the meso-particle law (plain Python, SI units)."""
 import math
 
-from .theory import _nonnegative, _positive, _positive_or_inf
+from .theory import _nonnegative, _number, _positive, _positive_or_inf
 
 
 def sphere_mass(radius, density):
     """Mass of a sphere [kg]."""
     _positive("radius", radius)
     _positive("density", density)
-    return 4.0 / 3.0 * math.pi * radius ** 3 * density
+    try:
+        m = 4.0 / 3.0 * math.pi * radius ** 3 * density
+    except OverflowError:
+        m = math.inf
+    if not (0 < m < math.inf):
+        raise ValueError(f"radius = {radius!r}, density = {density!r}: the mass {m!r} kg is out of floating-point range")
+    return m
 
 
 def reduced_mass(m1, m2=math.inf):
@@ -151,7 +157,7 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     _positive("radius", radius)
     _positive("density", density)
     _positive("impact_speed", impact_speed)
-    if not (isinstance(restitution, (int, float)) and 0 < restitution < 1):
+    if not (_number(restitution) and 0 < restitution < 1):
         raise ValueError(f"restitution = {restitution!r} is invalid: must lie in (0, 1) (1 has no plasticity, 0 is the sticking regime)")
     _positive("contact_time", contact_time)
     _nonnegative("kc_over_kp", kc_over_kp)
@@ -171,7 +177,7 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     if plastic_overlap is not None:
         _positive("plastic_overlap", plastic_overlap)
         phiF = plastic_overlap / a12
-    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+    if not (_number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1] (plastic_overlap up to a12 = {a12!r})")
     if pull_off_force is not None:
         _positive("pull_off_force", pull_off_force)

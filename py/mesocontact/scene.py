@@ -3,6 +3,8 @@ import math
 
 from yade import O
 
+from .theory import _number
+
 
 def reset():
     """O.reset() keeping O.tags: yade-batch puts a job's description and parameters there, and a
@@ -54,7 +56,7 @@ def set_detection(margin=1.2):
     Call it after O.engines, O.materials and the spheres are in place; returns the factor (1.0
     when no material is adhesive, leaving the engines unchanged)."""
     from yade import wrapper as w
-    if not (isinstance(margin, (int, float)) and margin >= 1):
+    if not (_number(margin) and margin >= 1):
         raise ValueError(f"margin = {margin!r} is invalid: must be a number >= 1")
     gap = adhesion_range()
     radii = [b.shape.radius for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere)]
@@ -94,7 +96,7 @@ def time_step(safety=0.1):
     0.096 and 0.128 of the bound stay within what a 1e-6 perturbation of the step changes; the
     last contact chain of a pull to rupture is resolved only at 0.032."""
     from yade import wrapper as w
-    if not (isinstance(safety, (int, float)) and 0 < safety <= 1):
+    if not (_number(safety) and 0 < safety <= 1):
         raise ValueError(f"safety = {safety!r} is invalid: must lie in (0, 1]")
     smallest, walls, count = {}, {}, {}
     for b in O.bodies:
@@ -119,3 +121,45 @@ def time_step(safety=0.1):
              if m2 is not m1 or count[m1.id] > 1]  # a lone sphere has no partner of its own material
     steps += [ip2.stableStep(m, wm, r, 0.0, rotations) for m, r in spheres for wm in walls.values()]
     return safety * min(steps, default=math.inf)
+
+
+# The branches of MesoPhys.branch, in the order of MesoPhys.branchIndex.
+BRANCHES = ("new", "apart", "nonContact", "loading", "limit", "unloading", "tensile")
+
+
+def branch_fractions():
+    """The fraction of the scene's meso contacts (real interactions with a MesoPhys) on each
+    branch of the law at the last step: a dict over BRANCHES that sums to 1 ({} without contacts).
+    'loading' is k1, 'limit' the limit branch kp, 'unloading' an un-/re-loading line k2,
+    'tensile' the tensile limit -kc delta, 'nonContact' the non-contact adhesion without overlap."""
+    from yade import wrapper as w
+    counts = [0] * len(BRANCHES)
+    for i in O.interactions:
+        if i.isReal and isinstance(i.phys, w.MesoPhys):
+            counts[i.phys.branchIndex] += 1
+    total = sum(counts)
+    return {b: c / total for b, c in zip(BRANCHES, counts)} if total else {}
+
+
+# What export_contacts writes per contact (yade.export.VTKExporter.exportInteractions' `what`).
+VTK_CONTACT_FIELDS = {
+    "overlap": "i.geom.penetrationDepth", "deltaMax": "i.phys.deltaMax", "delta0": "i.phys.delta0", "k2": "i.phys.k2",
+    "branch": "i.phys.branchIndex", "normalForce": "i.phys.normalForce", "hystereticForce": "i.phys.hystereticForce",
+    "adhesiveForce": "i.phys.adhesiveForce", "viscousForce": "i.phys.viscousForce", "shearForce": "i.phys.shearForce",
+    "slidingSpring": "i.phys.slidingSpring", "rollingSpring": "i.phys.rollingSpring", "torsionSpring": "i.phys.torsionSpring",
+}
+
+
+def export_contacts(base, number=None):
+    """Writes the meso contacts' state as a legacy VTK file for ParaView (lines between the centres,
+    one cell per contact with VTK_CONTACT_FIELDS; ``branch`` is MesoPhys.branchIndex, see BRANCHES):
+    ``base``-intrs-NNNNNNNN.vtk, NNNNNNNN = number (default: the count of such files already there).
+    Every real interaction must carry a MesoPhys. Returns the file's name (None without contacts)."""
+    import glob
+    import os
+    from yade import export
+    if number is None:
+        number = len(glob.glob(f"{glob.escape(base)}-intrs-*.vtk"))
+    export.VTKExporter(base).exportInteractions(what=dict(VTK_CONTACT_FIELDS), numLabel=number)
+    name = f"{base}-intrs-{number:08d}.vtk"
+    return name if os.path.exists(name) else None

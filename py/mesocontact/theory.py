@@ -10,24 +10,30 @@ Two layers:
 """
 import functools
 import math
+import numbers
 from dataclasses import dataclass
 
 ADHESION_MODES = ("none", "reversible", "jumpIn")
 K2_INTERPOLATIONS = ("linear", "sqrt")
 
 
+def _number(value):
+    """A real number (numpy's included), not a bool: dt=True is a slip, not 1 s."""
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
 def _positive(name, value):
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+    if not (_number(value) and math.isfinite(value) and value > 0):
         raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
 
 
 def _nonnegative(name, value):
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+    if not (_number(value) and math.isfinite(value) and value >= 0):
         raise ValueError(f"{name} = {value!r} is invalid: must be a finite number >= 0")
 
 
 def _positive_or_inf(name, value):
-    if not (isinstance(value, (int, float)) and value > 0):  # NaN fails too
+    if not (_number(value) and value > 0):  # NaN fails too
         raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
 
 
@@ -65,9 +71,9 @@ def _groups(eta, beta=0.0, interpolation="linear"):
 
 def _law(k1, kp, phiF, a12):
     _positive("k1", k1)
-    if not (isinstance(kp, (int, float)) and math.isfinite(kp) and kp >= k1):
+    if not (_number(kp) and math.isfinite(kp) and kp >= k1):
         raise ValueError(f"kp = {kp!r} is invalid: must be a finite number >= k1")
-    if not (isinstance(phiF, (int, float)) and 0 < phiF <= 1):
+    if not (_number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
     _positive("a12", a12)
 
@@ -179,7 +185,7 @@ def widened_kp(k1, kp, phiF, phiF_new):
     """Appendix A, Eq. A.3: limit stiffness kp' for a wider plastic range phiF' > phiF that keeps
     the low-overlap behaviour."""
     _law(k1, kp, phiF, 1.0)
-    if not (isinstance(phiF_new, (int, float)) and 0 < phiF_new <= 1):
+    if not (_number(phiF_new) and 0 < phiF_new <= 1):
         raise ValueError(f"phiF_new = {phiF_new!r} is invalid: must lie in (0, 1]")
     A = (kp - k1) ** 2 / kp
     B = phiF_new / phiF

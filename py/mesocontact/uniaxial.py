@@ -202,6 +202,7 @@ class Test:
         self.L0 = self.length()
         self.t_cross = crossing_time()
         self.rows = []  # (iter, Dx, F/(kp d0))
+        self.branches = []  # (iter, Dx, fraction of the contacts on each scene.BRANCHES), with each row
         self._motion = []
 
     def track_energy(self):
@@ -243,6 +244,8 @@ class Test:
             return
         row = (O.iter, self.dx(), self.force())
         self.rows.append(row)
+        fractions = _scene.branch_fractions()
+        self.branches.append((row[0], row[1], *(fractions.get(b, 0.0) for b in _scene.BRANCHES)))
         _plot.addData(iter=row[0], Dx=row[1], F_over_kp_d0=row[2])  # live in the shell: plot.plot()
         if self._on_record is not None:
             self._on_record(self, row)

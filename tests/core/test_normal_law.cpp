@@ -197,3 +197,30 @@ TEST(Energy, LoopDissipationEqualsEnclosedArea)
 	EXPECT_LT(rel(plastic, expected), 1e-9);
 	EXPECT_LT(storedElastic(p, g, h, prev.hysteretic), 1e-20);
 }
+
+// branchAfter reads the branch back from what a step left: a path through every branch, each step
+// classified against where the path is by construction (dmp = 1.25e-4 m here).
+TEST(Branch, EveryBranchOfAPath)
+{
+	MaterialParams m;
+	m.k1 = 100; m.kp = 500; m.kc = 100; m.phiF = 0.1; m.fa = 1e-6; m.kca = 100; m.adhesion = Adhesion::Reversible;
+	auto [p, g] = pairOf(m);
+	NormalHistory h;
+	auto step = [&](double delta) {
+		const NormalForce f = normalForce(p, g, h, delta, 0.0);
+		return branchAfter(p, g, h, delta, f.hysteretic);
+	};
+	EXPECT_EQ(branchAfter(p, g, h, std::nan(""), 0.0), Branch::New);
+	EXPECT_EQ(step(-5e-9), Branch::NonContact);    // inside the pull-in range fa/kca = 1e-8 m
+	EXPECT_EQ(step(-2e-6), Branch::Apart);         // beyond it
+	EXPECT_EQ(step(5e-5), Branch::Loading);        // k1, below deltaMaxP
+	EXPECT_EQ(step(1.5e-4), Branch::Limit);        // beyond deltaMaxP
+	EXPECT_EQ(step(1.4e-4), Branch::Unloading);    // back along the kp line (delta0 = 1e-4)
+	EXPECT_EQ(step(1.45e-4), Branch::Unloading);   // re-loading below deltaMax
+	EXPECT_EQ(step(5e-5), Branch::Tensile);        // the kp line gives -250e-4 N < -kc delta = -50e-4 N
+	EXPECT_EQ(step(4e-5), Branch::Tensile);        // still along -kc delta
+	EXPECT_EQ(step(2e-4), Branch::Limit);          // loaded again beyond every deltaMax
+	EXPECT_EQ(step(-2e-6), Branch::Apart);
+	EXPECT_STREQ(branchName(Branch::NonContact), "nonContact");
+	EXPECT_STREQ(branchName(Branch::Tensile), "tensile");
+}

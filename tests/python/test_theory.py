@@ -207,7 +207,14 @@ class OutsideTheDomain(unittest.TestCase):
         ("a1", params.reduced_radius, (0, 1)),
         ("v_i", params.fa_from_alpha, (0.4, 100, 1e-6, -1)),
         ("steps_per_contact", params.resolved_step, (500, 1e-6), {"steps_per_contact": -50}),
+        ("k", params.contact_time, (True, 1.0)),  # a bool is a slip, not 1
+        ("radius", params.sphere_mass, (1e-300, 2000)),  # the mass underflows to 0
+        ("radius", params.sphere_mass, (1e200, 1e200)),  # and overflows
     ]
+
+    def test_numpy_numbers_are_numbers(self):
+        import numpy as np
+        self.assertEqual(params.contact_time(np.float32(100), np.int64(1)), params.contact_time(100.0, 1.0))
 
     def test_each_call_names_its_argument(self):
         for name, f, args, *kw in self.calls:

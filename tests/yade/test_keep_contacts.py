@@ -119,4 +119,11 @@ ip2.keepContacts()
 O.loadTmp("bed")
 remake()
 check(ip2.restoreContacts() == 0, "contacts kept from another scene (before O.load) are not given back")
+# Contacts of bodies this scene does not have (exported from a larger one): skipped, not a segfault
+# (Body::byId was called with ids beyond the container).
+O.loadTmp("bed")
+data = ip2.exportContacts([b.id for b in O.bodies])
+O.reset()
+O.bodies.append([utils.sphere((0, 0, 0), R, material=mat), utils.sphere((10 * R, 0, 0), R, material=mat)])
+check(ip2.importContacts(data) > 0 and ip2.restoreContacts() == 0, "contacts of bodies beyond this scene's ids are skipped")
 finish()

@@ -1,0 +1,125 @@
+# ctest (inside yade): what a user can feed the plugin through files and updateAttrs is refused with
+# a message naming the field, not run on (issue #32 items 3, 5, 6, 12):
+# - updateAttrs with an unknown name or a wrong type of an inherited attribute (poisson, label)
+#   changes nothing (kc = -5 was kept when 'poisson' was 'abc');
+# - a saved contact whose pair parameters or state were edited (kp = nan or -500, k1 = inf or 0,
+#   an adhesion mode of 9, deltaA, invDeltaMaxP = nan, deltaMax = nan, lastDelta = inf) does not load;
+#   the unedited file still loads and runs;
+# - a saved MesoBackgroundDamping whose bookkeeping vectors have different lengths runs (it
+#   segfaulted), its energy balance intact;
+# - the pair drivers refuse a step above the pair's stable step (a collision there made e = 6.9),
+#   naming what set it (dt or steps_per_contact), and a radius whose mass leaves floating point.
+import math
+import os
+import re
+import tempfile
+
+from yade import O, utils
+from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom6D,
+                          Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator, MesoMat, MesoBackgroundDamping)
+from harness import check, finish
+
+A, RHO = 1e-3, 2000.0
+
+# 1. updateAttrs: every name known and every type right before any value is set.
+for attrs, error, named in (({"kc": -5.0, "poisson": "abc"}, TypeError, "poisson"), ({"k1": float("nan"), "nonexistent": 1}, AttributeError, "nonexistent"),
+                            ({"kp": 1.0, "label": 3}, TypeError, "label"), ({"kc": 2.0, 7: 1}, AttributeError, "7")):
+    m = MesoMat(k1=100, kp=500, kc=100, poisson=0.25, label="grain")
+    try:
+        m.updateAttrs(attrs)
+        check(False, f"updateAttrs({attrs}) refused", "accepted")
+    except error as e:
+        check(named in str(e) and (m.k1, m.kp, m.kc, m.poisson, m.label) == (100, 500, 100, 0.25, "grain"),
+              f"updateAttrs({attrs}): {error.__name__} naming {named}, nothing changed", str(e))
+m.updateAttrs({"kc": 50.0, "poisson": 0.3, "label": "wall"})
+check((m.kc, m.poisson, m.label) == (50.0, 0.3, "wall"), "updateAttrs with valid inherited attributes sets them")
+for bad in ({"poisson": "abc"}, {"label": 3}):
+    try:
+        MesoMat(**bad)
+        check(False, f"MesoMat({bad}) refused", "accepted")
+    except TypeError as e:
+        check(str(e).startswith(list(bad)[0] + " = "), f"MesoMat({bad}): TypeError naming it", str(e))
+
+
+# 2. A saved contact, edited.
+def pair_scene(drag=False):
+    O.reset()
+    m = O.materials.append(MesoMat(k1=100, kp=500, kc=20, phiF=0.1, fa=1e-5, kca=100, adhesion="jumpIn", density=RHO,
+                                   kt=50, frictionAngle=0.3, kr=10, muR=0.1))
+    O.bodies.append([utils.sphere((0, 0, 0), A, material=m), utils.sphere((2 * A - 2e-5, 0, 0), A, material=m)])
+    O.bodies[1].state.vel = (-0.01, 0.002, 0)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom6D()], [Ip2_MesoMat_MesoMat_MesoPhys()], [Law2_ScGeom_MesoPhys_Meso()])] + \
+                ([MesoBackgroundDamping(gammaB=1e-3, gammaBR=1e-4)] if drag else []) + [NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    O.trackEnergy = True
+    O.run(50, True)
+
+
+pair_scene()
+with tempfile.TemporaryDirectory() as d:
+    good = os.path.join(d, "good.xml")
+    O.save(good)
+    text = open(good).read()
+
+    def tag(name, value, within):
+        """text with <name>...</name>'s content replaced inside the first <within ...> block (the
+        pair's <params>, the contact's <history> or <geometry>; MesoMat has its own k1, kp)."""
+        block = re.search(rf"<{within}[ >].*?</{within}>", text, re.S)
+        h = re.search(rf"<{name}>([^<]*)</{name}>", block.group(0))
+        start = block.start() + h.start(1)
+        return text[:start] + value + text[block.start() + h.end(1):]
+
+    for name, value, within in (("kp", "nan", "params"), ("kp", "-500", "params"), ("k1", "inf", "params"), ("k1", "0", "params"),
+                                ("adhesion", "9", "params"), ("deltaA", "-1", "params"), ("invDeltaMaxP", "nan", "geometry"),
+                                ("deltaMax", "nan", "history"), ("lastDelta", "inf", "lastDelta"), ("radius1", "-1", "geometry")):
+        bad = os.path.join(d, f"bad-{name}-{value}.xml")
+        open(bad, "w").write(tag(name, value, within) if within != name  # lastDelta is a plain member of the contact
+                             else re.sub(rf"<{name}>[^<]*</{name}>", f"<{name}>{value}</{name}>", text, count=1))
+        try:
+            O.load(bad)
+            check(False, f"saved {name} = {value} refused on load", "loaded")
+        except RuntimeError as e:
+            check(f"{name} = " in str(e) and "saved contact" in str(e), f"saved {name} = {value} refused on load", str(e)[:120])
+    O.load(good)
+    O.run(10, True)
+    check(O.interactions[0, 1].isReal and math.isfinite(O.interactions[0, 1].phys.normalForce.norm()), "the unedited file loads and runs")
+
+# 3. The drag's bookkeeping vectors with different lengths (an edited or mixed-up file).
+pair_scene(drag=True)
+with tempfile.TemporaryDirectory() as d:
+    good = os.path.join(d, "drag.xml")
+    O.save(good)
+    text = open(good).read()
+    for name in ("hasPrev", "prevForce", "prevAngVel"):
+        # keep only the vector's first element: <name><count>2</count>...<item>..</item><item>..</item></name>
+        body = re.search(rf"<{name}>(.*?)</{name}>", text, re.S)
+        items = re.findall(r"<item>.*?</item>", body.group(1), re.S)
+        short = re.sub(r"<count>\d+</count>", "<count>1</count>", body.group(1), count=1)
+        for it in items[1:]:
+            short = short.replace(it, "", 1)
+        bad = os.path.join(d, f"drag-{name}.xml")
+        open(bad, "w").write(text[:body.start(1)] + short + text[body.end(1):])
+        O.load(bad)
+        O.run(20, True)
+        e = O.energy
+        check(len(items) == 2 and math.isfinite(sum(e[k] for k in e.keys())), f"the drag with a shortened {name} runs", f"{len(items)} items before")
+
+# 4. The pair drivers and an unstable step.
+from mesocontact import pair  # noqa: E402
+for kw, named in ((dict(steps_per_contact=0.5), "steps_per_contact"), (dict(steps_per_contact=1), "steps_per_contact"), (dict(dt=1.0), "dt")):
+    for build in (lambda **k: pair.build(1e-3, 0.1, dict(k1=100, kp=500), **k), lambda **k: pair.build_wall(1e-3, 0.1, dict(k1=100, kp=500), **k)):
+        try:
+            build(**kw)
+            check(False, f"pair driver with {kw} refused", "accepted")
+        except ValueError as e:
+            check(str(e).startswith(named + " = ") and "stable step" in str(e), f"pair driver with {kw} refused", str(e))
+s = pair.build(1e-3, 0.1, dict(k1=100, kp=500), steps_per_contact=4)  # 4 per half period: stable, and runs
+check(abs(pair.collide(s).e - 1) < 0.5, "pair driver at 4 steps per contact accepted")
+for kw, named in ((dict(radius2=1e-300), "radius = 1e-300"), (dict(dt=True), "dt = True")):
+    try:
+        pair.build(1e-3, 0.1, dict(k1=100, kp=500), **kw)
+        check(False, f"pair.build({kw}) refused", "accepted")
+    except ValueError as e:
+        check(str(e).startswith(named), f"pair.build({kw}) refused, naming it", str(e))
+finish()
