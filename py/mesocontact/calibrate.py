@@ -70,12 +70,18 @@ def check_data(v, e, sigma=None, source="data"):
 def load_data(path):
     """Reads a CSV file with a header naming the columns v, e and optionally sigma (SI units;
     lines starting with # are comments)."""
-    with open(path, newline="") as f:
-        lines = [ln for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+    try:  # utf-8-sig: a spreadsheet's "CSV UTF-8" starts with a byte-order mark
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            lines = [ln for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+    except UnicodeDecodeError as e:
+        raise DataError(f"{path}: not a text CSV file (byte {e.start} is not UTF-8)") from None
     if not lines:
         raise DataError(f"{path}: no header and no data")
     reader = csv.reader(lines)
     header = [h.strip() for h in next(reader)]
+    twice = sorted({h for h in header if header.count(h) > 1})
+    if twice:
+        raise DataError(f"{path}: column {twice[0]!r} appears {header.count(twice[0])} times in the header {header}")
     for need in ("v", "e"):
         if need not in header:
             raise DataError(f"{path}: column {need!r} is missing (the header is {header}; needed: v, e and optionally sigma)")
@@ -463,6 +469,10 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                 best = r
         return best
 
+    speeds = len(np.unique(data.v))
+    if speeds < len(free):
+        raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
+                        "measure at more speeds or fix some (free=...)")
     best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng))
     p = _from_x(free, best.x, fixed, scale)
     res = setup.curve(data.v, p) - data.e
@@ -472,6 +482,9 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         s2, chi2 = 1.0, float(np.sum((res / data.sigma) ** 2) / max(n - k, 1))
         sigma_used = float(np.median(data.sigma))
     else:
+        if n <= k or float(np.sum(res ** 2)) < 1e-24 * n:
+            raise DataError(f"{data.source}: the fit passes through every point ({n} points, {k} free parameters): without a sigma "
+                            "column the noise, and so any interval, cannot be estimated; give sigma or more points")
         s2, chi2 = float(np.sum(res ** 2) / max(n - k, 1)), None
         sigma_used = math.sqrt(s2)
     ci, corr, undetermined, statements = _identify(free, p, setup, data, w, s2)
@@ -508,7 +521,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
             better[:] = [2 * r.cost, last[m]]
         return (2 * r.cost - ssr_min) / s2
 
-    last, better = {}, [ssr_min * (1 - 1e-9) - 1e-300, None]
+    last, better, bounded = {}, [ssr_min * (1 - 1e-9) - 1e-300, None], set()
     for m in free:
         for side, moved in _profile_values(m, p, setup, data):
             delta = profile(m, moved, [p] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup, data,
@@ -522,9 +535,14 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                 open_sides.setdefault(m, []).append(f"{moved:.4g} (+{delta:.2f})")
                 continue
             path = _path(m, p, moved)
-            t = brentq(lambda t: profile(m, path(t), [p] + ([last[m]] if m in last else [])) - PROFILE_CHI2,
-                       0.0, 1.0, xtol=1e-4)
-            ci[m][k] = path(t)
+            rise = lambda t: profile(m, path(t), [p] + ([last[m]] if m in last else [])) - PROFILE_CHI2  # noqa: E731
+            if not rise(0.0) < 0:  # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
+                ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
+                if m not in undetermined:
+                    undetermined.append(m)
+                continue
+            ci[m][k] = path(brentq(rise, 0.0, 1.0, xtol=1e-4))
+            bounded.add((m, k))
     if better[1] is not None and _depth < 3:
         # a profile refit found a better fit than the starts did: start again from it
         return fit(data, radius, density, against, adhesion, kca, interpolation, free,
@@ -533,6 +551,10 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         statements.append(f"{m}: set to {' or '.join(sides)} with the others refitted it fits as well (in brackets: "
                           f"the growth of the sum of squares in noise^2; 95 % threshold {PROFILE_CHI2:.2f})")
     undetermined = [m for m in free if m in undetermined]
+    for m in undetermined:  # an undetermined parameter has no finite interval where the profile found no end
+        for k in (0, 1):
+            if (m, k) not in bounded:
+                ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
     statements = _coverage_statements(setup, p, data, free) + statements
     boot = {}
     if bootstrap:

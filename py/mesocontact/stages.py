@@ -59,16 +59,16 @@ def _load(p, config):
         with open(p + ".json") as f:
             info = json.load(f)
         built = info["built"]
-        have = {"n": built["n"], "material": built["material"], "kc_over_kp": built["kc_over_kp"],
+        have = {"n": int(built["n"]), "material": built["material"], "kc_over_kp": float(built["kc_over_kp"]),
                 "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),  # older files: the first protocol
-                "rel_std": built.get("rel_std", 0.05)}
-    except (OSError, ValueError, KeyError, TypeError) as e:
+                "rel_std": float(built.get("rel_std", 0.05))}
+    except (OSError, ValueError, KeyError, TypeError, AttributeError) as e:  # a number as text, a list, ...
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
     if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std") else have[k] != config[k] for k in config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
     try:
         O.load(p)
-    except (RuntimeError, MemoryError) as e:  # MemoryError: a file of an earlier version of the plugin's classes
+    except (RuntimeError, MemoryError, ValueError, TypeError) as e:  # MemoryError: an earlier version of the plugin's classes; ValueError: a value the classes refuse
         raise _Unreadable(f"{p}: {type(e).__name__}: {e}")
     n = len(_tablet.sphere_ids())
     if n != config["n"] or not {"left", "right"} <= set(_tablet.wall_ids()):

@@ -106,6 +106,25 @@ class BadInput(unittest.TestCase):
             for w in words:
                 self.assertIn(w, str(c.exception), text)
 
+    def test_files_people_have(self):
+        # a spreadsheet's "CSV UTF-8" (a byte-order mark), a duplicated column, a binary file
+        self.assertEqual(list(cal.load_data(self.csv("\ufeffv,e\n0.1,0.8\n0.2,0.7\n")).v), [0.1, 0.2])
+        with self.assertRaisesRegex(cal.DataError, "column 'e' appears 2 times"):
+            cal.load_data(self.csv("v,e,e\n0.1,0.8,0.7\n"))
+        fd, path = tempfile.mkstemp(suffix=".csv")
+        with os.fdopen(fd, "wb") as f:
+            f.write(b"\x89PNG\r\n\x1a\n\xff\xfe")
+        self.addCleanup(os.remove, path)
+        with self.assertRaisesRegex(cal.DataError, path.replace(".", "\\.") + ": not a text CSV file"):
+            cal.load_data(path)
+
+    def test_data_that_cannot_determine_the_fit(self):
+        start = dict(k1=100.0, kp=500.0, kc=50.0, phiF=0.1)
+        with self.assertRaisesRegex(cal.DataError, "1 distinct speed.*3 free parameters"):  # four identical rows
+            cal.fit(cal.check_data([0.1] * 4, [0.5] * 4), 1e-3, 2000, values=start)
+        with self.assertRaisesRegex(cal.DataError, "passes through every point"):  # no sigma, no spread
+            cal.fit(cal.check_data([0.05, 0.1, 0.2], [0.9, 0.8, 0.7]), 1e-3, 2000, values=start, bootstrap=0)
+
     def test_comments_and_sigma_are_read(self):
         d = cal.load_data(self.csv("# drop tests\nv,e,sigma\n0.1,0.8,0.01\n# a note\n0.2,0.7,0.02\n"))
         self.assertEqual(list(d.v), [0.1, 0.2])

@@ -85,12 +85,16 @@ info = campaign.prepare(out, quick=True)
 from mesocontact import stages  # noqa: E402
 
 p_unc = stages.path("unconfined", out, quick=True)
-for damage in ("truncated state", "truncated JSON", "no JSON"):
+for damage in ("truncated state", "truncated JSON", "kc_over_kp as text", "no JSON"):
     if damage == "truncated state":
         data = open(p_unc, "rb").read()
         open(p_unc, "wb").write(data[: len(data) // 2])
     elif damage == "truncated JSON":
         open(p_unc + ".json", "w").write('{"built": {"n": 2')
+    elif damage == "kc_over_kp as text":  # it ended in a TypeError without the file's name
+        j = json.load(open(p_unc + ".json"))
+        j["built"]["kc_over_kp"] = "abc"
+        json.dump(j, open(p_unc + ".json", "w"))
     else:
         os.remove(p_unc + ".json")
     again = campaign.prepare(out, quick=True, progress=False)
