@@ -26,9 +26,27 @@ def _m_r():
 PARAM_NOTE = f"k1 = {PAPER['k1']:g}, kp = {PAPER['kp']:g}, kc = {PAPER['kc']:g} N/m, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, γ0 = 0"
 
 
-def _fig_note(fig, text):
-    """Parameters under the figure (a box inside a panel would hide data)."""
-    fig.text(0.5, 0.005, text, ha="center", va="bottom", fontsize=7.5, color="0.25")
+def _fig_note(fig, text, fontsize=7.5):
+    """Parameters under the figure (a box inside a panel would hide data), wrapped at commas to the
+    figure's width; _note_rect(fig) then keeps the panels above it."""
+    width_pt, height_pt = fig.get_size_inches() * 72
+    per_line = max(20, int(0.92 * width_pt / (0.52 * fontsize)))  # about 0.52 em per character
+    lines, line = [], ""
+    for part in text.split(", "):
+        candidate = part if not line else line + ", " + part
+        if len(candidate) > per_line and line:
+            lines.append(line + ",")
+            line = part
+        else:
+            line = candidate
+    lines.append(line)
+    fig.text(0.5, 0.005, "\n".join(lines), ha="center", va="bottom", fontsize=fontsize, color="0.25", linespacing=1.25)
+    fig._meso_note_bottom = (len(lines) * 1.25 * fontsize + 4) / height_pt
+
+
+def _note_rect(fig):
+    """tight_layout's rect that leaves the note under the panels free."""
+    return (0, getattr(fig, "_meso_note_bottom", 0.03), 1, 1)
 
 
 def _write_csv(path, header, rows):
@@ -76,7 +94,7 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     ax.set_title("Fig. 5: jump-in adhesion, η = 4, β = 1")
     ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 0.08))
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=_note_rect(fig))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig5_restitution_adhesive.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
@@ -114,7 +132,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
     ax.legend()
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=_note_rect(fig))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig6_restitution.png"), dpi=150)
     plt.close(fig)
 
@@ -131,7 +149,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
     ax.legend()
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=_note_rect(fig))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig8_sticking_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig6_restitution.csv"),
@@ -168,7 +186,7 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")
     _fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=_note_rect(fig))
     outputs.savefig_atomic(fig, os.path.join(outdir, "fig7_force_overlap.png"), dpi=150)
     plt.close(fig)
     _write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),

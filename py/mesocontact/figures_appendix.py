@@ -6,7 +6,7 @@ import os
 import time
 
 from . import outputs, pair, theory
-from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt
+from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _note_rect, _progress, _write_csv, plt
 
 K1 = PAPER["k1"]
 PHI_F = PAPER["phiF"]
@@ -38,7 +38,7 @@ def _finish_sweep(fig, ax, outdir, stem, rows, title, note, ylabel="e", legend_s
 
 
 def _save(fig, outdir, stem):
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=_note_rect(fig))
     outputs.savefig_atomic(fig, os.path.join(outdir, stem + ".png"), dpi=150)
     plt.close(fig)
 
