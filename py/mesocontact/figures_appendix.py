@@ -305,16 +305,32 @@ def fig14(outdir, quick=False, eta=50.0):
                 asymptote_within_5pct_from_chi=holds)
 
 
+def _branch_potential(branch, f, k1, k2, kc):
+    """The paper's plastic "potential" of Fig. 15(a, c): the energy of the branch the contact is on,
+    each branch counted from its own zero: loading f^2/(2 k1), un-/re-loading (and the limit line)
+    f^2/(2 k2), the tensile limit -f^2/(2 kc) (attractive: negative), none out of contact."""
+    if branch == "loading":
+        return f * f / (2 * k1)
+    if branch in ("unloading", "limit"):
+        return f * f / (2 * k2)
+    if branch == "tensile":
+        return -f * f / (2 * kc) if kc > 0 else 0.0
+    return 0.0
+
+
 def fig15(outdir, quick=False, chis=(0.34, 0.69)):
-    """Energies against time from O.energy (eta = 4, beta = 1): kinetic, stored elastic
-    ('mesoElastic'), the work left in the contact E_0 - E_kin (the paper's plastic "potential"),
-    dissipated (hysteresis + adhesion); their sum against the initial kinetic energy."""
+    """The paper's four panels (eta = 4, beta = 1), from YADE's collision: (a, c) kinetic energy and
+    the plastic "potential" (the energy of the contact's current branch, negative on the -kc branch,
+    _branch_potential), (b, d) kinetic and the available (elastic) energy, what the contact would give
+    back along its k2 line ('mesoElastic'); the times where the overlap passes the closed form's
+    delta0, deltaMin (and deltaC, where the pair sticks) marked. The energy balance (kinetic + stored
+    + dissipated = E0) is checked on every sample."""
     from yade import O, wrapper as _w
     eta, beta = 4.0, 1.0
     mat = _mat(eta, beta)
-    fig, axes = plt.subplots(1, len(chis), figsize=(5 * len(chis), 3.8), squeeze=False)
+    fig, axes = plt.subplots(2, len(chis), figsize=(5.2 * len(chis), 6.6), squeeze=False)
     rows, cases = [], []
-    for ax, chi, tag in zip(axes[0], chis, "ab"):
+    for col, chi in enumerate(chis):
         v = _speed(chi, mat)
         s = pair.build(RADIUS, v, mat, track_energy=True)
         e0 = 0.5 * s.m_r * v ** 2  # no force acts before contact: the kinetic energy is exact
@@ -324,26 +340,63 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         O.engines = O.engines + [sampler]
         O.run(int((3 if quick else 6) * t_load / O.dt), True)
         samples = _SAMPLES["rows"]
+        kc = mat["kc"]
+        potential = [_branch_potential(x[7], x[8], K1, x[9], kc) for x in samples]
         worst = max(abs(x[5] - e0) for x in samples) / e0
+        # closed form of this collision (fa = 0): deltaMax (Eq. 20b), k2, delta0, deltaMin, deltaC
+        d_max = theory.max_overlap(v, K1, mat["kp"], PHI_F, s.a12, s.m_r)
+        k2 = K1 * theory.k2_over_k1(chi, eta)
+        d0 = (1 - K1 / k2) * d_max
+        d_min = k2 * d0 / (k2 + kc)
+        sticks = theory.en_squared(chi, eta, kc / K1) <= 0
+        marks = [("δ0", d0), ("δmin", d_min)] + ([("δc", theory.sticking_overlap(chi, eta, kc / K1) * theory.delta_max_p(K1, mat["kp"], PHI_F, s.a12))] if sticks else [])
         ms = [x[0] * 1e3 for x in samples]
-        ax.plot(ms, [x[1] / e0 for x in samples], "k-", lw=1, label="kinetic")
-        ax.plot(ms, [(e0 - x[1]) / e0 for x in samples], "r-", lw=1, label="E0 − kinetic (work in the contact)")
-        ax.plot(ms, [x[2] / e0 for x in samples], "b-", lw=1, label="stored elastic (mesoElastic)")
-        ax.plot(ms, [(x[3] + x[4]) / e0 for x in samples], "g-", lw=1, label="dissipated (mesoPlastic + mesoAdhesive)")
-        ax.plot(ms, [x[5] / e0 for x in samples], "k:", lw=1, label="sum (O.energy.total())")
-        state = "sticks" if theory.en_squared(chi, eta, beta) <= 0 else f"rebounds, e = {theory.restitution_fa0(chi, eta, beta):.3f}"
-        ax.set_title(f"({tag}) χ = {chi:g}: {state}", fontsize=9)
-        ax.set_xlabel("t [ms]")
-        ax.set_ylabel("energy / E_kin(0)")
-        ax.legend(fontsize=6.5, loc="center right")
-        cases.append(dict(chi=chi, worst_abs_sum_error_over_E0=worst, samples=len(samples)))
-        rows += [(chi,) + x for x in samples]
-        print(f"[fig15] chi = {chi}: {len(samples)} samples, worst |sum - E0|/E0 = {worst:.2e}", flush=True)
+        state = "sticks" if sticks else f"rebounds, e = {theory.restitution_fa0(chi, eta, beta):.3f}"
+        first_below = {}
+        unloading = False
+        for x in samples:  # the first time the overlap falls to delta0 and deltaMin after deltaMax
+            unloading = unloading or x[7] in ("unloading", "tensile")
+            for name, d in marks[:2]:
+                if unloading and name not in first_below and x[6] <= d:
+                    first_below[name] = x[0] * 1e3
+        delta_c_yade = None
+        if sticks:  # deltaC: the lower turning point after deltaMin, where the stuck pair first comes to rest
+            after = [x for x in samples if x[0] * 1e3 >= first_below.get("δmin", 0.0)]
+            k = next((n for n in range(1, len(after) - 1) if after[n][6] <= after[n - 1][6] and after[n][6] < after[n + 1][6]), None)
+            if k is not None:
+                first_below["δc"] = after[k][0] * 1e3
+                delta_c_yade = after[k][6]
+        for row, (label, values, color) in enumerate((("plastic “potential” (current branch)", potential, "tab:red"),
+                                                       ("available elastic (mesoElastic, along k2)", [x[2] for x in samples], "tab:blue"))):
+            ax = axes[row][col]
+            ax.plot(ms, [x[1] / e0 for x in samples], "k-", lw=1, label="kinetic")
+            ax.plot(ms, [y / e0 for y in values], "-", color=color, lw=1.2, label=label)
+            ax.axhline(0, color="0.6", lw=0.5)
+            for n, (name, t) in enumerate(first_below.items()):  # above the panel; delta0 and deltaMin lie close together
+                ax.axvline(t, color="0.5", lw=0.6, ls=":")
+                ax.text(t, 1.01, (name + " ") if n == 0 else (" " + name), fontsize=7, color="0.3",
+                        ha="right" if n == 0 else "left", va="bottom", transform=ax.get_xaxis_transform())
+            panel = "abcd"[2 * col + row]
+            ax.set_title(f"({panel}) χ = {chi:g}: {state}", fontsize=9, pad=11)
+            ax.set_xlabel("t [ms]")
+            ax.set_ylabel("energy / E_kin(0)")
+            ax.set_xlim(0, min(ms[-1], 1.6 * t_load * 1e3))  # the contact and a few oscillations of a stuck pair
+            ax.legend(fontsize=6.5, loc="upper right")
+        low = min(potential) / e0
+        cases.append(dict(chi=chi, worst_abs_sum_error_over_E0=worst, samples=len(samples), sticks=sticks,
+                          min_plastic_potential_over_E0=low, min_available_over_E0=min(x[2] for x in samples) / e0,
+                          overlap_marks_ms=first_below, delta_c_closed_form=marks[2][1] if sticks else None,
+                          delta_c_yade=delta_c_yade,
+                          plastic_potential_after_stick_over_E0=(potential[-1] / e0) if sticks else None))
+        rows += [(chi,) + x[:7] + (x[8], p) for x, p in zip(samples, potential)]
+        print(f"[fig15] chi = {chi}: {len(samples)} samples, worst |sum - E0|/E0 = {worst:.2e}, lowest plastic potential {low:.3f} E0",
+              flush=True)
     _fig_note(fig, "η = 4, β = 1; " + PARAM_LINE)
-    fig.suptitle("Fig. 15: energies of one collision (O.energy)")
+    fig.suptitle("Fig. 15: kinetic and potential energies of one collision (YADE)")
     _save(fig, outdir, "fig15_energies")
     _write_csv(os.path.join(outdir, "fig15_energies.csv"),
-               ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J", "overlap_m"], rows)
+               ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J", "overlap_m",
+                "hystereticForce_N", "plastic_potential_J"], rows)
     return dict(figure="long 15", collisions=len(cases), cases=cases,
                 worst_abs_sum_error_over_E0=max(c["worst_abs_sum_error_over_E0"] for c in cases))
 
@@ -354,5 +407,10 @@ _SAMPLES = {}  # fig15: the scene and its samples, filled by a PyRunner inside Y
 def _sample():
     from yade import O
     en = {k: O.energy[k] for k in O.energy.keys()}
+    s = _SAMPLES["scene"]
+    i = O.interactions[s.ids[0], s.ids[1]] if O.interactions.has(s.ids[0], s.ids[1]) else None
+    real = i is not None and i.isReal
     _SAMPLES["rows"].append((O.time, en.get("kinetic", 0.0), en.get("mesoElastic", 0.0), en.get("mesoPlastic", 0.0),
-                             en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(_SAMPLES["scene"])))
+                             en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(s),
+                             i.phys.branch if real else "apart", i.phys.hystereticForce if real else 0.0,
+                             i.phys.k2 if real else K1))

@@ -47,4 +47,17 @@ check(cases[True]["stuck"] and cases[True]["final_overlap_over_dmp"] > 0.05, "Fi
       f"{cases[True]['final_overlap_over_dmp']}")
 check(done["long-15"]["worst_abs_sum_error_over_E0"] <= 1e-4, "Fig. 15: energies add up to E_kin(0) within 1e-4",
       f"{done['long-15']['worst_abs_sum_error_over_E0']:.1e}")
+# The paper's sentences of Fig. 15: the plastic potential turns negative after the kink at deltaMin in
+# both cases; the stuck pair's jumps back to a positive value; the available energy stays positive
+# (to the half-step term of the bookkeeping, 1e-6 E0 here); the stuck pair comes to rest at the
+# closed form's deltaC (to the quick mode's sampling: every step, dt = t_c/2000).
+rebound, stuck = sorted(done["long-15"]["cases"], key=lambda c: c["chi"])
+check(rebound["min_plastic_potential_over_E0"] < 0 and stuck["min_plastic_potential_over_E0"] < 0 and not rebound["sticks"] and stuck["sticks"],
+      "Fig. 15: the plastic potential turns negative at deltaMin (a, c)",
+      f"{rebound['min_plastic_potential_over_E0']:.3f}, {stuck['min_plastic_potential_over_E0']:.3f}")
+check(stuck["plastic_potential_after_stick_over_E0"] > 0, "Fig. 15(c): it jumps back positive when the pair sticks",
+      f"{stuck['plastic_potential_after_stick_over_E0']:.2e}")
+check(min(rebound["min_available_over_E0"], stuck["min_available_over_E0"]) > -1e-6, "Fig. 15(b, d): the available energy stays positive")
+check(abs(stuck["delta_c_yade"] / stuck["delta_c_closed_form"] - 1) < 1e-3, "Fig. 15(c): the stuck pair turns at the closed form's deltaC",
+      f"{stuck['delta_c_yade']:.6e} against {stuck['delta_c_closed_form']:.6e} m")
 finish()
