@@ -67,11 +67,29 @@ def short_fig5(outdir, quick=False):
                 v_fa=v_fa)
 
 
-def short_fig6(outdir, quick=False, fas=(0.0, 5e-7, 5e-6, 5e-5, 5e-4, 5e-3)):
-    """e against v_i^inf for several fa (elasto-plastic, kp = 5 k1): the low-velocity sticking limit
-    grows with fa until the pair sticks at every speed."""
+def _low_sticking_edge(mat, fa, lo=1e-9, hi=3.0):
+    """The speed below which the pair sticks (the low-velocity limit v_f^a), by bisection on the
+    closed form between lo (stuck) and the first rebound above it; None if it rebounds at lo."""
+    if _e_theory(lo, mat, fa) > 0:
+        return None
+    grid = _log_grid(lo, hi, 400)
+    up = next((v for v in grid if _e_theory(v, mat, fa) > 0), None)
+    if up is None:
+        return hi  # stuck over the whole range
+    a = grid[grid.index(up) - 1]
+    for _ in range(100):
+        mid = (a * up) ** 0.5
+        a, up = (mid, up) if _e_theory(mid, mat, fa) == 0 else (a, mid)
+    return up
+
+
+def short_fig6(outdir, quick=False, fas=(0.0, 5e-9, 5e-7, 5e-5, 5e-3, 0.1)):
+    """e against v_i^inf for several fa (elasto-plastic, kp = 5 k1), chosen so that each sentence of
+    the paper can be read off the plotted range 1e-5 to 3 m/s: the low-velocity sticking limit v_f^a
+    grows with fa; 0.1 N holds the pair at every plotted speed; 5e-9 N lies on the fa = 0 curve
+    (within 1 %) over the whole range, its own sticking limit far below it."""
     t0 = time.time()
-    fas = (0.0, 5e-5, 5e-3) if quick else fas
+    fas = (0.0, 5e-9, 0.1) if quick else fas
     speeds = [1e-3, 0.1] if quick else _log_grid(1e-5, 3.0, 15)
     curves = [(f"f_a = {fa:g} N", SHORT, fa, speeds) for fa in fas]
     rows = _run("short fig6", curves, t0)
@@ -84,4 +102,13 @@ def short_fig6(outdir, quick=False, fas=(0.0, 5e-7, 5e-6, 5e-5, 5e-4, 5e-3)):
     _fig_note(fig, "kp = 500 N/m; " + PARAM_LINE)
     _save(fig, outdir, "short_fig6_adhesion_strength")
     _write_csv(os.path.join(outdir, "short_fig6_adhesion_strength.csv"), HEADER, rows)
-    return dict(figure="short 6", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows))
+    grid = _log_grid(1e-5, 3.0, 600)
+    summary = []
+    for fa in fas:
+        on_fa0 = max(abs(_e_theory(v, SHORT, fa) - _e_theory(v, SHORT, 0.0)) / max(_e_theory(v, SHORT, 0.0), 1e-300)
+                     for v in grid if _e_theory(v, SHORT, 0.0) > 0)
+        stuck_yade = [r[2] for r in rows if r[1] == fa and r[5]]
+        summary.append(dict(fa=fa, v_f_a=_low_sticking_edge(SHORT, fa), e_at_3=_e_theory(3.0, SHORT, fa),
+                            sticks_at_every_plotted_speed=all(_e_theory(v, SHORT, fa) == 0 for v in grid),
+                            largest_relative_departure_from_fa0=on_fa0, yade_stuck_speeds=len(stuck_yade)))
+    return dict(figure="short 6", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows), curves=summary)

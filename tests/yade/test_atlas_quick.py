@@ -51,6 +51,15 @@ check(done["long-15"]["worst_abs_sum_error_over_E0"] <= 1e-4, "Fig. 15: energies
 # both cases; the stuck pair's jumps back to a positive value; the available energy stays positive
 # (to the half-step term of the bookkeeping, 1e-6 E0 here); the stuck pair comes to rest at the
 # closed form's deltaC (to the quick mode's sampling: every step, dt = t_c/2000).
+# Short Fig. 6's sentences, on its plotted range 1e-5 to 3 m/s: the extreme fa (0.1 N) sticks at every
+# speed; the very small one (5e-9 N) lies on the fa = 0 curve (within 1e-3 relative), its sticking
+# limit v_f^a below the range.
+short6 = {c["fa"]: c for c in done["short-6"]["curves"]}
+check(short6[0.1]["sticks_at_every_plotted_speed"] and short6[0.1]["yade_stuck_speeds"] == 2,  # both quick speeds
+      "short Fig. 6: fa = 0.1 N sticks at every plotted speed, in YADE too")
+check(short6[5e-9]["largest_relative_departure_from_fa0"] < 1e-3 and short6[5e-9]["v_f_a"] < 1e-5,
+      "short Fig. 6: fa = 5e-9 N on the fa = 0 curve over the plotted range",
+      f"{short6[5e-9]['largest_relative_departure_from_fa0']:.1e}, v_f^a = {short6[5e-9]['v_f_a']:.2e} m/s")
 rebound, stuck = sorted(done["long-15"]["cases"], key=lambda c: c["chi"])
 check(rebound["min_plastic_potential_over_E0"] < 0 and stuck["min_plastic_potential_over_E0"] < 0 and not rebound["sticks"] and stuck["sticks"],
       "Fig. 15: the plastic potential turns negative at deltaMin (a, c)",
