@@ -4,6 +4,25 @@ import math
 from .theory import _nonnegative, _number, _positive, _positive_or_inf
 
 
+def _representable(f, zero_ok=False):
+    """The helper's result must be a finite number > 0 (>= 0 where zero_ok): inputs whose result
+    overflows or underflows raise ValueError naming them, instead of returning inf or 0."""
+    import functools
+
+    @functools.wraps(f)
+    def checked(*args, **kw):
+        r = f(*args, **kw)
+        if not (math.isfinite(r) and (r >= 0 if zero_ok else r > 0)):
+            given = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kw.items()])
+            raise ValueError(f"{f.__name__}({given}) = {r!r} is out of floating-point range: the arguments are too extreme")
+        return r
+    return checked
+
+
+def _zero_ok(f):
+    return _representable(f, zero_ok=True)
+
+
 def sphere_mass(radius, density):
     """Mass of a sphere [kg]."""
     _positive("radius", radius)
@@ -17,6 +36,7 @@ def sphere_mass(radius, density):
     return m
 
 
+@_representable
 def reduced_mass(m1, m2=math.inf):
     """m1 m2/(m1 + m2); against a wall (m2 = inf) the sphere's own mass [kg]."""
     _positive("m1", m1)
@@ -24,6 +44,7 @@ def reduced_mass(m1, m2=math.inf):
     return m1 if math.isinf(m2) else m1 * m2 / (m1 + m2)
 
 
+@_representable
 def reduced_radius(a1, a2=math.inf):
     """a12 = 2 a1 a2/(a1 + a2); against a wall (a2 = inf) 2 a1 [m]."""
     _positive("a1", a1)
@@ -31,6 +52,7 @@ def reduced_radius(a1, a2=math.inf):
     return 2.0 * a1 if math.isinf(a2) else 2.0 * a1 * a2 / (a1 + a2)
 
 
+@_zero_ok
 def fa_from_alpha(alpha, k1, m_r, v_i):
     """Non-contact force from the adhesivity alpha = sqrt(fa^2/(k1 m_r v_i^2)) (Eq. 27c) [N]."""
     _nonnegative("alpha", alpha)
@@ -40,6 +62,7 @@ def fa_from_alpha(alpha, k1, m_r, v_i):
     return alpha * math.sqrt(k1 * m_r) * v_i
 
 
+@_representable
 def contact_time(k, m_r):
     """Half period pi sqrt(m_r/k) of a linear contact of stiffness k [s]."""
     _positive("k", k)
@@ -47,6 +70,7 @@ def contact_time(k, m_r):
     return math.pi * math.sqrt(m_r / k)
 
 
+@_representable
 def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
     """An accuracy step, not a stability bound: the time step that resolves the half period of
     the law's stiffest element by steps_per_contact steps, for the smallest particle mass m_min,

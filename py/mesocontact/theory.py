@@ -297,8 +297,12 @@ def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
     _nonnegative("chi", chi)
     _positive("m_r", m_r)
     _nonnegative("fa", fa)
-    d = chi * delta_max_p(k1, kp, phiF, a12)
-    return math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)
+    dmp = delta_max_p(k1, kp, phiF, a12)
+    d = chi * dmp
+    v = math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)
+    if math.isinf(v) and math.isfinite(dmp):
+        raise ValueError(f"chi = {chi!r}: the speed for it is out of floating-point range (deltaMax^p = {dmp!r} m)")
+    return v
 
 
 # --- the duration of a contact -------------------------------------------------------------
