@@ -39,7 +39,9 @@ class Cli(unittest.TestCase):
         vp = theory.plastic_limit_velocity(100.0, 500.0, 0.05, a12, m_r)
         v = [vp * x for x in (0.03, 0.1, 0.25, 0.4, 0.7, 1.5, 3.0, 5.0)]
         e = cal.Setup(m_r, a12).curve(v, TRUTH)
-        path = self.write("d.csv", "# exact data of eta = 4, beta = 1\nv,e\n" + "".join(f"{a!r},{b!r}\n" for a, b in zip(v, e)))
+        # Exact values with a stated error: without sigma an exact fit is refused (no noise to estimate).
+        path = self.write("d.csv", "# exact data of eta = 4, beta = 1\nv,e,sigma\n"
+                          + "".join(f"{a!r},{b!r},0.01\n" for a, b in zip(v, e)))
         out = os.path.join(self.dir, "out")
         r = run(path, "--radius", repr(R), "--density", repr(RHO), "--k1", "100", "--starts", "5", "--bootstrap", "10",
                 "--out", out, "--yade", YADE)
