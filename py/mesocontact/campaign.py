@@ -531,10 +531,13 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
             events["snapshots"].append({"mark": marks.pop(0), "Dx": dx, "F": row[2], "png": label + ".png"})
         while plane_marks and dx >= plane_marks[0]:
             events["planes_at_marks"][f"{plane_marks.pop(0):g}"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
+        # The largest tension so far (F < 0 in tension): where does the sample tear? Looked at on
+        # every record that sets a new peak (only while the force rises, a few hundred records),
+        # since a dense sample's peak is too sharp for the coarser checks below.
+        if row[2] < peak[0]:
+            peak[0] = row[2]
+            events["planes_at_peak"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
         if len(t.rows) % check_every == 0:
-            if row[2] < peak[0]:  # the largest tension so far (F < 0 in tension): where does the sample tear?
-                peak[0] = row[2]
-                events["planes_at_peak"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
             if not events["gap_area"] or events["gap_area"][-1][1] < 2 * GAP_AREA:  # up to twice the criterion
                 area = _snap.visible_gap()
                 events["gap_area"].append((dx, area))
