@@ -3,6 +3,7 @@ import math
 
 from yade import O
 
+from .scene_names import BRANCHES  # noqa: F401  (MesoPhys.branch's names, in branchIndex order)
 from .theory import _number
 
 
@@ -47,14 +48,23 @@ def adhesion_range():
     return max((-ip2.mixedParameters(a, b)["deltaA"] for i, a in enumerate(mats) for b in mats[i:]), default=0.0)
 
 
+# YADE's sphere-surface functors without a detection distance, and this package's that have one.
+_SURFACE_FUNCTORS = {"Ig2_Facet_Sphere_ScGeom": "Ig2_Facet_Sphere_MesoScGeom",
+                     "Ig2_Facet_Sphere_ScGeom6D": "Ig2_Facet_Sphere_MesoScGeom6D",
+                     "Ig2_Wall_Sphere_ScGeom": "Ig2_Wall_Sphere_MesoScGeom"}
+
+
 def set_detection(margin=1.2):
     """Makes the collider and the geometry functors in O.engines see pairs at the adhesion range,
     so that reversible pull-in acts before contact (YADE's default factors find pairs only in
     contact). Sets Bo1_Sphere_Aabb.aabbEnlargeFactor and every Ig2 interactionDetectionFactor to
     1 + margin range/a_min (a_min: the smallest sphere; enough for sphere-sphere, whose gap is
-    compared with the sum of the radii, and for sphere-box/facet, compared with one radius).
-    Call it after O.engines, O.materials and the spheres are in place; returns the factor (1.0
-    when no material is adhesive, leaving the engines unchanged)."""
+    compared with the sum of the radii, and for sphere-box/facet/wall, compared with one radius).
+    YADE's facet and wall functors (Ig2_Facet_Sphere_ScGeom[6D], Ig2_Wall_Sphere_ScGeom) have no
+    detection distance: each is replaced by this package's (Ig2_Facet_Sphere_MesoScGeom[6D],
+    Ig2_Wall_Sphere_MesoScGeom), the same geometry in overlap (a facet's shrinkFactor must be 0,
+    neither may be hertzian). Call it after O.engines, O.materials and the spheres are in place;
+    returns the factor (1.0 when no material is adhesive, leaving the engines unchanged)."""
     from yade import wrapper as w
     if not (_number(margin) and margin >= 1):
         raise ValueError(f"margin = {margin!r} is invalid: must be a number >= 1")
@@ -72,12 +82,33 @@ def set_detection(margin=1.2):
                 if isinstance(f, w.Bo1_Sphere_Aabb):
                     f.aabbEnlargeFactor, found = factor, True
         if isinstance(e, w.InteractionLoop):
-            for f in e.geomDispatcher.functors:
+            functors = [_with_detection(f) for f in e.geomDispatcher.functors]
+            for f in functors:
                 if hasattr(f, "interactionDetectionFactor"):
                     f.interactionDetectionFactor = factor
+            if any(a is not b for a, b in zip(functors, e.geomDispatcher.functors)):
+                e.geomDispatcher.functors = functors
     if not found:
         raise ValueError("set_detection: no Bo1_Sphere_Aabb in O.engines' collider (define O.engines first)")
     return factor
+
+
+def _with_detection(functor):
+    """A geometry functor that can see a sphere across a gap: this package's for YADE's facet and
+    wall functors (refusing settings it does not have), the functor itself otherwise."""
+    from yade import wrapper as w
+    name = type(functor).__name__
+    if name not in _SURFACE_FUNCTORS:
+        return functor
+    if getattr(functor, "hertzian", False) or getattr(functor, "shrinkFactor", 0) != 0:
+        raise ValueError(f"set_detection: {name} with hertzian = {functor.hertzian}"
+                         + (f", shrinkFactor = {functor.shrinkFactor}" if hasattr(functor, "shrinkFactor") else "")
+                         + f" cannot be replaced by {_SURFACE_FUNCTORS[name]}, which has neither; "
+                         "set them to their defaults (False, 0) or do without the pull-in at these surfaces")
+    made = getattr(w, _SURFACE_FUNCTORS[name])(label=functor.label)
+    if hasattr(functor, "noRatch"):
+        made.noRatch = functor.noRatch
+    return made
 
 
 def time_step(safety=0.1):
@@ -123,8 +154,6 @@ def time_step(safety=0.1):
     return safety * min(steps, default=math.inf)
 
 
-# The branches of MesoPhys.branch, in the order of MesoPhys.branchIndex.
-BRANCHES = ("new", "apart", "nonContact", "loading", "limit", "unloading", "tensile")
 
 
 def branch_fractions():
