@@ -17,7 +17,9 @@
 #include <core/State.hpp>
 #include <core/Dispatching.hpp>
 #include <pkg/common/ElastMat.hpp>
+#include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
 #include <pkg/dem/FrictPhys.hpp>
 #include <pkg/dem/ScGeom.hpp>
 
@@ -61,6 +63,9 @@ py::dict sizes()
 	d["Body"]           = sizeof(Body);
 	d["Interaction"]    = sizeof(Interaction);
 	d["Sphere"]         = sizeof(Sphere);
+	d["Facet"]          = sizeof(Facet);
+	d["Wall"]           = sizeof(Wall);
+	d["IGeomFunctor"]   = sizeof(IGeomFunctor);
 	d["IPhysFunctor"]   = sizeof(IPhysFunctor);
 	d["LawFunctor"]     = sizeof(LawFunctor);
 	d["GlobalEngine"]   = sizeof(GlobalEngine);
@@ -75,6 +80,13 @@ py::object value(bool x) { return py::object(x); }
 py::object value(const Vector3r& v) { return vec(v); }
 py::object value(const Vector3i& v) { return vec(v); }
 template <class T> py::object value(const shared_ptr<T>& p) { return py::object(size_t(p.get())); }
+py::object value(const std::vector<Vector3r>& v)
+{
+	py::list l;
+	for (const auto& x : v)
+		l.append(vec(x));
+	return py::tuple(l);
+}
 // A reader of class T: the listed members as Python sees them, by name (pointers as addresses).
 #define READ_MEMBER(r, obj, member) d[BOOST_PP_STRINGIZE(member)] = value(obj.member);
 #define READER(fname, T, members) \
@@ -88,6 +100,8 @@ template <class T> py::object value(const shared_ptr<T>& p) { return py::object(
 READER(state, State, (pos)(vel)(angVel)(mass)(inertia))
 READER(material, FrictMat, (density)(young)(frictionAngle)(id))
 READER(sphere, Sphere, (radius))
+READER(facet, Facet, (vertices))
+READER(wall, Wall, (axis)(sense))
 READER(phys, FrictPhys, (kn)(ks)(normalForce)(shearForce)(tangensOfFrictionAngle))
 READER(geom, ScGeom, (penetrationDepth)(normal)(contactPoint))
 READER(bodyMembers, Body, (id)(clumpId)(state)(shape)(material))
@@ -154,6 +168,8 @@ BOOST_PYTHON_MODULE(meso_layout_probe)
 	py::def("body", body);
 	py::def("material", material);
 	py::def("sphere", sphere);
+	py::def("facet", facet);
+	py::def("wall", wall);
 	py::def("phys", phys);
 	py::def("geom", geom);
 	py::def("interaction", interaction);

@@ -64,6 +64,11 @@ for k, v in probe.material(m).items():
     same(f"FrictMat.{k}", v, getattr(m, k))
 sh = w.Sphere(radius=0.0123)
 same("Sphere.radius", probe.sphere(sh)["radius"], sh.radius)
+fa = w.Facet(vertices=[(0.5, -1.25, 0.125), (2.0, 0.75, -0.5), (-1.5, 0.25, 3.0)])
+same("Facet.vertices", probe.facet(fa)["vertices"], tuple(tuple(v) for v in fa.vertices))
+wa = w.Wall(axis=2, sense=-1)
+for k, v in probe.wall(wa).items():
+    same(f"Wall.{k}", v, getattr(wa, k))
 p = w.FrictPhys(kn=1.25e5, ks=3.5e4, tangensOfFrictionAngle=0.75)
 p.normalForce, p.shearForce = (1.0, 2.0, 3.0), (-4.0, 5.0, -6.0)
 for k, v in probe.phys(p).items():

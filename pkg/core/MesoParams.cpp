@@ -18,6 +18,10 @@ namespace {
 	void finite(const char* name, double v)
 	{
 		if (!std::isfinite(v)) reject(name, v, "must be a finite number");
+		// Beyond these the law's own products (k delta^2, f^2/k, 1/m, the stable step) leave floating
+		// point while the value itself is still finite: garbage without a word.
+		if (v != 0 && !(std::abs(v) >= kSmallestValue && std::abs(v) <= kLargestValue))
+			reject(name, v, "lies outside [1e-100, 1e100] (0 allowed): the law's products of it would overflow or underflow");
 	}
 }
 

@@ -46,6 +46,9 @@ struct MaterialParams {
 };
 
 // Throws std::invalid_argument whose message starts with the offending parameter's name.
+// Every nonzero number a material or pair holds lies in [kSmallestValue, kLargestValue] in magnitude.
+constexpr double kSmallestValue = 1e-100, kLargestValue = 1e100;
+
 void validate(const MaterialParams& m);
 
 // Harmonic mean 2xy/(x+y) (0 if either is 0), without overflow for any finite x, y >= 0; x for x == y.

@@ -31,10 +31,10 @@ namespace {
 	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
 		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag },
 		                                  { "poisson", Kind::Number },  { "label", Kind::Text } }; // the last two inherited, unchecked values
-	void checkMesoMatKeywords(const boost::python::dict& kw)
+	void checkMesoMatKeywords(boost::python::dict& kw) // numbers handed on as Python floats (numpy's too)
 	{
 		for (const Field& f : numericFields)
-			if (kw.has_key(f.name)) pychecks::number(f.name, kw[f.name]);
+			if (kw.has_key(f.name)) kw[f.name] = pychecks::number(f.name, kw[f.name]);
 		pychecks::checkKeywords(kw, otherKeywords);
 	}
 }
@@ -74,8 +74,9 @@ meso::MaterialParams MesoMat::parse() const
 	m.dominant = dominant;
 	// Not parameters of the law, but a mass of 0, < 0 or NaN (density) or a wrong time step (young,
 	// read by PWaveTimeStep) would make any run meaningless without a word.
-	if (!(std::isfinite(density) && density > 0))
-		throw std::invalid_argument("density = " + number(density) + " is invalid: must be a finite number > 0 [kg/m^3]");
+	if (!(std::isfinite(density) && density >= meso::kSmallestValue && density <= meso::kLargestValue))
+		throw std::invalid_argument("density = " + number(density)
+		                            + " is invalid: must be a finite number in [1e-100, 1e100] [kg/m^3] (masses and 1/m stay within floating point)");
 	if (!(std::isfinite(young) && young > 0))
 		throw std::invalid_argument("young = " + number(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law)");
 	return m;
@@ -112,9 +113,10 @@ void MesoMat::undoToValid()
 	k2Interpolation = validK2Interpolation;
 }
 
-void MesoMat::updateAttrsChecked(const boost::python::dict& d)
+void MesoMat::updateAttrsChecked(const boost::python::dict& given)
 {
-	checkMesoMatKeywords(d); // every type, before any value is set
+	boost::python::dict d = boost::python::dict(given).copy(); // the caller's dict stays as it was
+	checkMesoMatKeywords(d);              // every type, before any value is set
 	const boost::python::object cls  = boost::python::import("yade.wrapper").attr("MesoMat");
 	const boost::python::list   keys = d.keys();
 	for (long i = 0; i < boost::python::len(keys); ++i) {
@@ -307,9 +309,10 @@ Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const s
 	return s.params;
 }
 
-boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool rotations) const
+boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const
 {
-	const meso::PairParams p = mix(asMeso(m1, "material1"), asMeso(m2, "material2"), rotations);
+	const meso::PairParams p = mix(asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1"),
+	                               asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2"), pychecks::flag("rotations", rotations));
 	boost::python::dict d;
 #define MESO_ENTRY(name, ...) d[#name] = p.name;
 	MESO_NORMAL_PARAMS(MESO_ENTRY)
@@ -336,12 +339,15 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const shared_p
 	return d;
 }
 
-Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, Real radius1, Real radius2, bool rotations) const
+Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& r1,
+                                                  const boost::python::object& r2, const boost::python::object& rot) const
 {
-	if (!(radius1 > 0) || !std::isfinite(radius1)) throw std::invalid_argument("radius1 = " + std::to_string(radius1) + " is invalid: must be a finite number > 0 [m]");
-	if (!(radius2 >= 0) || !std::isfinite(radius2)) throw std::invalid_argument("radius2 = " + std::to_string(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
-	const MesoMat&         a = asMeso(m1, "material1");
-	const MesoMat&         b = asMeso(m2, "material2");
+	const Real radius1 = pychecks::number("radius1", r1), radius2 = pychecks::number("radius2", r2);
+	const bool rotations = pychecks::flag("rotations", rot);
+	if (!(radius1 > 0) || !std::isfinite(radius1)) throw std::invalid_argument("radius1 = " + number(radius1) + " is invalid: must be a finite number > 0 [m]");
+	if (!(radius2 >= 0) || !std::isfinite(radius2)) throw std::invalid_argument("radius2 = " + number(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
+	const MesoMat&         a = asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1");
+	const MesoMat&         b = asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2");
 	const meso::PairParams p = mix(a, b, rotations);
 	auto inverses = [](const MesoMat& m, Real r, Real& invMass, Real& invInertia) { // a free sphere; 0: fixed
 		invMass = invInertia = 0;
@@ -357,8 +363,9 @@ Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const shared_ptr<Material>& m1,
 	return meso::stableStep(p, meso::pairGeometry(p, radius1, radius2), invM1, invM2, invI1, invI2, &which);
 }
 
-void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const shared_ptr<Interaction>& I)
+void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const boost::python::object& interaction)
 {
+	const shared_ptr<Interaction> I = pychecks::instance<Interaction>("interaction", interaction, "an Interaction (O.interactions[i, j])");
 	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;
 	if (!phys || !I->geom || !phys->pairParams) throw std::invalid_argument("interaction: must be a real interaction with MesoPhys made by this Ip2");
 	Scene*                  sc = Omega::instance().getScene().get();
@@ -395,25 +402,54 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	phys->tangensOfFrictionAngle = p.sliding.muS;
 	I->phys                      = phys;
 	checkTimeStep(*phys, *I);
+	checkDepth(*I);
 	if (p.adhesion == meso::Adhesion::Reversible) checkDetection(*phys, *I);
+}
+
+void Ip2_MesoMat_MesoMat_MesoPhys::checkDepth(const Interaction& I)
+{
+	// A contact born deeper than a radius starts with elastic energy nobody put in: the law (and its
+	// energy account) assumes contacts that grow from touching. Said once, not refused: a user may mean it.
+	const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
+	if (!geom) return;
+	const Real r1 = sphereRadius(I.getId1(), scene), r2 = sphereRadius(I.getId2(), scene);
+	const Real r  = r1 > 0 && r2 > 0 ? std::min(r1, r2) : std::max(r1, r2); // walls report 0
+	if (!(r > 0 && geom->penetrationDepth > r) || depthWarned.exchange(true)) return;
+	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: contact #" << I.getId1() << "+#" << I.getId2() << " was made with overlap "
+	          << geom->penetrationDepth << " m, deeper than the radius " << r
+	          << " m: the law assumes contacts that grow from touching, so its start holds elastic energy that no work put in "
+	          << "(O.energy does not close) and the repulsion throws the bodies apart. Start from a packing without such overlaps "
+	          << "(grow the radii or let the spheres settle with a softer law first). (Warned once.)" << std::endl;
 }
 
 void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const Interaction& I)
 {
 	// The pull-in of reversible adhesion acts across the gap: a pair made already in contact, which was
-	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing).
+	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing,
+	// nor did a pair that overlapped before the first step).
 	const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
-	if (!geom || !(geom->penetrationDepth > 0)) return;
-	Vector3r relVel = Body::byId(I.getId1(), scene)->state->vel - Body::byId(I.getId2(), scene)->state->vel;
+	if (!geom || !(geom->penetrationDepth > 0) || scene->iter == 0) return;
+	const Body& b1     = *Body::byId(I.getId1(), scene);
+	const Body& b2     = *Body::byId(I.getId2(), scene);
+	Vector3r    relVel = b1.state->vel - b2.state->vel;
 	if (scene->isPeriodic) relVel -= scene->cell->intrShiftVel(I.cellDist);
 	const Real before = geom->penetrationDepth - relVel.dot(geom->normal) * scene->dt; // the overlap a step ago
-	if (before > phys.pair().deltaA && !rangeWarned.exchange(true))
-		std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: contact #" << I.getId1() << "+#" << I.getId2()
-		          << " with reversible non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
-		          << " m), so its pull-in over the range " << -phys.pair().deltaA
-		          << " m was missed: detect pairs at that gap (Bo1_Sphere_Aabb.aabbEnlargeFactor and "
-		          << "Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor >= 1 + range/radius; mesocontact.scene.set_detection() sets them). "
-		          << "(Warned once.)" << std::endl;
+	if (!(before > phys.pair().deltaA) || rangeWarned.exchange(true)) return;
+	// What should have seen the pair: the geometry functor of its shapes.
+	const std::string s1 = b1.shape ? b1.shape->getClassName() : "?", s2 = b2.shape ? b2.shape->getClassName() : "?";
+	const std::string other = s1 == "Sphere" ? s2 : s1;
+	std::string       what;
+	if (other == "Facet" || other == "Wall")
+		what = "YADE's Ig2_" + other + "_Sphere_ScGeom makes contacts only in overlap: use Ig2_" + other
+		        + "_Sphere_MesoScGeom (yade-meso; for facets also ...6D) with interactionDetectionFactor";
+	else
+		what = "Ig2_" + other + "_Sphere_ScGeom.interactionDetectionFactor";
+	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: the " << s1 << "-" << s2 << " contact #" << I.getId1() << "+#" << I.getId2()
+	          << " with reversible non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
+	          << " m), so its pull-in over the range " << -phys.pair().deltaA << " m was missed. Detect pairs at that gap: " << what
+	          << " and Bo1_Sphere_Aabb.aabbEnlargeFactor >= 1 + range/radius; mesocontact.scene.set_detection() sets them "
+	          << "(call it after the engines and bodies are in place, and again after adding smaller spheres or a larger range). "
+	          << "(Warned once.)" << std::endl;
 }
 
 void Ip2_MesoMat_MesoMat_MesoPhys::checkTimeStep(const MesoPhys& phys, const Interaction& I)

@@ -202,9 +202,10 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 	std::mutex                                                         sharedMutex;
 	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
 	meso::PairParams           mix(const MesoMat& m1, const MesoMat& m2, bool rotations) const; // the one mixing, for contacts and Python
-	std::atomic<bool>          dtWarned{ false }, rangeWarned{ false };
+	std::atomic<bool>          dtWarned{ false }, rangeWarned{ false }, depthWarned{ false };
 	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I); // updates stableDt, warns once
 	void                       checkDetection(const MesoPhys& phys, const Interaction& I); // reversible adhesion: warns once if made in contact
+	void                       checkDepth(const Interaction& I); // warns once for a contact made deeper than a radius
 
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
@@ -212,18 +213,20 @@ public:
 	void pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	// Gives a live contact its bodies' present materials, keeping its history; throws
 	// std::invalid_argument if that would change the hysteretic normal law or the contact class.
-	void adoptMaterials(const shared_ptr<Interaction>& I);
+	void adoptMaterials(const boost::python::object& interaction);
 	// Keep the scene's real contacts (geometry and physics) and give them back to the same pairs
 	// once made anew (yade.mpy's split): in C++, since an object assigned from Python carries a
 	// Python reference that the engine thread would later drop without the GIL.
 	static long keepContacts();
 	static long restoreContacts();
 	// The same contacts as bytes for another rank (those of the given bodies), and kept from them.
-	static boost::python::object exportContacts(const std::vector<Body::id_t>& ids);
+	static boost::python::object exportContacts(const boost::python::object& ids);
 	static long                  importContacts(const boost::python::object& data);
 	// The pair parameters the contacts of two materials get: the one mixing rule, for Python too.
-	boost::python::dict mixedParameters(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool rotations) const;
-	Real stableStepFor(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, Real radius1, Real radius2, bool rotations) const;
+	// Python entry points: every argument is an object checked by name (Boost's converters name none).
+	boost::python::dict mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const;
+	Real stableStepFor(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& radius1,
+	                   const boost::python::object& radius2, const boost::python::object& rotations) const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
 		((std::string,leverArm,"reduced",Attr::triggerPostLoad,"Lever arm $a'_{12}$ of rolling and torsion (open in [Luding2008]_): 'reduced' = $a'_1a'_2/(a'_1+a'_2)$ with $a'=a-\\delta/2$ ($a'$ of the sphere against a wall), or 'a12' = twice that. The factor 2 scales the torques of given $k_r$, $k_o$ by 4 and the limit torques by 2."))

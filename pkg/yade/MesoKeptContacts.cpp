@@ -63,9 +63,13 @@ long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
 
 // Serialized with the scene's own binary archive (what O.save writes), so every field that survives
 // save/load survives the trip to another rank.
-boost::python::object Ip2_MesoMat_MesoMat_MesoPhys::exportContacts(const std::vector<Body::id_t>& ids)
+boost::python::object Ip2_MesoMat_MesoMat_MesoPhys::exportContacts(const boost::python::object& ids)
 {
-	const std::set<Body::id_t>           wanted(ids.begin(), ids.end());
+	if (!PyObject_HasAttrString(ids.ptr(), "__iter__") || PyUnicode_Check(ids.ptr()) || PyBytes_Check(ids.ptr()))
+		pychecks::typeError("ids = " + pychecks::describe(ids) + " is invalid: must be a sequence of body ids");
+	std::set<Body::id_t> wanted;
+	for (long k = 0, n = boost::python::len(ids); k < n; ++k)
+		wanted.insert(pychecks::id(("ids[" + std::to_string(k) + "]").c_str(), ids[k]));
 	std::vector<shared_ptr<Interaction>> contacts;
 	for (const auto& I : *Omega::instance().getScene()->interactions)
 		if (I->isReal() && (wanted.count(I->getId1()) || wanted.count(I->getId2()))) contacts.push_back(I);

@@ -4,6 +4,8 @@
 // docstring is kept); constructors check their keywords the same way (checkKeywords).
 #pragma once
 #include <boost/python.hpp>
+#include <boost/shared_ptr.hpp>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -27,11 +29,48 @@ namespace yade { namespace pychecks {
 		throw std::logic_error("unreachable"); // throw_error_already_set does not return
 	}
 
-	// True is a number to Python; k1 = True is surely a slip, so it is refused as a number.
+	// True is a number to Python; k1 = True is surely a slip, so it is refused as a number (numpy's
+	// bool_ too). Other numbers, numpy's among them (float32, int64), are taken through float().
 	inline double number(const char* name, const boost::python::object& v)
 	{
+		const std::string type = boost::python::extract<std::string>(v.attr("__class__").attr("__name__"));
+		if (PyBool_Check(v.ptr()) || type == "bool_") typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a number");
 		boost::python::extract<double> x(v);
-		if (PyBool_Check(v.ptr()) || !x.check()) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a number");
+		if (x.check()) return x();
+		if (PyIndex_Check(v.ptr()) || PyObject_HasAttrString(v.ptr(), "__float__")) {
+			PyObject* f = PyNumber_Float(v.ptr());
+			if (f) {
+				const double d = PyFloat_AsDouble(f);
+				Py_DECREF(f);
+				return d;
+			}
+			PyErr_Clear();
+		}
+		typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a number");
+	}
+
+	// A body id: a Python int in YADE's id range (an int), not a float or a bool.
+	inline int id(const char* name, const boost::python::object& v)
+	{
+		if (PyBool_Check(v.ptr()) || !PyIndex_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer body id");
+		PyObject* n = PyNumber_Index(v.ptr());
+		if (!n) {
+			PyErr_Clear();
+			typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer body id");
+		}
+		int        overflow = 0;
+		const long x        = PyLong_AsLongAndOverflow(n, &overflow);
+		Py_DECREF(n);
+		if (overflow || x < 0 || x > std::numeric_limits<int>::max())
+			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [0, 2147483647]");
+		return static_cast<int>(x);
+	}
+
+	// An object of class T (a shared_ptr<T> to Python), named in the error: e.g. a Material or an Interaction.
+	template <class T> boost::shared_ptr<T> instance(const char* name, const boost::python::object& v, const char* what)
+	{
+		boost::python::extract<boost::shared_ptr<T>> x(v);
+		if (v.is_none() || !x.check()) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be " + what);
 		return x();
 	}
 
@@ -60,11 +99,15 @@ namespace yade { namespace pychecks {
 		Kind        kind;
 	};
 
-	// Checks the types of the constructor's keywords that are in fields (others are left to YADE).
-	template <std::size_t N> void checkKeywords(const boost::python::dict& kw, const Field (&fields)[N])
+	// Checks the types of the constructor's keywords that are in fields (others are left to YADE);
+	// numbers are handed on as Python floats, since YADE's own setters take no numpy scalar.
+	template <std::size_t N> void checkKeywords(boost::python::dict& kw, const Field (&fields)[N])
 	{
 		for (const Field& f : fields)
-			if (kw.has_key(f.name)) check(f.name, f.kind, kw[f.name]);
+			if (kw.has_key(f.name)) {
+				check(f.name, f.kind, kw[f.name]);
+				if (f.kind == Kind::Number) kw[f.name] = number(f.name, kw[f.name]);
+			}
 	}
 
 	inline void replaceProperty(boost::python::object& cls, const char* name, const boost::python::object& get, const boost::python::object& set)

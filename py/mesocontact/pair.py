@@ -70,7 +70,7 @@ def _check_step(dt, gap):
 def _stable(m1, m2, radius1, radius2, rotations, dt, steps_per_contact):
     """O.dt for a pair, refused above the leapfrog's stability bound of its stiffest element
     (Ip2.stableStep): a collision there creates energy (e = 6.9 at 0.5 steps per contact)."""
-    bound = _w.Ip2_MesoMat_MesoMat_MesoPhys().stableStep(m1, m2, radius1, radius2, rotations)
+    bound = _w.Ip2_MesoMat_MesoMat_MesoPhys().stableStep(m1, m2, radius1, radius2, bool(rotations))
     step = O.dt if dt is None else dt
     if step > bound:
         given = f"dt = {dt!r}" if dt is not None else f"steps_per_contact = {steps_per_contact!r} (dt = {step:.4g} s)"
@@ -136,8 +136,9 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
                gravity=(0, 0, 0)):
     """A sphere falling with speed v_inf (along -z) onto a fixed wall whose surface is z = 0.
 
-    kind: 'box' (Ig2_Box_Sphere_ScGeom[6D], detects at a gap, so reversible pull-in works), 'wall'
-    (Ig2_Wall_Sphere_ScGeom) or 'facet' (Ig2_Facet_Sphere_ScGeom[6D]); six_d selects the ScGeom6D
+    kind: 'box' (Ig2_Box_Sphere_ScGeom[6D]), 'wall' (Ig2_Wall_Sphere_MesoScGeom) or 'facet'
+    (Ig2_Facet_Sphere_MesoScGeom[6D]), each detecting the sphere at the gap where reversible pull-in
+    starts (YADE's own wall and facet functors see it only in contact); six_d selects the ScGeom6D
     functors (rolling and torsion act). The wall's own material mixes with the sphere's; a12 = 2 a
     and the reduced mass is the sphere's mass. spin and tangential_velocity set the sphere's
     initial angular and tangential velocity.
@@ -168,10 +169,11 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
         bo1 = _w.Bo1_Box_Aabb()
     elif kind == "wall":
         wall = _utils.wall(0, axis=2, material=w)
-        ig2, bo1 = _w.Ig2_Wall_Sphere_ScGeom(), _w.Bo1_Wall_Aabb()
+        ig2, bo1 = _w.Ig2_Wall_Sphere_MesoScGeom(interactionDetectionFactor=factor), _w.Bo1_Wall_Aabb()
     else:
         wall = _utils.facet([(-size, -size, 0), (size, -size, 0), (0, size, 0)], material=w, fixed=True)
-        ig2 = _w.Ig2_Facet_Sphere_ScGeom6D() if six_d else _w.Ig2_Facet_Sphere_ScGeom()
+        ig2 = _w.Ig2_Facet_Sphere_MesoScGeom6D(interactionDetectionFactor=factor) if six_d else \
+            _w.Ig2_Facet_Sphere_MesoScGeom(interactionDetectionFactor=factor)
         bo1 = _w.Bo1_Facet_Aabb()
     ball = _utils.sphere((0, 0, radius + start_gap), radius, material=m)
     ids = tuple(O.bodies.append([wall, ball]))

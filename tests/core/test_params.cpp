@@ -122,10 +122,17 @@ TEST(Mixing, HarmonicMeanOfExtremeValuesStaysFinite)
 	EXPECT_EQ(p.k1, 1e155); EXPECT_EQ(p.kp, 1e155);
 }
 
-TEST(Validate, NonContactRangeMustBeFinite)
+TEST(Validate, ValuesBeyondTheLawsProductsAreNamed)
 {
+	// k1 = kp = 1e200 made f^2/k overflow, fa = 1e300 infinite accelerations, kp = 1e308 a stable step 0.
 	MaterialParams m; m.adhesion = Adhesion::Reversible; m.fa = 1e300; m.kca = 1e-300;
-	EXPECT_TRUE(startsWith(rejection(m), "kca"));
+	EXPECT_TRUE(startsWith(rejection(m), "fa = 1.0000000000000001e+300 is invalid: lies outside [1e-100, 1e100]")) << rejection(m);
+	MaterialParams k; k.k1 = k.kp = 1e200;
+	EXPECT_TRUE(startsWith(rejection(k), "k1 = 9.9999999999999997e+199")) << rejection(k);
+	MaterialParams t; t.kt = 1e-300;
+	EXPECT_TRUE(startsWith(rejection(t), "kt = 1e-300")) << rejection(t);
+	MaterialParams edge; edge.k1 = 1e-100; edge.kp = 1e100; edge.kc = 0; // the limits themselves and 0 pass
+	EXPECT_EQ(rejection(edge), "");
 }
 
 TEST(StableStep, SpringDashpotBounds)

@@ -1,6 +1,8 @@
 """What the YADE test scripts share (ctest puts this directory on PYTHONPATH): one line per
 check, "ok   ..." or "FAIL ...", and an end that lists the failures and sets the exit code."""
+import os
 import sys
+import tempfile
 
 failures = []
 
@@ -19,3 +21,23 @@ def finish():
         print(f"{len(failures)} FAILED: {failures}", flush=True)
         sys.exit(1)
     print("all passed", flush=True)
+
+
+class Stderr:
+    """What the process writes to file descriptor 2 (the plugin's C++ warnings) while inside:
+    ``with Stderr() as err: ...`` then ``err.text`` (also echoed to stderr for the test's log)."""
+    def __enter__(self):
+        sys.stderr.flush()
+        self.file = tempfile.TemporaryFile(mode="w+")
+        self.saved = os.dup(2)
+        os.dup2(self.file.fileno(), 2)
+        return self
+
+    def __exit__(self, *exc):
+        sys.stderr.flush()
+        os.dup2(self.saved, 2)
+        os.close(self.saved)
+        self.file.seek(0)
+        self.text = self.file.read()
+        self.file.close()
+        sys.stderr.write(self.text)

@@ -10,7 +10,6 @@
 #   spectral radius of the integrator's amplification matrix, computed here), and O.dt above it warns.
 import math
 import os
-import sys
 import tempfile
 
 import numpy as np
@@ -18,7 +17,7 @@ from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom6D, Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator,
                           MesoMat, MesoPhys, MesoTangentialPhys)
-from harness import check, finish
+from harness import Stderr, check, finish
 
 
 
@@ -38,24 +37,6 @@ def two_spheres(mat, overlap=0.0, v=0.0, dt=1e-6, six=False):
                  NewtonIntegrator(damping=0)]
     O.dt = dt
     return ip2
-
-
-class Stderr:
-    """What the C++ side writes to stderr (fd 2) inside the block."""
-
-    def __enter__(self):
-        sys.stderr.flush()
-        self.file = tempfile.TemporaryFile(mode="w+")
-        self.saved = os.dup(2)
-        os.dup2(self.file.fileno(), 2)
-        return self
-
-    def __exit__(self, *exc):
-        os.dup2(self.saved, 2)
-        os.close(self.saved)
-        self.file.seek(0)
-        self.text = self.file.read()
-        sys.stderr.write(self.text)
 
 
 # 1. A MesoPhys made in Python on a live contact.
@@ -115,16 +96,27 @@ with tempfile.TemporaryDirectory() as d:
     O.step()
     check(O.interactions[0, 1].phys.kp == 500, "the unedited file still loads and runs")
 
-# 3. Mixing huge finite values: the harmonic mean 2/(1/x + 1/y), written independently.
-for x, y in ((1e155, 1e155), (1e155, 3e155), (1.5e308, 1.7e308), (1e-300, 3e-300)):
-    two_spheres(MesoMat(k1=x, kp=y, density=RHO), overlap=1e-6, dt=1e-80)
+# 3. Mixing at the limits of the accepted values (1e-100 ... 1e100): the harmonic mean 2/(1/x + 1/y),
+#    written independently, stays finite (2xy/(x+y) itself would overflow from ~1e154 on); values
+#    beyond are refused, naming the parameter (k1 = kp = 1e200 gave a NaN plastic energy, kp = 1e308 a
+#    stable step 0, fa = 1e300 an infinite kinetic energy, density 1e-310 NaN positions).
+for x, y in ((1e99, 1e99), (1e99, 1e100), (1e-100, 3e-100)):
+    two_spheres(MesoMat(k1=x, kp=y, density=RHO), overlap=1e-6, dt=1e-60)
     O.bodies[0].material = O.materials[O.materials.append(MesoMat(k1=y, kp=y, density=RHO))]
     O.step()
     p = O.interactions[0, 1].phys
     hm = 2 / (1 / x + 1 / y)
-    f = max(abs(c) for c in p.normalForce)  # norm() squares: underflows at 1e-300
+    f = max(abs(c) for c in p.normalForce)
     check(abs(p.k1 - hm) <= 1e-15 * hm and abs(p.kp - y) <= 1e-15 * y and math.isfinite(p.k2) and math.isfinite(f) and f > 0,
           f"mixing k1 = {x:g} with {y:g}", f"k1 {p.k1:.6g} (harmonic mean {hm:.6g}), kp {p.kp:.6g}, k2 {p.k2:.6g}, |F| {f:.3g}")
+for kw, name in ((dict(k1=1e200, kp=1e200), "k1"), (dict(kp=1e308), "kp"), (dict(kt=1e308), "kt"),
+                 (dict(fa=1e300, kca=1.0, adhesion="reversible"), "fa"), (dict(density=1e-310), "density"),
+                 (dict(gammaN=1e-320), "gammaN")):
+    try:
+        MesoMat(**kw)
+        check(False, f"MesoMat({kw}) refused", "accepted")
+    except (ValueError, RuntimeError) as e:
+        check(str(e).startswith(f"{name} = "), f"MesoMat({kw}) refused, naming {name}", str(e)[:120])
 
 # 4 and 11. density and young, and rejected assignments that leave everything as it was.
 for kw in (dict(density=0), dict(density=-1), dict(density=float("nan")), dict(density=float("inf")), dict(young=0),
@@ -307,5 +299,17 @@ check(i.isReal and s.delta_a == i.phys.deltaA == -4e-5 / 100.0, "pair.build_wall
 O.tags["description"] = "job 1"
 pair.build(1e-3, 0.05, mat)
 check(O.tags["description"] == "job 1", "pair.build keeps O.tags (yade-batch's description)")
+
+# #32 item 10: a contact born deeper than a radius (energy from nothing) is named once; one within
+# the law's range (a tenth of a radius) is not.
+for depth, warned in ((1.5 * A, True), (0.1 * A, False)):
+    two_spheres(MesoMat(k1=100.0, kp=500.0, density=RHO), overlap=depth, dt=1e-7)
+    # a second such pair: still one warning
+    O.bodies.append([utils.sphere((0, 5 * A, 0), A, material=0), utils.sphere((2 * A - depth, 5 * A, 0), A, material=0)])
+    with Stderr() as err:
+        O.run(3, True)
+    said = err.text.count("deeper than the radius")
+    check(said == (1 if warned else 0), f"overlap {depth / A:g} radius at the start: {'one warning' if warned else 'no warning'}",
+          err.text.strip()[:160])
 
 finish()

@@ -1,5 +1,6 @@
 # ctest (inside yade): what a user can feed the plugin through files and updateAttrs is refused with
 # a message naming the field, not run on (issue #32 items 3, 5, 6, 12):
+# - the Ip2's Python methods name the argument they refuse; numpy numbers are numbers;
 # - updateAttrs with an unknown name or a wrong type of an inherited attribute (poisson, label)
 #   changes nothing (kc = -5 was kept when 'poisson' was 'abc');
 # - a saved contact whose pair parameters or state were edited (kp = nan or -500, k1 = inf or 0,
@@ -122,4 +123,38 @@ for kw, named in ((dict(radius2=1e-300), "radius = 1e-300"), (dict(dt=True), "dt
         check(False, f"pair.build({kw}) refused", "accepted")
     except ValueError as e:
         check(str(e).startswith(named), f"pair.build({kw}) refused, naming it", str(e))
+
+# 12. The Ip2's Python methods name the argument they refuse (Boost's converters named none), and
+#     numpy's numbers are numbers (numpy's bool_ is not).
+import numpy as np  # noqa: E402
+
+ip2, m = Ip2_MesoMat_MesoMat_MesoPhys(), MesoMat(k1=100.0, kp=500.0, density=RHO)
+for what, call, error, words in (
+        ("exportContacts(None)", lambda: ip2.exportContacts(None), TypeError, "ids = None"),
+        ("exportContacts([2**31])", lambda: ip2.exportContacts([2 ** 31]), ValueError, "ids[0] = 2147483648"),
+        ("exportContacts([1.5])", lambda: ip2.exportContacts([1.5]), TypeError, "ids[0] = 1.5"),
+        ("adoptMaterials(5)", lambda: ip2.adoptMaterials(5), TypeError, "interaction = 5"),
+        ("stableStep(m, m, 1e-3, 'a')", lambda: ip2.stableStep(m, m, 1e-3, "a"), TypeError, "radius2 = 'a'"),
+        ("stableStep(m, None, 1e-3)", lambda: ip2.stableStep(m, None, 1e-3), TypeError, "material2 = None"),
+        ("stableStep(m, m, -1)", lambda: ip2.stableStep(m, m, -1.0), ValueError, "radius1 = -1 is invalid"),
+        ("stableStep(m, m, -1e-20)", lambda: ip2.stableStep(m, m, -1e-20), ValueError, "radius1 = -9.9999999999999995e-21"),
+        ("mixedParameters(m, m, None)", lambda: ip2.mixedParameters(m, m, None), TypeError, "rotations = None"),
+        ("MesoMat(k1=np.bool_(True))", lambda: MesoMat(k1=np.bool_(True)), TypeError, "k1 = ")):
+    try:
+        call()
+        check(False, f"{what} refused", "accepted")
+    except error as e:
+        check(str(e).startswith(words), f"{what}: {error.__name__} naming the argument", str(e)[:120])
+    except Exception as e:  # noqa: BLE001 - the wrong kind of error is the finding
+        check(False, f"{what}: {error.__name__} naming the argument", f"{type(e).__name__}: {e}"[:160])
+n = MesoMat(k1=np.float32(100.0), kp=np.int64(500), density=np.float64(RHO))
+check((n.k1, n.kp, n.density) == (100.0, 500.0, RHO), "numpy float32, int64 and float64 are numbers", f"{n.k1}, {n.kp}, {n.density}")
+upd = {"kc": np.float32(20.0)}
+n.updateAttrs(upd)
+n.kp = np.int32(600)
+check(n.kc == 20.0 and n.kp == 600.0 and isinstance(upd["kc"], np.float32), "numpy numbers in updateAttrs and assignments; the caller's dict untouched")
+d = MesoBackgroundDamping(gammaB=np.float32(0.5))
+check(d.gammaB == 0.5, "numpy numbers in an engine's keywords")
+check(ip2.exportContacts(np.array([0, 1], dtype=np.int64)) is not None and ip2.stableStep(m, m, np.float32(1e-3)) > 0,
+      "numpy ids and radii are taken")
 finish()

@@ -1,0 +1,33 @@
+// The point of a triangle nearest to a point: what a sphere "sees" of a facet. Used by the facet
+// geometry with a detection distance (pkg/yade/MesoSurfaceGeom.cpp). Header-only; Eigen, no YADE.
+#pragma once
+#include <Eigen/Core>
+
+namespace meso {
+
+// Nearest point of the triangle (a, b, c) to p, by the Voronoi region of p: a vertex, an edge or the
+// face. Degenerate triangles (collinear vertices) fall into an edge or vertex region and still get
+// the nearest point of that edge or vertex.
+inline Eigen::Vector3d nearestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+	const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+	const double          d1 = ab.dot(ap), d2 = ac.dot(ap);
+	if (d1 <= 0 && d2 <= 0) return a;
+	const Eigen::Vector3d bp = p - b;
+	const double          d3 = ab.dot(bp), d4 = ac.dot(bp);
+	if (d3 >= 0 && d4 <= d3) return b;
+	const double vc = d1 * d4 - d3 * d2;
+	if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab; // edge ab
+	const Eigen::Vector3d cp = p - c;
+	const double          d5 = ab.dot(cp), d6 = ac.dot(cp);
+	if (d6 >= 0 && d5 <= d6) return c;
+	const double vb = d5 * d2 - d1 * d6;
+	if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac; // edge ac
+	const double va = d3 * d6 - d5 * d4;
+	if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b); // edge bc
+	const double denom = va + vb + vc;
+	if (!(denom > 0)) return a; // all three vertices coincide
+	return a + (vb / denom) * ab + (vc / denom) * ac; // inside the face
+}
+
+} // namespace meso

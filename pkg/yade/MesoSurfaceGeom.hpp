@@ -1,0 +1,91 @@
+// Sphere-facet and sphere-wall geometry that sees a sphere before it touches, so that reversible
+// adhesion pulls it in across the gap as it does between spheres (YADE's Ig2_Facet_Sphere_ScGeom and
+// Ig2_Wall_Sphere_ScGeom make a contact only in overlap). In overlap they give YADE's geometry
+// (facets: shrinkFactor 0, walls: as YADE). mesocontact.scene.set_detection() puts them in place.
+#pragma once
+#include <core/Dispatching.hpp>
+#include <pkg/common/Facet.hpp>
+#include <pkg/common/Sphere.hpp>
+#include <pkg/common/Wall.hpp>
+#include <pkg/dem/ScGeom.hpp>
+
+namespace yade {
+
+#define MESO_SURFACE_GO                                                                                                                \
+	bool go(const shared_ptr<Shape>& cm1,                                                                                               \
+	        const shared_ptr<Shape>& cm2,                                                                                               \
+	        const State&             state1,                                                                                            \
+	        const State&             state2,                                                                                            \
+	        const Vector3r&          shift2,                                                                                            \
+	        const bool&              force,                                                                                             \
+	        const shared_ptr<Interaction>& c) override;                                                                                 \
+	bool goReverse(const shared_ptr<Shape>& cm1,                                                                                        \
+	               const shared_ptr<Shape>& cm2,                                                                                        \
+	               const State&             state1,                                                                                     \
+	               const State&             state2,                                                                                     \
+	               const Vector3r&          shift2,                                                                                     \
+	               const bool&              force,                                                                                      \
+	               const shared_ptr<Interaction>& c) override                                                                           \
+	{                                                                                                                                   \
+		c->swapOrder();                                                                                                                 \
+		return go(cm2, cm1, state2, state1, -shift2, force, c);                                                                         \
+	}
+
+#define MESO_DETECTION_DOC                                                                                                             \
+	"A new interaction is made when the gap between the sphere and the surface is below (interactionDetectionFactor - 1) times "       \
+	"the sphere's radius (as Ig2_Box_Sphere_ScGeom does); 1 makes contacts only in overlap, as YADE's functor does. Pair with "        \
+	":yref:`Bo1_Sphere_Aabb.aabbEnlargeFactor` of the same value; mesocontact.scene.set_detection() sets both."
+
+class Ig2_Facet_Sphere_MesoScGeom : public IGeomFunctor {
+protected:
+	// The geometry of a sphere against a facet, made (isNew) or updated; false when the pair is not
+	// in range and not yet an interaction. sixD: a new geometry is a ScGeom6D.
+	bool geometry(const Facet&, Real radius, const State& facet, const State& sphere, const Vector3r& shift2, bool force,
+	              const shared_ptr<Interaction>& c, bool sixD);
+
+public:
+	MESO_SURFACE_GO
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Facet_Sphere_MesoScGeom, IGeomFunctor,
+		"Create/update a :yref:`ScGeom` of a :yref:`Facet` and a :yref:`Sphere` (yade-meso): YADE's "
+		":yref:`Ig2_Facet_Sphere_ScGeom` (shrinkFactor 0, not hertzian) with a detection distance, for the pull-in of reversible "
+		"adhesion. The normal points from the facet's nearest point to the sphere's centre; the overlap is the radius minus "
+		"that distance (negative across a gap); radius1 = 2 radius, radius2 = radius.",
+		((Real, interactionDetectionFactor, 1, , MESO_DETECTION_DOC))
+	);
+	// clang-format on
+	FUNCTOR2D(Facet, Sphere);
+	DEFINE_FUNCTOR_ORDER_2D(Facet, Sphere);
+};
+REGISTER_SERIALIZABLE(Ig2_Facet_Sphere_MesoScGeom);
+
+class Ig2_Facet_Sphere_MesoScGeom6D : public Ig2_Facet_Sphere_MesoScGeom {
+public:
+	MESO_SURFACE_GO
+	// clang-format off
+	YADE_CLASS_BASE_DOC(Ig2_Facet_Sphere_MesoScGeom6D, Ig2_Facet_Sphere_MesoScGeom,
+		"As :yref:`Ig2_Facet_Sphere_MesoScGeom`, making a :yref:`ScGeom6D` (rolling and torsion), as "
+		":yref:`Ig2_Facet_Sphere_ScGeom6D` does.")
+	// clang-format on
+	FUNCTOR2D(Facet, Sphere);
+	DEFINE_FUNCTOR_ORDER_2D(Facet, Sphere);
+};
+REGISTER_SERIALIZABLE(Ig2_Facet_Sphere_MesoScGeom6D);
+
+class Ig2_Wall_Sphere_MesoScGeom : public IGeomFunctor {
+public:
+	MESO_SURFACE_GO
+	// clang-format off
+	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Wall_Sphere_MesoScGeom, IGeomFunctor,
+		"Create/update a :yref:`ScGeom` of a :yref:`Wall` and a :yref:`Sphere` (yade-meso): YADE's "
+		":yref:`Ig2_Wall_Sphere_ScGeom` (not hertzian) with a detection distance, for the pull-in of reversible adhesion.",
+		((Real, interactionDetectionFactor, 1, , MESO_DETECTION_DOC))
+		((bool, noRatch, true, , "Avoid granular ratcheting (as :yref:`Ig2_Wall_Sphere_ScGeom.noRatch`)."))
+	);
+	// clang-format on
+	FUNCTOR2D(Wall, Sphere);
+	DEFINE_FUNCTOR_ORDER_2D(Wall, Sphere);
+};
+REGISTER_SERIALIZABLE(Ig2_Wall_Sphere_MesoScGeom);
+
+} // namespace yade

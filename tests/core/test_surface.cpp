@@ -1,0 +1,61 @@
+// The nearest point of a triangle against a brute-force search over a fine grid of the triangle:
+// no grid point may be nearer than the returned point, and the returned point lies on the triangle.
+#include "SurfaceDistance.hpp"
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <random>
+
+using V = Eigen::Vector3d;
+
+namespace {
+// Barycentric grid of n x n sub-triangles: the brute-force nearest distance (to ~edge/n).
+double bruteDistance(const V& p, const V& a, const V& b, const V& c, int n)
+{
+	double best = 1e300;
+	for (int i = 0; i <= n; ++i)
+		for (int j = 0; i + j <= n; ++j) {
+			const V q = a + (double(i) / n) * (b - a) + (double(j) / n) * (c - a);
+			best      = std::min(best, (p - q).norm());
+		}
+	return best;
+}
+// Is q on the triangle (a, b, c)? Its barycentric coordinates in [0, 1], its offset from the plane ~0.
+bool onTriangle(const V& q, const V& a, const V& b, const V& c)
+{
+	const V      n = (b - a).cross(c - a);
+	const double A = n.norm();
+	const double u = (b - q).cross(c - q).dot(n) / (A * A), v = (c - q).cross(a - q).dot(n) / (A * A);
+	const double w = 1 - u - v, off = std::abs((q - a).dot(n)) / A;
+	const double tol = 1e-12;
+	return u > -tol && v > -tol && w > -tol && off < tol * (b - a).norm();
+}
+} // namespace
+
+TEST(NearestOnTriangle, NeverFartherThanAnyPointOfTheTriangle)
+{
+	std::mt19937                           rng(7);
+	std::uniform_real_distribution<double> u(-1.0, 1.0);
+	const int                              n = 200;
+	for (int k = 0; k < 300; ++k) {
+		const V a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+		const V p(2 * u(rng), 2 * u(rng), 2 * u(rng));
+		const V q = meso::nearestOnTriangle(p, a, b, c);
+		ASSERT_TRUE(onTriangle(q, a, b, c)) << "case " << k;
+		const double edge = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()});
+		// The grid's nearest point is at most edge/n from the true one: nothing on the grid is nearer.
+		EXPECT_LE((p - q).norm(), bruteDistance(p, a, b, c, n) + 1e-12) << "case " << k;
+		EXPECT_GE((p - q).norm(), bruteDistance(p, a, b, c, n) - edge / n) << "case " << k;
+	}
+}
+
+TEST(NearestOnTriangle, EachRegion)
+{
+	const V a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+	EXPECT_TRUE(meso::nearestOnTriangle(V(0.2, 0.3, 0.5), a, b, c).isApprox(V(0.2, 0.3, 0)));  // face
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-1, -1, 0.2), a, b, c).isApprox(a));                 // vertex a
+	EXPECT_TRUE(meso::nearestOnTriangle(V(2, -0.5, 0), a, b, c).isApprox(b));                  // vertex b
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-0.1, 3, 0), a, b, c).isApprox(c));                  // vertex c
+	EXPECT_TRUE(meso::nearestOnTriangle(V(0.5, -2, 1), a, b, c).isApprox(V(0.5, 0, 0)));       // edge ab
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-2, 0.5, 1), a, b, c).isApprox(V(0, 0.5, 0)));       // edge ac
+	EXPECT_TRUE(meso::nearestOnTriangle(V(1, 1, -1), a, b, c).isApprox(V(0.5, 0.5, 0)));       // edge bc
+}
