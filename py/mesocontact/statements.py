@@ -85,7 +85,8 @@ def statements(d):
         b = st["built"]
         add("N = 1728 primary particles of diameter d0 = 0.01 (with some variation in size)",
             f"N = {b['n']}, radii {b['radii'][0] / 0.005:.3f}–{b['radii'][1] / 0.005:.3f} d0/2",
-            "particles built; Gaussian radii, relative std 5 %, cut at 2 sigma", "✓" if b["n"] == 1728 else "✗")
+            f"particles built; Gaussian radii, relative std {_pct(b.get('rel_std', 0.05))}, cut at 2 sigma",
+            "✓" if b["n"] == 1728 else "✗")
         s = st["sintered"]
         ws = max(abs(v / s["goal"] - 1) for v in s["wall_stress"].values()) if "goal" in s else None
         add("compressed (pressure-sintered) with a dimensionless wall stress d0 p_s/kp = 0.02",
