@@ -2,7 +2,7 @@
 """The fraction of the tablet's contacts on each branch of the law through a cyclic test (plain python3):
     python3 scripts/tablet_branches.py RUN-branches.csv OUT.png [--cycles N] [--period STEPS] [--title TEXT]
 RUN-branches.csv: written by every cyclic tablet run next to its CSV; --period: steps per cycle (the
-run's JSON has it as steps / 4 for the campaign's four cycles); without it the x axis is the step."""
+run's JSON has it as steps_per_cycle); without it the x axis is the step."""
 import argparse
 import os
 import sys

@@ -1,7 +1,7 @@
 """The branches of the law the tablet's contacts are on through a cyclic test, from the
 ``<run>-branches.csv`` a cyclic run writes (campaign.cyclic): plain Python, no YADE.
 
-    python3 scripts/tablet_branches.py docs/tablet/chosen/tension-Dx0.2-P480-branches.csv out.png
+    python3 scripts/tablet_branches.py docs/tablet/chosen/tension-Dx0.025-P480-branches.csv out.png --period 59272
 """
 import csv
 
@@ -65,7 +65,7 @@ def plot(path, png, title=None, cycles=None, steps_per_cycle=None):
     x = [x[k] for k in keep]
     dx = [dx[k] for k in keep]
     frac = {b: [v[k] for k in keep] for b, v in frac.items()}
-    order = [b for b in ("loading", "limit", "unloading", "tensile", "nonContact", "new", "apart") if max(frac[b]) > 0]
+    order = [b for b in COLOURS if max(frac[b]) > 0]  # the legend in COLOURS' order
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), gridspec_kw={"height_ratios": [1, 2.2]})
     top.plot(x, dx, color="k", lw=1)
     top.set_ylabel("Dx")
