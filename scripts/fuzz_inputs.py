@@ -1,7 +1,8 @@
 # Adversarial inputs against the plugin and the package (issue #14): material parameters and
 # their types (constructor and assignment), the Ip2 and the background drag, the theory
 # functions, damaged save files and the tablet scripts' command-line values. Each input ends in
-# one of: rejected clearly (ValueError/TypeError or argparse's error naming what is wrong),
+# one of (categories 7-12 added for issue #32: updateAttrs with mixed keys, edited save files of
+# every class, contact bytes, extreme finite values, the Ip2's methods, a foreign IPhys): rejected clearly (ValueError/TypeError or argparse's error naming what is wrong),
 # accepted and ran clean (finite state after a short collision, or a finite result), or other
 # (anything else: the count that must be 0). A crash ends the script (the count is then moot).
 #   yade -j1 -n -x scripts/fuzz_inputs.py [--n N] [--seed S] [--out FILE.json]
@@ -67,6 +68,8 @@ def names_it(e, names):
     """The message starts with a parameter's name (for a rule between two parameters, e.g. kca
     for fa > 0, it names the other one too) and mentions one of those given."""
     m = str(e).replace("MesoBackgroundDamping.", "")
+    if __import__("re").match(r"\w+\(", m):  # a helper's call with its arguments named: f(kp=..., m_min=...) = ...
+        return any(f"{n}=" in m for n in names)
     return any(m.startswith((n + " ", n + ":")) for n in set(NAMES) | set(names)) and any(n in m for n in names)
 
 
@@ -202,6 +205,158 @@ with quiet_fd2():
         except SystemExit as e:
             msg = err.getvalue()
             count("CLI values", "rejected clearly" if e.code == 2 and opt.split("=")[0] in msg else "other", f"{fig} {argv}: {msg}")
+
+
+def every_mechanism_pair(drag):
+    """Two touching spheres with every mechanism of the law (and the drag): the scene the
+    following categories damage."""
+    O.reset()
+    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=20, phiF=0.1, fa=1e-5, kca=100, adhesion="jumpIn", density=2000.0,
+                                     kt=50, frictionAngle=0.3, kr=10, muR=0.1, ko=10, muO=0.1))
+    O.bodies.append([utils.sphere((0, 0, 0), 1e-3, material=m), utils.sphere((2e-3 - 2e-5, 0, 0), 1e-3, material=m)])
+    O.bodies[1].state.vel = (-0.01, 0.002, 0)
+    O.bodies[1].state.angVel = (0, 0, 3.0)
+    ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys()
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [ip2], [w.Law2_ScGeom_MesoPhys_Meso()])] + \
+                ([w.MesoBackgroundDamping(gammaB=1e-3, gammaBR=1e-4)] if drag else []) + [w.NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    O.trackEnergy = True
+    O.run(50, True)
+    return ip2
+
+
+def finite_scene():
+    return all(math.isfinite(x) for b in O.bodies for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
+
+
+def run_outcome(steps=50):
+    """After the damage: the run refused by an engine naming the attribute at fault (e.g. a drag
+    too strong for the step), or a clean run (finite state), or other."""
+    try:
+        O.run(steps, True)
+    except Exception as e:  # noqa: BLE001
+        return "rejected clearly" if __import__("re").search(r"\b\w+ = ", str(e)) else "other"
+    return "accepted and ran clean" if finite_scene() else "other"
+
+
+def runs_clean(steps=50):
+    return run_outcome(steps) == "accepted and ran clean"
+
+
+# The classes of issue #32's second pass (items 1-3, 5-7, 12).
+MISC = ["poisson", "young", "label", "density", "frictionAngle", "id", "nonexistent", "K1", 7]
+WRONG = [None, "a", b"1", True, -1, 0, 2 ** 31, 2 ** 63, [2 ** 31], [None], (), {}, 1e-300, float("nan"), float("inf"), 3 + 0j]
+with quiet_fd2():
+    # 7. updateAttrs with the law's, the inherited and unknown keys mixed: all or nothing.
+    for _ in range(args.n):
+        mat = w.MesoMat(k1=100.0, kp=500.0, kc=50.0, density=2000.0, poisson=0.25, label="grain")
+        keys = rng.sample(NAMES, rng.randint(1, 3)) + rng.sample(MISC, rng.randint(1, 2))
+        kw = {k: (value_for(k) if k in NAMES else rng.choice(WRONG + [0.3, "wall", 1e9, 5])) for k in keys}
+        before = {n: getattr(mat, n) for n in NAMES + ["poisson", "young", "label"]}
+        try:
+            mat.updateAttrs(kw)
+        except (ValueError, TypeError, AttributeError) as e:
+            after = {n: getattr(mat, n) for n in before}
+            same = all(after[n] == before[n] or (after[n] != after[n] and before[n] != before[n]) for n in before)
+            count("updateAttrs mixed", "rejected clearly" if same and any(str(k) in str(e) for k in kw) else "other",
+                  f"{kw}: {type(e).__name__}: {e}; unchanged {same}")
+            continue
+        count("updateAttrs mixed", "accepted and ran clean" if clean_collision(mat) else "other", f"{kw}: non-finite state")
+    # 8. Hand-edited save files of every class the project adds (material, pair parameters,
+    #    contact state of both phys classes, functors, the drag and its bookkeeping vectors).
+    ip2 = every_mechanism_pair(drag=True)
+    i = O.interactions[0, 1]
+    tags = set()
+    for obj in (O.materials[0], i.phys, ip2, [e for e in O.engines if isinstance(e, w.MesoBackgroundDamping)][0]):
+        tags |= {k for k in obj.dict() if k not in ("label", "id", "dict")}
+    tags = sorted(tags)
+    good = os.path.join(tmp, "every.xml")
+    O.save(good)
+    text = open(good).read()
+    present = [t for t in tags if f"<{t}>" in text]
+    for k in range(args.n):
+        tag = rng.choice(present)
+        bad = rng.choice(["-1", "nan", "inf", "-inf", "0", "1e308", "1e-320", "abc", "9", "-7", "4294967296", ""])
+        pat = __import__("re").compile(f"<{tag}>([^<]*)<")
+        hits = list(pat.finditer(text))
+        h = rng.choice(hits)
+        damaged = text[:h.start(1)] + bad + text[h.end(1):]
+        if rng.random() < 0.25:  # a vector shortened: its first item dropped, the count kept
+            m = __import__("re").search(r"<item>[^<]*</item>", damaged[h.start():])
+            if m:
+                damaged = damaged[:h.start() + m.start()] + damaged[h.start() + m.end():]
+        path = os.path.join(tmp, f"e{k}.xml")
+        open(path, "w").write(damaged)
+        try:
+            O.load(path)
+        except Exception:  # noqa: BLE001 (refused)
+            count("save files (every class)", "rejected clearly")
+            continue
+        count("save files (every class)", run_outcome(), f"<{tag}> = {bad!r}: loaded, then not clean")
+    # 9. Contact bytes: exported, damaged (bytes flipped, cut, extended), imported, restored.
+    for k in range(args.n // 2):
+        ip2 = every_mechanism_pair(drag=False)
+        data = bytearray(ip2.exportContacts([0, 1]))
+        how = rng.choice(["flip", "cut", "extend", "ids"])
+        if how == "flip":
+            for _ in range(rng.randint(1, 8)):
+                data[rng.randrange(len(data))] = rng.randrange(256)
+        elif how == "cut":
+            data = data[: rng.randrange(len(data))]
+        elif how == "extend":
+            data += bytes(rng.randrange(256) for _ in range(rng.randint(1, 64)))
+        else:  # a body id made large (ids are serialized as text in YADE's binary archives too)
+            data = bytearray(bytes(data).replace(b"\x01\x00\x00\x00", rng.choice([b"\xff\xff\xff\x7f", b"\x00\xe1\xf5\x05"]), 1))
+        try:
+            ip2.importContacts(bytes(data))
+        except Exception:  # noqa: BLE001 (refused)
+            count("contact bytes", "rejected clearly")
+            continue
+        O.interactions.erase(0, 1)
+        try:
+            O.step()
+            ip2.restoreContacts()
+        except Exception as e:  # noqa: BLE001
+            count("contact bytes", "other", f"{how}: restore raised {type(e).__name__}: {e}")
+            continue
+        count("contact bytes", "accepted and ran clean" if runs_clean() else "other", f"{how}: imported, then not clean")
+    # 10. Extreme finite values: every number near and beyond the range the law computes with.
+    for _ in range(args.n):
+        name = rng.choice(NUMBERS)
+        val = rng.choice([10 ** rng.uniform(-320, 308), 1e-100, 1e100, 9.9e-101, 1.01e100, 5e-324, 1.7e308, 2.2250738585072014e-308])
+        try:
+            mat = w.MesoMat(**{name: val})
+        except (ValueError, TypeError) as e:
+            count("extreme values", "rejected clearly" if names_it(e, [name]) else "other", f"{name}={val}: {e}")
+            continue
+        count("extreme values", "accepted and ran clean" if clean_collision(mat) else "other", f"{name}={val}: non-finite state")
+    # 11. The Ip2's Python methods with wrong types and values.
+    ip2 = every_mechanism_pair(drag=False)
+    live = O.interactions[0, 1]
+    good_m = w.MesoMat(k1=100.0, kp=500.0)
+    pool = WRONG + [good_m, w.FrictMat(), live, 1e-3]
+    calls = {"stableStep": ("material1", "material2", "radius1", "radius2", "rotations"),
+             "mixedParameters": ("material1", "material2", "rotations"), "adoptMaterials": ("interaction",),
+             "exportContacts": ("ids",), "importContacts": ("data",)}
+    for _ in range(args.n):
+        meth = rng.choice(sorted(calls))
+        names = calls[meth]
+        a = [rng.choice(pool) for _ in names[: rng.randint(1, len(names))]]
+        try:
+            r = getattr(ip2, meth)(*a)
+        except (ValueError, TypeError, RuntimeError) as e:
+            count("Ip2 methods", "rejected clearly" if any(n in str(e) for n in names) else "other", f"{meth}{tuple(map(repr, a))}: {type(e).__name__}: {e}")
+            continue
+        ok = not isinstance(r, float) or (math.isfinite(r) and r > 0)
+        count("Ip2 methods", "accepted and ran clean" if ok and runs_clean(5) else "other", f"{meth}{tuple(map(repr, a))} = {r!r}")
+    # 12. Another IPhys put on a live meso contact from Python, then O.run (the engine thread).
+    kinds = [w.MesoPhys, w.MesoTangentialPhys, w.FrictPhys, w.NormShearPhys, w.ViscElPhys, w.RotStiffFrictPhys, w.IPhys]
+    for _ in range(args.n // 4):
+        every_mechanism_pair(drag=rng.random() < 0.5)
+        kind = rng.choice(kinds)
+        O.interactions[0, 1].phys = kind()
+        count("phys replaced", "accepted and ran clean" if runs_clean(rng.choice([1, 20, 100])) else "other", f"{kind.__name__}")
 
 total = {k: sum(v[k] for v in tally.values()) for k in ("rejected clearly", "accepted and ran clean", "other")}
 summary = {"command": "yade -j1 -n -x scripts/fuzz_inputs.py " + " ".join(sys.argv[1:]), "seed": args.seed,

@@ -155,8 +155,9 @@ void MesoBackgroundDamping::action()
 	if (relative && !fromLaw) sumNeighbours();
 	if (fromLaw) ++lawSumSteps;
 	Real                 dissipated = 0;
+	Real                 worst      = 0; // the largest drag per step against inertia, gamma dt / m (or / I)
 #ifdef YADE_OPENMP
-#pragma omp parallel for reduction(+ : dissipated) schedule(static)
+#pragma omp parallel for reduction(+ : dissipated) reduction(max : worst) schedule(static)
 #endif
 	for (long id = 0; id < n; ++id) {
 		const shared_ptr<Body>& b = bodies[id];
@@ -164,6 +165,8 @@ void MesoBackgroundDamping::action()
 		const State& st     = *b->state;
 		const auto*  sphere = dynamic_cast<const Sphere*>(b->shape.get());
 		const Real   rot    = sphere ? gammaBR * sphere->radius * sphere->radius : 0;
+		if (st.mass > 0) worst = std::max(worst, gammaB * dt / st.mass);
+		if (rot > 0 && st.inertia.minCoeff() > 0) worst = std::max(worst, rot * dt / st.inertia.minCoeff());
 		if (track && hasPrev[id]) {
 			// The drag applied last step acted while the velocity went from prevVel to vel: its work,
 			// in the leapfrog's own measure, is F . (v_prev + v) dt / 2 (exact for translation).
@@ -192,6 +195,16 @@ void MesoBackgroundDamping::action()
 		if (rot > 0) scene->forces.addTorque(id, torque);
 	}
 	if (track) scene->energy->add(dissipated, "mesoBackground", energyIx, false);
+	// An explicit drag of gamma dt / m >= 1 reverses a body's velocity within one step (>= 2: it
+	// grows without bound): no physics there. Refused, naming the coefficients and the step.
+	if (!(worst < 1)) {
+		std::ostringstream msg;
+		msg.precision(17);
+		msg << "MesoBackgroundDamping.gammaB = " << gammaB << ", gammaBR = " << gammaBR << " with O.dt = " << dt
+		    << ": the drag reaches gamma dt / m = " << worst << " (mass, or inertia for gammaBR a^2) for a body; it must stay below 1"
+		    << " (the explicit drag would reverse the velocity within a step): lower them or O.dt";
+		throw std::runtime_error(msg.str());
+	}
 	if (relative && sumInLaw) prepareLawSums(laws, n);
 	else if (!sumLaws.empty()) {
 		for (const auto& law : sumLaws)

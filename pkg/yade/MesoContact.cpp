@@ -30,7 +30,7 @@ namespace {
 	// The other attributes a MesoMat validates (numericFields are numbers too).
 	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
 		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag },
-		                                  { "poisson", Kind::Number },  { "label", Kind::Text } }; // the last two inherited, unchecked values
+		                                  { "poisson", Kind::Number },  { "label", Kind::Text },             { "id", Kind::Integer } }; // the last three inherited, unchecked values
 	void checkMesoMatKeywords(boost::python::dict& kw) // numbers handed on as Python floats (numpy's too)
 	{
 		for (const Field& f : numericFields)
@@ -71,6 +71,9 @@ meso::MaterialParams MesoMat::parse() const
 	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
 		throw std::invalid_argument("frictionAngle = " + number(frictionAngle) + " is invalid: must lie in [0, pi/2)");
 	m.muS      = math::tan(frictionAngle);
+	if (m.muS != 0 && !(m.muS >= meso::kSmallestValue && m.muS <= meso::kLargestValue)) // named here, not as the core's muS
+		throw std::invalid_argument("frictionAngle = " + number(frictionAngle) + " is invalid: its tangent (the sliding coefficient) "
+		                            + number(m.muS) + " lies outside [1e-100, 1e100] (0 allowed)");
 	m.dominant = dominant;
 	// Not parameters of the law, but a mass of 0, < 0 or NaN (density) or a wrong time step (young,
 	// read by PWaveTimeStep) would make any run meaningless without a word.
@@ -127,10 +130,17 @@ void MesoMat::updateAttrsChecked(const boost::python::dict& given)
 			boost::python::throw_error_already_set();
 		}
 	}
+	// The inherited attributes are not part of what postLoad validates and undoes: kept here.
+	const Real        poissonBefore = poisson;
+	const std::string labelBefore   = label;
+	const int         idBefore      = id;
 	try {
 		pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
 	} catch (...) { // anything YADE's own setters refuse half-way: undo what was set before it
 		undoToValid();
+		poisson = poissonBefore;
+		label   = labelBefore;
+		id      = idBefore;
 		throw;
 	}
 }

@@ -12,7 +12,7 @@
 
 namespace yade { namespace pychecks {
 
-	enum class Kind { Number, Text, Flag };
+	enum class Kind { Number, Text, Flag, Integer };
 
 	inline std::string describe(const boost::python::object& v)
 	{
@@ -87,10 +87,28 @@ namespace yade { namespace pychecks {
 		return v.ptr() == Py_True;
 	}
 
+	// An int attribute (e.g. Material.id): a Python integer (not a bool) within C++'s int.
+	inline int integer(const char* name, const boost::python::object& v)
+	{
+		if (PyBool_Check(v.ptr()) || !PyIndex_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer");
+		PyObject* n = PyNumber_Index(v.ptr());
+		if (!n) {
+			PyErr_Clear();
+			typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer");
+		}
+		int        overflow = 0;
+		const long x        = PyLong_AsLongAndOverflow(n, &overflow);
+		Py_DECREF(n);
+		if (overflow || x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
+			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [-2147483648, 2147483647]");
+		return static_cast<int>(x);
+	}
+
 	inline void check(const char* name, Kind kind, const boost::python::object& v)
 	{
 		if (kind == Kind::Number) number(name, v);
 		else if (kind == Kind::Text) text(name, v);
+		else if (kind == Kind::Integer) integer(name, v);
 		else flag(name, v);
 	}
 

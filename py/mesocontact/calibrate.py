@@ -29,7 +29,12 @@ AGAINST = ("particle", "wall")
 Z95 = 1.959963984540054           # two-sided 95 % quantile of the normal distribution
 UNDETERMINED_FACTOR = 10.0        # a 95 % interval reaching beyond this factor either way: not determined
 PROFILE_CHI2 = 3.841458820694124  # chi2 quantile (1 degree of freedom, 95 %): the profile interval's threshold
-PROFILE_STARTS = 6                # starts of each profile refit (the best fit's values and random ones)
+PROFILE_GRID = 8                  # points of each profile scan from the fit to UNDETERMINED_FACTOR (1.33x apart)
+EXPLORE_NFEV = 5                  # the wider search follows each start this many steps ...
+EXPLORE_KEPT = 2                  # ... and refits the best this many to convergence
+MUTATIONS = (0.01, 100.0)  # factors on the scan neighbour's values, one parameter at a time
+SCREEN_CANDIDATES = 300           # grid starts whose sum of squares is evaluated (the best refitted) ...
+SCREEN_POLISHED = 10              # ... in the fit itself (the profile's wider search refits fit()'s `starts` of them)
 NULL_RCOND = 1e-7                 # singular values below this fraction of the largest: a direction the data cannot see
 
 
@@ -264,6 +269,38 @@ def _starts(names, given, setup, data, n, rng):
     return out
 
 
+def _grid_starts(names, given, setup, data, rng, n=SCREEN_CANDIDATES):
+    """Candidate starts on grids of the dimensionless groups (beta, v_p over the data's range and
+    beyond, the adhesivity alpha, eta; k1 by factors 3), the other parameters as given; a random
+    subset of n when the product is larger. The e(v) surface is flat wherever every point sticks
+    or every point rebounds alike, so a local solver started in the wrong regime stays there: the
+    candidates are screened by their sum of squares and the best refitted."""
+    k1s = [given["k1"] * f for f in (1 / 3, 1.0, 3.0)] if "k1" in names else [given["k1"]]
+    etas = (0.5, 2.0, 8.0, 30.0, 100.0) if "kp" in names else (None,)
+    betas = (0.0, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0) if "kc" in names else (None,)
+    vps = np.geomspace(data.v.min() / 3, 3 * data.v.max(), 6) if "phiF" in names else (None,)
+    alphas = (0.0, 0.003, 0.01, 0.03, 0.1, 0.3, 1.0) if "fa" in names else (None,)
+    combos = [(a, b, c, d, e) for a in k1s for b in etas for c in betas for d in vps for e in alphas]
+    if len(combos) > n:
+        combos = [combos[i] for i in sorted(rng.choice(len(combos), n, replace=False))]
+    out = []
+    for k1, eta, beta, v_p, alpha in combos:
+        q = dict(given, k1=k1)
+        if eta is None:  # kp fixed (or the profiled parameter)
+            q["kp"] = given["kp"]
+        else:
+            q["kp"] = k1 * (1 + eta)
+        eta_q = max(q["kp"] / k1 - 1, 1e-12)
+        if beta is not None:
+            q["kc"] = beta * k1
+        if v_p is not None:
+            q["phiF"] = min(1.0, _phiF_for(v_p, k1, eta_q, setup.m_r, setup.a12))
+        if alpha is not None:
+            q["fa"] = alpha * _scale("fa", k1, setup.m_r, data.v)
+        out.append(q)
+    return out
+
+
 def _log_jacobian(names, p, setup, data, w):
     """d residual / d log(parameter) for each free parameter (central differences; a parameter at
     0 gets d/d(value) times a natural scale instead, flagged)."""
@@ -455,15 +492,22 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     fixed = {n: values[n] for n in PARAMETERS}
     rng = np.random.default_rng(seed)
 
-    def solve(names, fix, d, w_, x0):
+    def solve(names, fix, d, w_, x0, max_nfev=None):
         fun = _residuals(names, fix, scale, setup, d, w_)
-        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12)
+        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
+                             max_nfev=max_nfev)
 
-    def best_of(names, fix, starts_p, d=data, w_=w):
-        best = None
+    def best_of(names, fix, starts_p, d=data, w_=w, explore=False):
+        """The best refit from the starts; with explore, each start is first followed for
+        EXPLORE_NFEV steps only and the best EXPLORE_KEPT of those are refitted to convergence
+        (many starts end on the same plateau; only which basin a start reaches matters)."""
         lo, hi = _bounds(names)
-        for p0 in starts_p:
-            x0 = np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12)
+        xs = [np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12) for p0 in starts_p]
+        if explore and len(xs) > EXPLORE_KEPT:
+            short = sorted((solve(names, fix, d, w_, x0, EXPLORE_NFEV) for x0 in xs), key=lambda r: r.cost)
+            xs = [r.x for r in short[:EXPLORE_KEPT]]
+        best = None
+        for x0 in xs:
             r = solve(names, fix, d, w_, x0)
             if best is None or r.cost < best.cost:
                 best = r
@@ -473,7 +517,11 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     if speeds < len(free):
         raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
                         "measure at more speeds or fix some (free=...)")
-    best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng))
+    def ssr_of(names, fix, q):
+        return float(np.sum(_residuals(names, fix, scale, setup, data, w)(np.array([_to_x(n, q, scale) for n in names])) ** 2))
+
+    grid = sorted(_grid_starts(free, values, setup, data, rng), key=lambda q: ssr_of(free, fixed, q))
+    best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng) + grid[:SCREEN_POLISHED])
     p = _from_x(free, best.x, fixed, scale)
     res = setup.curve(data.v, p) - data.e
     n, k = len(data.v), len(free)
@@ -498,14 +546,18 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     ci_jacobian = {m: list(v) for m, v in ci.items()}
     open_sides = {}
 
-    def profile(m, value, starts_p):
+    def profile(m, value, seeds, search):
+        """(growth of the sum of squares in noise^2, the refitted values) with m fixed at value:
+        the others refitted from the seeds (the fit, the scan's neighbours), with search >= 1 also
+        from the neighbour's values moved by decades one at a time and from the best `search` of
+        the grid starts (another branch of a multi-modal problem)."""
         fix = dict(p)
         fix[m] = value
         others = [x for x in free if x != m]
         if not others:
-            return (float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2)) - ssr_min) / s2
+            return (float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2)) - ssr_min) / s2, fix
         firsts = []
-        for q in starts_p:
+        for q in seeds:
             first = dict(q)
             first[m] = value
             if m == "k1":  # the same groups at the new stiffness scale: the ridge's direction
@@ -515,33 +567,62 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                 if "phiF" in others:
                     first["phiF"] = min(1.0, q["phiF"] * math.sqrt(q["k1"] / value))
             firsts.append(first)
-        r = best_of(others, fix, firsts)
-        last[m] = _from_x(others, r.x, fix, scale)
+        if search:
+            near = firsts[-1]
+            for x in others:
+                for f in MUTATIONS:
+                    q = dict(near)
+                    q[x] = q[x] * f if q[x] > 0 else f * 1e-2 * _scale(x, q["k1"], setup.m_r, data.v)
+                    if x == "phiF":
+                        q[x] = min(q[x], 1.0)
+                    firsts.append(q)
+            if search > 1:
+                cands = _grid_starts(others, fix, setup, data, rng)
+                firsts += sorted(cands, key=lambda q: ssr_of(others, fix, q))[:search]
+        r = best_of(others, fix, firsts, explore=bool(search))
+        q = _from_x(others, r.x, fix, scale)
         if 2 * r.cost < better[0]:
-            better[:] = [2 * r.cost, last[m]]
-        return (2 * r.cost - ssr_min) / s2
+            better[:] = [2 * r.cost, q]
+        return (2 * r.cost - ssr_min) / s2, q
 
-    last, better, bounded = {}, [ssr_min * (1 - 1e-9) - 1e-300, None], set()
+    # Each side is scanned at PROFILE_GRID points out to the factor's value (continuation from the
+    # neighbour, and screened grid starts at each point), and the end is put at the outermost
+    # crossing of the threshold: a profile with two valleys (two branches of the fit, e.g. a
+    # sticking window made by kc or by fa) gets an interval that holds both.
+    better, bounded = [ssr_min * (1 - 1e-9) - 1e-300, None], set()
     for m in free:
         for side, moved in _profile_values(m, p, setup, data):
-            delta = profile(m, moved, [p] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup, data,
-                                                  PROFILE_STARTS, rng)[1:])
             k = 0 if side < 0 else 1
-            if delta <= PROFILE_CHI2:
+            path = _path(m, p, moved)
+            scan, prev = [(0.0, 0.0, p)], p
+            for i in range(1, PROFILE_GRID + 1):  # continuation out from the fit
+                t = i / PROFILE_GRID
+                delta, prev = profile(m, path(t), [p, prev], 0)
+                scan.append([t, delta, prev])
+            # beyond the outermost point below the threshold, a wider search (the neighbour's values
+            # moved by decades, the grid's best `starts`): a second valley there moves the end out
+            outer = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
+            for j in range(PROFILE_GRID, outer, -1):
+                delta, q = profile(m, path(scan[j][0]), [p, scan[j][2]] + ([scan[j + 1][2]] if j < PROFILE_GRID else []), starts)
+                if delta < scan[j][1]:
+                    scan[j][1:] = [delta, q]
+            if scan[-1][1] <= PROFILE_CHI2:
                 end = _BOUND_END[m][k]
                 ci[m][k] = p["k1"] if end is None else end
                 if m not in undetermined:
                     undetermined.append(m)
-                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{delta:.2f})")
+                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{scan[-1][1]:.2f})")
                 continue
-            path = _path(m, p, moved)
-            rise = lambda t: profile(m, path(t), [p] + ([last[m]] if m in last else [])) - PROFILE_CHI2  # noqa: E731
-            if not rise(0.0) < 0:  # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
+            if not profile(m, p[m], [p], 0)[0] < PROFILE_CHI2:
+                # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
                 ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
                 if m not in undetermined:
                     undetermined.append(m)
                 continue
-            ci[m][k] = path(brentq(rise, 0.0, 1.0, xtol=1e-4))
+            i = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
+            (t_lo, _, q_lo), (t_hi, _, q_hi) = scan[i], scan[i + 1]
+            rise = lambda t: profile(m, path(t), [p, q_lo, q_hi], 0)[0] - PROFILE_CHI2  # noqa: E731
+            ci[m][k] = path(brentq(rise, t_lo, t_hi, xtol=1e-4)) if rise(t_lo) < 0 < rise(t_hi) else path(t_hi)
             bounded.add((m, k))
     if better[1] is not None and _depth < 3:
         # a profile refit found a better fit than the starts did: start again from it

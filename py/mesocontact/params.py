@@ -1,4 +1,5 @@
 """Parameter helpers for the meso-particle law (plain Python, SI units)."""
+import inspect
 import math
 
 from .theory import _nonnegative, _number, _positive, _positive_or_inf
@@ -13,7 +14,8 @@ def _representable(f, zero_ok=False):
     def checked(*args, **kw):
         r = f(*args, **kw)
         if not (math.isfinite(r) and (r >= 0 if zero_ok else r > 0)):
-            given = ", ".join([repr(a) for a in args] + [f"{k}={v!r}" for k, v in kw.items()])
+            bound = inspect.signature(f).bind(*args, **kw)
+            given = ", ".join(f"{k}={v!r}" for k, v in bound.arguments.items())
             raise ValueError(f"{f.__name__}({given}) = {r!r} is out of floating-point range: the arguments are too extreme")
         return r
     return checked

@@ -210,9 +210,9 @@ class OutsideTheDomain(unittest.TestCase):
         ("k", params.contact_time, (True, 1.0)),  # a bool is a slip, not 1
         ("radius", params.sphere_mass, (1e-300, 2000)),  # the mass underflows to 0
         ("radius", params.sphere_mass, (1e200, 1e200)),  # and overflows
-        ("resolved_step", params.resolved_step, (1e308, 1e-12)),  # results out of range: named, not 0 or inf
-        ("reduced_mass", params.reduced_mass, (1e-320, 1e-320)),
-        ("contact_time", params.contact_time, (1e-320, 1e300)),
+        ("resolved_step(kp=1e+308, m_min=1e-12)", params.resolved_step, (1e308, 1e-12)),  # results out of range: the call with
+        ("reduced_mass(m1=1e-320, m2=1e-320)", params.reduced_mass, (1e-320, 1e-320)),    # its arguments named, not 0 or inf
+        ("contact_time(k=1e-320, m_r=1e+300)", params.contact_time, (1e-320, 1e300)),
         ("chi", theory.impact_velocity_for_chi, (1e308, 100, 500, 0.1, 1e-3, 1e-6)),
     ]
 

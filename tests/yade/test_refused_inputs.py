@@ -1,7 +1,7 @@
 # ctest (inside yade): what a user can feed the plugin through files and updateAttrs is refused with
 # a message naming the field, not run on (issue #32 items 3, 5, 6, 12):
 # - the Ip2's Python methods name the argument they refuse; numpy numbers are numbers;
-# - updateAttrs with an unknown name or a wrong type of an inherited attribute (poisson, label)
+# - updateAttrs with an unknown name or a wrong type of an inherited attribute (poisson, label, id)
 #   changes nothing (kc = -5 was kept when 'poisson' was 'abc');
 # - a saved contact whose pair parameters or state were edited (kp = nan or -500, k1 = inf or 0,
 #   an adhesion mode of 9, deltaA, invDeltaMaxP = nan, deltaMax = nan, lastDelta = inf) does not load;
@@ -24,7 +24,11 @@ A, RHO = 1e-3, 2000.0
 
 # 1. updateAttrs: every name known and every type right before any value is set.
 for attrs, error, named in (({"kc": -5.0, "poisson": "abc"}, TypeError, "poisson"), ({"k1": float("nan"), "nonexistent": 1}, AttributeError, "nonexistent"),
-                            ({"kp": 1.0, "label": 3}, TypeError, "label"), ({"kc": 2.0, 7: 1}, AttributeError, "7")):
+                            ({"kp": 1.0, "label": 3}, TypeError, "label"), ({"kc": 2.0, 7: 1}, AttributeError, "7"),
+                            ({"kc": -1.0, "id": float("nan")}, TypeError, "id"), ({"phiF": 0.5, "id": [None]}, TypeError, "id"),
+                            ({"kc": 3.0, "id": 2 ** 40}, ValueError, "id"),
+                            # valid types, a refused value: the inherited ones set before it are undone too (the fuzz found poisson kept)
+                            ({"fa": 3.6e-3, "poisson": 0.3, "label": "x"}, ValueError, "kca")):
     m = MesoMat(k1=100, kp=500, kc=100, poisson=0.25, label="grain")
     try:
         m.updateAttrs(attrs)
@@ -157,4 +161,36 @@ d = MesoBackgroundDamping(gammaB=np.float32(0.5))
 check(d.gammaB == 0.5, "numpy numbers in an engine's keywords")
 check(ip2.exportContacts(np.array([0, 1], dtype=np.int64)) is not None and ip2.stableStep(m, m, np.float32(1e-3)) > 0,
       "numpy ids and radii are taken")
+try:
+    MesoMat(frictionAngle=5e-324)
+    check(False, "frictionAngle = 5e-324 refused", "accepted")
+except ValueError as e:
+    check(str(e).startswith("frictionAngle = "), "frictionAngle whose tangent leaves the law's range: named as frictionAngle", str(e))
+
+
+# A drag too strong for the step: refused by the engine at the first step, naming its coefficients
+# (gamma dt / m >= 1 reverses the velocity within a step; a saved scene with gammaB = 4294967296 ran to NaN).
+def drag_pair(gammaB, gammaBR=0.0):
+    O.reset()
+    mat = O.materials.append(MesoMat(k1=100, kp=500, density=RHO))
+    O.bodies.append([utils.sphere((0, 0, 0), A, material=mat), utils.sphere((3 * A, 0, 0), A, material=mat)])
+    O.bodies[1].state.vel = (-0.01, 0, 0)
+    O.bodies[1].state.angVel = (0, 0, 1.0)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom6D()], [Ip2_MesoMat_MesoMat_MesoPhys()], [Law2_ScGeom_MesoPhys_Meso()]),
+                 MesoBackgroundDamping(gammaB=gammaB, gammaBR=gammaBR), NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    return O.bodies[1].state.mass, O.bodies[1].state.inertia[0]
+
+
+mass, inertia = drag_pair(0.0)
+for gB, gBR, refused in ((1.01 * mass / 1e-6, 0.0, True), (0.99 * mass / 1e-6, 0.0, False),
+                         (0.0, 1.01 * inertia / A ** 2 / 1e-6, True), (0.0, 0.99 * inertia / A ** 2 / 1e-6, False)):
+    drag_pair(gB, gBR)
+    try:
+        O.run(5, True)
+        check(not refused and all(math.isfinite(x) for x in O.bodies[1].state.vel), f"gammaB {gB:.4g}, gammaBR {gBR:.4g}: runs", "ran")
+    except RuntimeError as e:
+        check(refused and "gammaB = " in str(e) and "O.dt" in str(e) and O.iter == 0,
+              f"gammaB {gB:.4g}, gammaBR {gBR:.4g}: refused at the first step, naming them", str(e)[:150])
 finish()
