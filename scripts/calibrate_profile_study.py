@@ -20,7 +20,7 @@ from mesocontact import calibrate, outputs, theory  # noqa: E402
 
 ap = argparse.ArgumentParser(prog="calibrate_profile_study.py")
 ap.add_argument("--draws", type=int, default=12)
-ap.add_argument("--starts", type=int, default=40)
+ap.add_argument("--starts", type=int, default=10)
 ap.add_argument("--out", default=None)
 ap.add_argument("--compare", default=None, help="another version of mesocontact/calibrate.py to run on the same draws")
 a = ap.parse_args()

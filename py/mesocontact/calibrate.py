@@ -520,7 +520,8 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     def ssr_of(names, fix, q):
         return float(np.sum(_residuals(names, fix, scale, setup, data, w)(np.array([_to_x(n, q, scale) for n in names])) ** 2))
 
-    grid = sorted(_grid_starts(free, values, setup, data, rng), key=lambda q: ssr_of(free, fixed, q))
+    grid_rng = np.random.default_rng([seed, 1])  # its own stream: the random starts stay those of `seed` (a superset of them)
+    grid = sorted(_grid_starts(free, values, setup, data, grid_rng), key=lambda q: ssr_of(free, fixed, q))
     best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng) + grid[:SCREEN_POLISHED])
     p = _from_x(free, best.x, fixed, scale)
     res = setup.curve(data.v, p) - data.e
@@ -577,7 +578,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                         q[x] = min(q[x], 1.0)
                     firsts.append(q)
             if search > 1:
-                cands = _grid_starts(others, fix, setup, data, rng)
+                cands = _grid_starts(others, fix, setup, data, grid_rng)
                 firsts += sorted(cands, key=lambda q: ssr_of(others, fix, q))[:search]
         r = best_of(others, fix, firsts, explore=bool(search))
         q = _from_x(others, r.x, fix, scale)

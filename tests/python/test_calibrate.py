@@ -92,7 +92,7 @@ class Identifiability(unittest.TestCase):
         # optimum and its neighbour alone the profile gave kp [231, 358], phiF [0.065, 0.088].
         truth = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, fa=2e-4)
         d = data(truth, speeds(truth, 0.3, 4, 7, "jumpIn"), 0.02, seed=0, adhesion="jumpIn", kca=200.0)
-        f = cal.fit(d, R, RHO, adhesion="jumpIn", kca=200.0, values=dict(k1=100.0), starts=40, bootstrap=0)
+        f = cal.fit(d, R, RHO, adhesion="jumpIn", kca=200.0, values=dict(k1=100.0), starts=10, bootstrap=0)
         setup = cal.Setup(M_R, A12, "jumpIn", 200.0)
 
         def chi2(p):

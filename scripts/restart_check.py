@@ -1,0 +1,86 @@
+# A restart continues the same trajectory (issue #32 item 9): a settled packing, saved, loaded
+# and run STEPS steps, against the uninterrupted run, in all six of YADE's file formats, for the
+# classes this project adds: plain MesoPhys contacts (normal law with adhesion, lab-frame drag)
+# and MesoTangentialPhys contacts with every mechanism (contact-relative drag). Prints and writes
+# the largest difference of any body's position, velocity, angular velocity and orientation, of any
+# contact's state (MesoPhys.dict()) and of the energies.
+#   yade -j1 -n -x scripts/restart_check.py [--steps 5000] [--out FILE.json]
+import argparse
+import json
+import os
+import sys
+import tempfile
+
+from yade import O, pack, utils, wrapper as w
+
+from mesocontact import outputs, scene
+
+ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/restart_check.py")
+ap.add_argument("--steps", type=int, default=5000)
+ap.add_argument("--out", default=None)
+a = ap.parse_args(sys.argv[1:])
+MATERIALS = {
+    "MesoPhys (normal, jump-in adhesion, lab drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0, adhesion="jumpIn",
+                                                           gammaN=1e-4, density=2000), "lab"),
+    "MesoTangentialPhys (every mechanism, contact drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0,
+                                                                adhesion="jumpIn", gammaN=1e-4, density=2000, kt=50.0, gammaT=1e-5,
+                                                                frictionAngle=0.4, kr=10.0, gammaR=1e-6, muR=0.1, ko=10.0,
+                                                                gammaO=1e-6, muO=0.1, phiD=0.8), "contacts"),
+}
+
+
+def packing(kw, reference):
+    scene.reset()
+    m = O.materials.append(w.MesoMat(**kw))
+    sp = pack.SpherePack()
+    sp.makeCloud((0, 0, 0), (4e-3, 4e-3, 4e-3), rMean=5e-4, rRelFuzz=0.2, seed=5)
+    sp.toSimulation(material=m)
+    for c, h in (((2e-3, 2e-3, -5e-4), (3e-3, 3e-3, 5e-4)),  # a floor and four side walls: a packing even without friction
+                 ((-7.5e-4, 2e-3, 2e-3), (2.5e-4, 3e-3, 3e-3)), ((4.75e-3, 2e-3, 2e-3), (2.5e-4, 3e-3, 3e-3)),
+                 ((2e-3, -7.5e-4, 2e-3), (3e-3, 2.5e-4, 3e-3)), ((2e-3, 4.75e-3, 2e-3), (3e-3, 2.5e-4, 3e-3))):
+        O.bodies.append(utils.box(c, h, fixed=True, material=m))
+    O.engines = scene.engines(gravity=(0, 0, -50))
+    O.engines = O.engines[:3] + [w.MesoBackgroundDamping(gammaB=2e-5, gammaBR=1e-9, reference=reference)] + O.engines[3:]
+    O.dt = scene.time_step(safety=0.05)
+    O.trackEnergy = True
+    O.run(30000, True)
+
+
+def state():
+    bodies = [tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel) + tuple(b.state.ori) for b in O.bodies]
+    contacts = {(i.id1, i.id2): [v for k, v in sorted(i.phys.dict().items()) if isinstance(v, float)] for i in O.interactions if i.isReal}
+    return bodies, contacts, dict(O.energy.items())
+
+
+def largest(x, y):
+    (b1, c1, e1), (b2, c2, e2) = x, y
+    d = max((abs(p - q) for u, v in zip(b1, b2) for p, q in zip(u, v)), default=0.0)
+    if set(c1) != set(c2):
+        return float("inf")
+    d = max([d] + [abs(p - q) for k in c1 for p, q in zip(c1[k], c2[k])])
+    return max([d] + [abs(e1[k] - e2.get(k, float("nan"))) for k in e1])
+
+
+tmp = tempfile.mkdtemp(prefix="restart-")
+result = {"command": "yade -j1 -n -x scripts/restart_check.py " + " ".join(sys.argv[1:]), "steps": a.steps, "largest_difference": {}}
+for name, (kw, reference) in MATERIALS.items():
+    packing(kw, reference)
+    start = os.path.join(tmp, "start.yade")
+    O.save(start)
+    for ext in (".xml", ".xml.gz", ".xml.bz2", ".yade", ".yade.gz", ".yade.bz2"):
+        O.load(start)
+        path = os.path.join(tmp, "saved" + ext)
+        O.save(path)
+        O.run(a.steps, True)
+        direct = state()
+        O.load(path)
+        O.run(a.steps, True)
+        d = largest(direct, state())
+        result["largest_difference"].setdefault(name, {})[ext] = d
+        print(f"{name:52s} {ext:9s} {len(O.bodies) - 5} spheres, {O.interactions.countReal()} contacts: "
+              f"largest difference after {a.steps} steps {d:.3g}", flush=True)
+if a.out:
+    outputs.write_atomic(a.out, json.dumps(result, indent=1))
+worst = max(v for m in result["largest_difference"].values() for v in m.values())
+print("largest of all:", worst)
+sys.exit(0 if worst == 0 else 1)
