@@ -32,6 +32,7 @@ PROFILE_CHI2 = 3.841458820694124  # chi2 quantile (1 degree of freedom, 95 %): t
 PROFILE_GRID = 8                  # points of each profile scan from the fit to UNDETERMINED_FACTOR (1.33x apart)
 EXPLORE_NFEV = 5                  # the wider search follows each start this many steps ...
 EXPLORE_KEPT = 2                  # ... and refits the best this many to convergence
+PROFILE_STARTS = 6                # random starts at the factor's value (the fit's and the scan's besides)
 MUTATIONS = (0.01, 100.0)  # factors on the scan neighbour's values, one parameter at a time
 SCREEN_CANDIDATES = 300           # grid starts whose sum of squares is evaluated (the best refitted) ...
 SCREEN_POLISHED = 10              # ... in the fit itself (the profile's wider search refits fit()'s `starts` of them)
@@ -547,7 +548,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     ci_jacobian = {m: list(v) for m, v in ci.items()}
     open_sides = {}
 
-    def profile(m, value, seeds, search):
+    def profile(m, value, seeds, search, near=-1):
         """(growth of the sum of squares in noise^2, the refitted values) with m fixed at value:
         the others refitted from the seeds (the fit, the scan's neighbours), with search >= 1 also
         from the neighbour's values moved by decades one at a time and from the best `search` of
@@ -569,10 +570,9 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                     first["phiF"] = min(1.0, q["phiF"] * math.sqrt(q["k1"] / value))
             firsts.append(first)
         if search:
-            near = firsts[-1]
             for x in others:
                 for f in MUTATIONS:
-                    q = dict(near)
+                    q = dict(firsts[near])
                     q[x] = q[x] * f if q[x] > 0 else f * 1e-2 * _scale(x, q["k1"], setup.m_r, data.v)
                     if x == "phiF":
                         q[x] = min(q[x], 1.0)
@@ -598,12 +598,16 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
             scan, prev = [(0.0, 0.0, p)], p
             for i in range(1, PROFILE_GRID + 1):  # continuation out from the fit
                 t = i / PROFILE_GRID
-                delta, prev = profile(m, path(t), [p, prev], 0)
+                if i < PROFILE_GRID:
+                    delta, prev = profile(m, path(t), [p, prev], 0)
+                else:  # the factor's value: the wider search and random starts always (a fit on a plateau finds its way off here)
+                    delta, prev = profile(m, moved, [p, prev] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup,
+                                                                        data, PROFILE_STARTS, rng)[1:], starts, near=1)
                 scan.append([t, delta, prev])
             # beyond the outermost point below the threshold, a wider search (the neighbour's values
             # moved by decades, the grid's best `starts`): a second valley there moves the end out
             outer = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
-            for j in range(PROFILE_GRID, outer, -1):
+            for j in range(PROFILE_GRID - 1, outer, -1):
                 delta, q = profile(m, path(scan[j][0]), [p, scan[j][2]] + ([scan[j + 1][2]] if j < PROFILE_GRID else []), starts)
                 if delta < scan[j][1]:
                     scan[j][1:] = [delta, q]
