@@ -49,21 +49,28 @@ namespace yade { namespace pychecks {
 		typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a number");
 	}
 
-	// A body id: a Python int in YADE's id range (an int), not a float or a bool.
-	inline int id(const char* name, const boost::python::object& v)
+	// A Python integer (not a bool, not a float) within [lo, hi]; `what` names the kind in the message.
+	inline long integerIn(const char* name, const boost::python::object& v, const char* what, long lo, long hi)
 	{
-		if (PyBool_Check(v.ptr()) || !PyIndex_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer body id");
+		if (PyBool_Check(v.ptr()) || !PyIndex_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be " + what);
 		PyObject* n = PyNumber_Index(v.ptr());
 		if (!n) {
 			PyErr_Clear();
-			typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer body id");
+			typeError(std::string(name) + " = " + describe(v) + " is invalid: must be " + what);
 		}
 		int        overflow = 0;
 		const long x        = PyLong_AsLongAndOverflow(n, &overflow);
 		Py_DECREF(n);
-		if (overflow || x < 0 || x > std::numeric_limits<int>::max())
-			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [0, 2147483647]");
-		return static_cast<int>(x);
+		if (overflow || x < lo || x > hi)
+			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [" + std::to_string(lo) + ", "
+			                            + std::to_string(hi) + "]");
+		return x;
+	}
+
+	// A body id: a Python int in YADE's id range (an int), not a float or a bool.
+	inline int id(const char* name, const boost::python::object& v)
+	{
+		return static_cast<int>(integerIn(name, v, "an integer body id", 0, std::numeric_limits<int>::max()));
 	}
 
 	// An object of class T (a shared_ptr<T> to Python), named in the error: e.g. a Material or an Interaction.
@@ -90,18 +97,7 @@ namespace yade { namespace pychecks {
 	// An int attribute (e.g. Material.id): a Python integer (not a bool) within C++'s int.
 	inline int integer(const char* name, const boost::python::object& v)
 	{
-		if (PyBool_Check(v.ptr()) || !PyIndex_Check(v.ptr())) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer");
-		PyObject* n = PyNumber_Index(v.ptr());
-		if (!n) {
-			PyErr_Clear();
-			typeError(std::string(name) + " = " + describe(v) + " is invalid: must be an integer");
-		}
-		int        overflow = 0;
-		const long x        = PyLong_AsLongAndOverflow(n, &overflow);
-		Py_DECREF(n);
-		if (overflow || x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
-			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [-2147483648, 2147483647]");
-		return static_cast<int>(x);
+		return static_cast<int>(integerIn(name, v, "an integer", std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 	}
 
 	inline void check(const char* name, Kind kind, const boost::python::object& v)
