@@ -3,7 +3,7 @@
 # classes this project adds: plain MesoPhys contacts (normal law with adhesion, lab-frame drag)
 # and MesoTangentialPhys contacts with every mechanism (contact-relative drag). Prints and writes
 # the largest difference of any body's position, velocity, angular velocity and orientation, of any
-# contact's state (MesoPhys.dict()) and of the energies.
+# contact's state (every number and vector of MesoPhys.dict(): springs, forces, history) and of the energies.
 #   yade -j1 -n -x scripts/restart_check.py [--steps 5000] [--out FILE.json]
 import argparse
 import json
@@ -46,19 +46,35 @@ def packing(kw, reference):
     O.run(30000, True)
 
 
+def numbers(v):
+    """The numbers of a state value: a float, or the components of a vector or quaternion (the
+    springs and forces); flags and enums as numbers too."""
+    if isinstance(v, (bool, int, float)):
+        return [float(v)]
+    if isinstance(v, str):  # e.g. the branch's name: compared as text (below)
+        return []
+    try:
+        return [float(x) for x in v]
+    except (TypeError, ValueError):
+        return []
+
+
 def state():
     bodies = [tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel) + tuple(b.state.ori) for b in O.bodies]
-    contacts = {(i.id1, i.id2): [v for k, v in sorted(i.phys.dict().items()) if isinstance(v, float)] for i in O.interactions if i.isReal}
-    return bodies, contacts, dict(O.energy.items())
+    contacts = {(i.id1, i.id2): [x for k, v in sorted(i.phys.dict().items()) for x in numbers(v)] for i in O.interactions if i.isReal}
+    texts = {(i.id1, i.id2): [v for k, v in sorted(i.phys.dict().items()) if isinstance(v, str)] for i in O.interactions if i.isReal}
+    return bodies, contacts, dict(O.energy.items()), texts
 
 
 def largest(x, y):
-    (b1, c1, e1), (b2, c2, e2) = x, y
-    d = max((abs(p - q) for u, v in zip(b1, b2) for p, q in zip(u, v)), default=0.0)
-    if set(c1) != set(c2):
+    """The largest difference; inf when the two differ in bodies, contacts, state or energy names,
+    or a value is NaN in one of them (a NaN would slip through max())."""
+    (b1, c1, e1, t1), (b2, c2, e2, t2) = x, y
+    if len(b1) != len(b2) or set(c1) != set(c2) or set(e1) != set(e2) or any(len(c1[k]) != len(c2[k]) for k in c1) or t1 != t2:
         return float("inf")
-    d = max([d] + [abs(p - q) for k in c1 for p, q in zip(c1[k], c2[k])])
-    return max([d] + [abs(e1[k] - e2.get(k, float("nan"))) for k in e1])
+    diffs = [abs(p - q) for u, v in zip(b1, b2) for p, q in zip(u, v)] + \
+        [abs(p - q) for k in c1 for p, q in zip(c1[k], c2[k])] + [abs(e1[k] - e2[k]) for k in e1]
+    return float("inf") if any(d != d for d in diffs) else max(diffs, default=0.0)
 
 
 tmp = tempfile.mkdtemp(prefix="restart-")

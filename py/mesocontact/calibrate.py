@@ -587,7 +587,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         return (2 * r.cost - ssr_min) / s2, q
 
     # Each side is scanned at PROFILE_GRID points out to the factor's value (continuation from the
-    # neighbour, and screened grid starts at each point), and the end is put at the outermost
+    # neighbour; the wider search at the factor's value and beyond), and the end is put at the outermost
     # crossing of the threshold: a profile with two valleys (two branches of the fit, e.g. a
     # sticking window made by kc or by fa) gets an interval that holds both.
     better, bounded = [ssr_min * (1 - 1e-9) - 1e-300, None], set()
