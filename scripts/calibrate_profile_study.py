@@ -5,12 +5,15 @@
 # where the truth fits within the 95 % threshold (chi2 of the truth - chi2 of the best fit < 3.84, all
 # parameters at the truth, none refitted: so the truth lies inside every true profile interval)
 # and it is a miss when a reported interval does not hold the truth.
-#   python3 scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] [--compare OLD_MODULE.py]
+#   python3 scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] [--compare OLD_MODULE.py | --compare-rev REV]
 import argparse
 import importlib.util
 import json
 import os
+import re
+import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -23,7 +26,15 @@ ap.add_argument("--draws", type=int, default=12)
 ap.add_argument("--starts", type=int, default=10)
 ap.add_argument("--out", default=None)
 ap.add_argument("--compare", default=None, help="another version of mesocontact/calibrate.py to run on the same draws")
+ap.add_argument("--compare-rev", default=None, help="the same, calibrate.py as it was at this git revision")
 a = ap.parse_args()
+if a.compare_rev:  # the module of that revision, its package-relative imports made absolute
+    old = subprocess.run(["git", "-C", HERE, "show", f"{a.compare_rev}:py/mesocontact/calibrate.py"], check=True,
+                         capture_output=True, text=True).stdout
+    fd, a.compare = tempfile.mkstemp(suffix="-calibrate.py")
+    with os.fdopen(fd, "w") as f:
+        f.write(re.sub(r"^from \.(\w*) import", lambda m: f"from mesocontact{'.' + m.group(1) if m.group(1) else ''} import",
+                       old, flags=re.M))
 R, RHO, KCA = 1e-3, 2500.0, 200.0
 TRUTH = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, fa=2e-4)
 versions = {"this": calibrate}

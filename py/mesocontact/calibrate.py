@@ -234,13 +234,18 @@ def _open_ends(ci):
     return {n: [x if math.isfinite(x) else None for x in lohi] for n, lohi in ci.items()}
 
 
-def _residuals(names, fixed, scale, setup, data, w):
+def _residuals(names, fixed, scale, setup, data, w, seen=None):
+    """The weighted residuals as a function of the free parameters' solver variables; with `seen`
+    a list, every evaluation's (sum of squares, parameters) is appended to it."""
     def fun(x):
         try:
             p = _from_x(names, x, fixed, scale)
-            return (setup.curve(data.v, p) - data.e) * w
+            r = (setup.curve(data.v, p) - data.e) * w
         except (ValueError, OverflowError):  # outside the law's domain (e.g. an impact beyond floating point): far from any data
             return np.full(len(data.v), 10.0) * w
+        if seen is not None:
+            seen.append((float(r @ r), p))
+        return r
     return fun
 
 
@@ -336,9 +341,9 @@ def _identify(names, p, setup, data, w, s2):
     null = sv < NULL_RCOND * max(sv.max(), 1e-300)
     # var(log p_i) = s2 sum_k V_ki^2 / sv_k^2; a null direction makes it infinite for the
     # parameters it involves
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore"):  # 0 x inf in the branch np.where discards
         inv = np.where(null, np.inf, 1.0 / np.where(null, 1.0, sv) ** 2)
-    terms = np.where(Vt ** 2 > 1e-6, Vt ** 2 * inv[:, None], np.where(null[:, None], 0.0, Vt ** 2 * inv[:, None]))
+        terms = np.where(Vt ** 2 > 1e-6, Vt ** 2 * inv[:, None], np.where(null[:, None], 0.0, Vt ** 2 * inv[:, None]))
     var = s2 * terms.sum(axis=0)
     sd = np.sqrt(var)
     ridge = 1e-12 * max(float(np.max(sv)) ** 2, 1e-300)
@@ -411,6 +416,35 @@ def _path(m, p, moved):
     if p[m] <= 0:
         return lambda t: t * moved
     return lambda t: p[m] * (moved / p[m]) ** t
+
+
+def _path_fraction(m, p, moved, x):
+    """The inverse of _path: the fraction t at which the path from the fit to `moved` reaches x
+    (beyond 1 past `moved`, negative on the other side of the fit)."""
+    if m == "kp":
+        e0, e1, e = p["kp"] / p["k1"] - 1, moved / p["k1"] - 1, x / p["k1"] - 1
+        return math.log(e / e0) / math.log(e1 / e0) if e > 0 else -math.inf
+    if p[m] <= 0:
+        return x / moved
+    return math.log(x / p[m]) / math.log(moved / p[m]) if x > 0 else -math.inf
+
+
+def _same_v_p(m, q, value):
+    """q with m set to value and the plastic limit velocity v_p kept (Eq. 19 with fa = 0: v_p is
+    proportional to phiF (1 + eta)/eta), or None where no such point exists: moving kp or phiF
+    alone moves v_p, and the data see v_p, so a branch of equally good fits runs along it."""
+    g = lambda kp: kp / (kp - q["k1"])  # noqa: E731  (1 + eta)/eta
+    out = dict(q)
+    out[m] = value
+    if m == "kp" and value > q["k1"] and q["kp"] > q["k1"]:
+        out["phiF"] = min(1.0, q["phiF"] * g(q["kp"]) / g(value))
+        return out
+    if m == "phiF" and value > 0 and q["kp"] > q["k1"]:
+        g_new = g(q["kp"]) * q["phiF"] / value
+        if g_new > 1:
+            out["kp"] = q["k1"] * (1 + 1 / (g_new - 1))
+            return out
+    return None
 
 
 def _regimes(setup, p, data):
@@ -492,9 +526,10 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     w = 1.0 / data.sigma if data.sigma is not None else np.ones(len(data.v))
     fixed = {n: values[n] for n in PARAMETERS}
     rng = np.random.default_rng(seed)
+    seen = []  # (sum of squares, parameters) of every evaluation on the data: see the profile below
 
     def solve(names, fix, d, w_, x0, max_nfev=None):
-        fun = _residuals(names, fix, scale, setup, d, w_)
+        fun = _residuals(names, fix, scale, setup, d, w_, seen if d is data else None)
         return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
                              max_nfev=max_nfev)
 
@@ -519,7 +554,7 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
                         "measure at more speeds or fix some (free=...)")
     def ssr_of(names, fix, q):
-        return float(np.sum(_residuals(names, fix, scale, setup, data, w)(np.array([_to_x(n, q, scale) for n in names])) ** 2))
+        return float(np.sum(_residuals(names, fix, scale, setup, data, w, seen)(np.array([_to_x(n, q, scale) for n in names])) ** 2))
 
     grid_rng = np.random.default_rng([seed, 1])  # its own stream: the random starts stay those of `seed` (a superset of them)
     grid = sorted(_grid_starts(free, values, setup, data, grid_rng), key=lambda q: ssr_of(free, fixed, q))
@@ -569,6 +604,9 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                 if "phiF" in others:
                     first["phiF"] = min(1.0, q["phiF"] * math.sqrt(q["k1"] / value))
             firsts.append(first)
+            along = _same_v_p(m, q, value) if m in ("kp", "phiF") else None
+            if along is not None and all(x in others or along[x] == q[x] for x in ("kp", "phiF") if x != m):
+                firsts.append(along)
         if search:
             for x in others:
                 for f in MUTATIONS:
@@ -590,7 +628,59 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     # neighbour; the wider search at the factor's value and beyond), and the end is put at the outermost
     # crossing of the threshold: a profile with two valleys (two branches of the fit, e.g. a
     # sticking window made by kc or by fa) gets an interval that holds both.
-    better, bounded = [ssr_min * (1 - 1e-9) - 1e-300, None], set()
+    def seen_beyond(m, k, x):
+        """The farthest evaluation under the threshold beyond x on side k of m's profile:
+        (fraction of the path, growth in noise^2, parameters), or None."""
+        moved, _, _ = sides[m, k]
+        t_x, lim, far = _path_fraction(m, p, moved, x), ssr_min + PROFILE_CHI2 * s2, None
+        for ssr, q in seen:
+            if ssr <= lim:
+                t = _path_fraction(m, p, moved, q[m])
+                if t > t_x and (far is None or t > far[0]):
+                    far = (t, (ssr - ssr_min) / s2, q)
+        return far
+
+    def conclude(m, k):
+        """Side k of m's interval from its scan: open (the parameter undetermined) where the scan
+        stays under the threshold out to the factor's value, else the outermost crossing. The
+        farthest evaluation under the threshold joins the scan first, and the scan goes on from it."""
+        moved, path, scan = sides[m, k]
+        bounded.discard((m, k))
+        outer = max(row[0] for row in scan if row[1] <= PROFILE_CHI2)
+        far = seen_beyond(m, k, path(outer))
+        if far is not None and far[0] >= 1:  # under the threshold beyond the factor's value
+            scan.append([far[0], far[1], far[2]])
+        elif far is not None:
+            prev = far[2]
+            for row in (r for r in scan if r[0] > far[0]):  # continuation out from it
+                delta, q = profile(m, path(row[0]), [p, prev, row[2]], 0)
+                if delta < row[1]:
+                    row[1:] = [delta, q]
+                prev = row[2]
+                if row[1] > PROFILE_CHI2:
+                    break
+            scan.append([far[0], far[1], far[2]])
+            scan.sort(key=lambda row: row[0])
+        if scan[-1][1] <= PROFILE_CHI2:
+            end = _BOUND_END[m][k]
+            ci[m][k] = p["k1"] if end is None else end
+            if m not in undetermined:
+                undetermined.append(m)
+            open_sides.setdefault(m, []).append(f"{path(scan[-1][0]):.4g} (+{scan[-1][1]:.2f})")
+            return
+        if not profile(m, p[m], [p], 0)[0] < PROFILE_CHI2:
+            # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
+            ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
+            if m not in undetermined:
+                undetermined.append(m)
+            return
+        i = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
+        (t_lo, _, q_lo), (t_hi, _, q_hi) = scan[i], scan[i + 1]
+        rise = lambda t: profile(m, path(t), [p, q_lo, q_hi], 0)[0] - PROFILE_CHI2  # noqa: E731
+        ci[m][k] = path(brentq(rise, t_lo, t_hi, xtol=1e-4)) if rise(t_lo) < 0 < rise(t_hi) else path(t_hi)
+        bounded.add((m, k))
+
+    better, bounded, sides = [ssr_min * (1 - 1e-9) - 1e-300, None], set(), {}
     for m in free:
         for side, moved in _profile_values(m, p, setup, data):
             k = 0 if side < 0 else 1
@@ -611,24 +701,17 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
                 delta, q = profile(m, path(scan[j][0]), [p, scan[j][2]] + ([scan[j + 1][2]] if j < PROFILE_GRID else []), starts)
                 if delta < scan[j][1]:
                     scan[j][1:] = [delta, q]
-            if scan[-1][1] <= PROFILE_CHI2:
-                end = _BOUND_END[m][k]
-                ci[m][k] = p["k1"] if end is None else end
-                if m not in undetermined:
-                    undetermined.append(m)
-                open_sides.setdefault(m, []).append(f"{moved:.4g} (+{scan[-1][1]:.2f})")
-                continue
-            if not profile(m, p[m], [p], 0)[0] < PROFILE_CHI2:
-                # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
-                ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
-                if m not in undetermined:
-                    undetermined.append(m)
-                continue
-            i = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
-            (t_lo, _, q_lo), (t_hi, _, q_hi) = scan[i], scan[i + 1]
-            rise = lambda t: profile(m, path(t), [p, q_lo, q_hi], 0)[0] - PROFILE_CHI2  # noqa: E731
-            ci[m][k] = path(brentq(rise, t_lo, t_hi, xtol=1e-4)) if rise(t_lo) < 0 < rise(t_hi) else path(t_hi)
-            bounded.add((m, k))
+            sides[m, k] = (moved, path, scan)
+            conclude(m, k)
+    # A point evaluated on the data (by any fit, scan or search, for any parameter) lies inside every
+    # interval when its sum of squares is under the threshold: the profile at its values is at most
+    # that. An end that such a point contradicts is searched again from it.
+    for m, k in sorted(bounded):
+        if seen_beyond(m, k, ci[m][k]) is not None:
+            conclude(m, k)
+    best_seen = min(seen, key=lambda e: e[0])
+    if best_seen[0] < better[0]:
+        better[:] = list(best_seen)
     if better[1] is not None and _depth < 3:
         # a profile refit found a better fit than the starts did: start again from it
         return fit(data, radius, density, against, adhesion, kca, interpolation, free,

@@ -176,6 +176,39 @@ TEST(Viscous, OnlyInMechanicalContact)
 	EXPECT_EQ(normalForce(p, g, h, -1e-6, 0.5).viscous, 0.0);
 }
 
+TEST(Viscous, NotInTheNonContactRange)
+{
+	// Reversible adhesion acts down to deltaA = -fa/kca = -1e-6 m; the dashpot only in contact. A
+	// dashpot acting wherever the pair interacts would give gammaN vn = 1e-3 N here.
+	MaterialParams m; m.gammaN = 2e-3; m.fa = 1e-4; m.kca = 100; m.adhesion = Adhesion::Reversible;
+	[[maybe_unused]] const auto [p, g] = pairOf(m);
+	for (const Adhesion mode : {Adhesion::Reversible, Adhesion::JumpIn}) {
+		PairParams q = p; q.adhesion = mode; NormalHistory h; h.touched = true;
+		const NormalForce f = normalForce(q, g, h, -0.5e-6, 0.5);
+		EXPECT_DOUBLE_EQ(f.adhesive, -100 * -0.5e-6 - 1e-4) << adhesionName(mode); // inside the range: the law acts ...
+		EXPECT_EQ(f.viscous, 0.0) << adhesionName(mode);                     // ... but not the dashpot
+	}
+}
+
+TEST(Energy, ViscousDissipationOfAHarmonicPathIsItsIntegral)
+{
+	// delta = D + A sin(w t), vn = A w cos(w t) over a quarter period: the dashpot dissipates
+	// int gammaN vn d(delta) = gammaN A^2 w pi/4. The trapezoid of energyStep is exact to O(h^2)
+	// (4.1e-7 here, n = 1000); a rectangle rule is off by O(h), 5.0e-4.
+	MaterialParams m; m.gammaN = 2e-3;
+	[[maybe_unused]] const auto [p, g] = pairOf(m);
+	const double D = 2e-5, A = 1e-5, w = 1e3, T = M_PI / (2 * w); const int n = 1000;
+	NormalHistory h; NormalForce prev = normalForce(p, g, h, D, A * w);
+	double viscous = 0, prevDelta = D, prevElastic = storedElastic(p, g, h, prev.hysteretic);
+	for (int i = 1; i <= n; ++i) {
+		const double t = T * i / n, d = D + A * std::sin(w * t);
+		const NormalForce f = normalForce(p, g, h, d, A * w * std::cos(w * t));
+		viscous += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).viscous;
+		prev = f; prevDelta = d; prevElastic = storedElastic(p, g, h, f.hysteretic);
+	}
+	EXPECT_LT(rel(viscous, 2e-3 * A * A * w * M_PI / 4), 1e-5);
+}
+
 TEST(Energy, LoopDissipationEqualsEnclosedArea)
 {
 	// Load on k1 to dm, unload on k2 to delta0: dissipated = 1/2 k1 dm^2 - 1/2 k2 (dm - d0)^2.

@@ -110,6 +110,29 @@ TEST(Kinematics, RigidRotationHasNoRelativeMotion)
 	EXPECT_NEAR(c.torsion, 0, 1e-15);
 }
 
+TEST(Kinematics, ArmsOfUnequalSpheres)
+{
+	// Radii 1 and 3 mm, overlap 10 um: the arms are a - delta/2 each, the lever arm of rolling and
+	// torsion a1'a2'/(a1'+a2') (leverFactor 1) or twice that (2); against a wall the sphere's arm.
+	// (For equal spheres a mean of the arms would give the same lever: only unequal ones tell.)
+	PairParams p;
+	PairGeometry g; g.radius1 = 1e-3; g.radius2 = 3e-3;
+	const double a1 = 0.995e-3, a2 = 2.995e-3, reduced = a1 * a2 / (a1 + a2); // 7.46867e-4 m
+	for (const double factor : {1.0, 2.0}) {
+		p.leverFactor = factor;
+		const ContactArms c = contactArms(p, g, 1e-5);
+		EXPECT_NEAR(c.arm1, a1, 1e-18);
+		EXPECT_NEAR(c.arm2, a2, 1e-18);
+		EXPECT_NEAR(c.lever, factor * reduced, 1e-18);
+	}
+	g.radius2 = 0;
+	EXPECT_NEAR(contactArms(p, g, 1e-5).lever, 2 * a1, 1e-18);
+	// The contact point's velocity takes each sphere's spin with its own arm:
+	// w1 x (a1 n) + w2 x (a2 n) with n = z, w1 = (0, 2, 0), w2 = (1, 0, 0), arms 1 and 3: (2, -3, 0).
+	const Vec3 vc = sphereContactVelocity(Vec3(0, 0, 1), Vec3(Vec3::Zero()), Vec3(0, 2, 0), Vec3(1, 0, 0), 1, 3);
+	EXPECT_NEAR((vc - Vec3(2, -3, 0)).norm(), 0, 1e-15);
+}
+
 TEST(Kinematics, RollingAndTorsionOpposeRelativeRotation)
 {
 	const Vec3 n(0, 0, 1);
