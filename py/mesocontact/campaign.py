@@ -673,21 +673,24 @@ FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", 
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
 
-def factor_dir(outdir, packing, glue, rel_std=0.05):
+def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1):
     """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
-    return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else ""))
+    return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else "")
+                        + (f"-seed{seed}" if seed != 1 else ""))
 
 
-def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05):
+def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1):
     """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
     factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
-    last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes)."""
-    out = factor_dir(outdir, packing, glue, rel_std)
+    last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes).
+    ``seed``: another realization of the same preparation (the gas's positions and radii)."""
+    out = factor_dir(outdir, packing, glue, rel_std, seed)
     done = os.path.join(root(out, quick), f"pull-{drag}")
     if _out.complete(done):  # made by an earlier job: read back, not repeated
         with open(os.path.join(done, f"pull-{drag}.json")) as f:
             return json.load(f)
-    return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol={"packing": packing, "glue": glue, "rel_std": rel_std},
+    protocol = dict({"packing": packing, "glue": glue, "rel_std": rel_std}, **({"seed": seed} if seed != 1 else {}))
+    return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol=protocol,
                 drag=drag, stop_after_last=1.0, until=12.0)
 
 
@@ -710,7 +713,7 @@ def _factor_row(st, p):
     return {"near_wall_mean_at_start": sum(near) / len(near) if near else None,
             "bulk_mean_at_start": sum(bulk) / len(bulk) if bulk else None,
             "packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
-            "rel_std": st["built"].get("rel_std", 0.05),
+            "rel_std": st["built"].get("rel_std", 0.05), "seed": st["built"].get("seed", 1),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
@@ -748,15 +751,15 @@ def factor_table(outdir, quick=False):
           "it, at least 0.5 d0 from the walls' faces, planes 0.25 d0 apart; n (the mean over the planes); its "
           "distances from the left and right loading walls. First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
-          "| packing | glue | radii std | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
+          "| packing | glue | radii std | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
           "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
           "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 15]
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 16]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
         w0, wp = r["weakest_at_start"], r["weakest_at_peak"]
         g = r["first_gap_Dx_by_area"]
-        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
+        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
                   f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
@@ -772,12 +775,12 @@ def factor_table(outdir, quick=False):
         checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": min(w["from_left_d0"], w["from_right_d0"]) >= 3,
                   "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
-        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
+        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, seed {r.get('seed', 1)}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
                   + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
     md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
            "weakest plane at the peak, its distance from the nearer loading wall [d0]; first gap; last chain.", ""]
-    names = ("packing", "glue", "rel_std", "drag")
-    key = lambda r: tuple(r[n] for n in names)  # noqa: E731
+    names = ("packing", "glue", "rel_std", "seed", "drag")
+    key = lambda r: tuple(r.get(n, 1) for n in names)  # noqa: E731  (seed: 1 in rows made before the option)
     for k, name in enumerate(names):
         for a in rows:
             for b in rows:
@@ -785,7 +788,7 @@ def factor_table(outdir, quick=False):
                 if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(len(names)) if j != k):
                     def say(r):
                         w = r["weakest_at_peak"]
-                        return (f"{r[name]}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
+                        return (f"{r.get(name, 1)}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
                                 f"{min(w['from_left_d0'], w['from_right_d0']):.2f} from a wall, first gap "
                                 f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
                     others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
@@ -877,6 +880,8 @@ def parse_args(figure, argv):
                    help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
     p.add_argument("--rel-std", type=float, default=0.05,
                    help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
+    p.add_argument("--seed", type=int, default=1,
+                   help="factors: the random seed of the gas (positions and radii): another realization of the preparation")
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
     p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
@@ -956,7 +961,7 @@ def _main(figure, a, amps, slow, periods):
             out = factor_report(a.out, a.report)
         else:
             if not a.table:
-                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std)
+                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed)
             out = factor_table(a.out, a.quick)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")
