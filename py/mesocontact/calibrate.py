@@ -476,15 +476,9 @@ def _coverage_statements(setup, p, data, free):
     return out
 
 
-def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf, interpolation="linear",
-        free=None, values=None, starts=40, bootstrap=200, seed=0, _depth=0):
-    """Least-squares fit of the closed-form e(v) to data (a Data, or (v, e[, sigma])).
-
-    values: the fixed parameters' values and the free ones' starting guesses (k1 is always
-    needed: e(v) without adhesion cannot fix it, see the module's docstring); kc defaults to 0,
-    fa to 0. free: names among PARAMETERS (default kp, kc, phiF, and fa with adhesion).
-    Returns a Fit; raises ValueError naming what is wrong with the input."""
-    t0 = time.time()
+def _validated(data, radius, density, against, adhesion, kca, interpolation, free, values):
+    """The fit's inputs checked, with the defaults filled in: (Data, Setup, free names, values).
+    Raises ValueError (DataError for the data) naming what is wrong."""
     if not isinstance(data, Data):
         data = check_data(*data)
     m_r, a12 = geometry(radius, density, against)
@@ -522,77 +516,115 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     _theory._law(values["k1"], values["kp"], values["phiF"], a12)
     if values["kp"] == values["k1"] and "kp" in free:
         values["kp"] = values["k1"] * 1.5
-    scale = {n: _scale(n, values["k1"], m_r, data.v) for n in ("kc", "fa")}
-    w = 1.0 / data.sigma if data.sigma is not None else np.ones(len(data.v))
-    fixed = {n: values[n] for n in PARAMETERS}
-    rng = np.random.default_rng(seed)
-    seen = []  # (sum of squares, parameters) of every evaluation on the data: see the profile below
-
-    def solve(names, fix, d, w_, x0, max_nfev=None):
-        fun = _residuals(names, fix, scale, setup, d, w_, seen if d is data else None)
-        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
-                             max_nfev=max_nfev)
-
-    def best_of(names, fix, starts_p, d=data, w_=w, explore=False):
-        """The best refit from the starts; with explore, each start is first followed for
-        EXPLORE_NFEV steps only and the best EXPLORE_KEPT of those are refitted to convergence
-        (many starts end on the same plateau; only which basin a start reaches matters)."""
-        lo, hi = _bounds(names)
-        xs = [np.clip([_to_x(n, p0, scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12) for p0 in starts_p]
-        if explore and len(xs) > EXPLORE_KEPT:
-            short = sorted((solve(names, fix, d, w_, x0, EXPLORE_NFEV) for x0 in xs), key=lambda r: r.cost)
-            xs = [r.x for r in short[:EXPLORE_KEPT]]
-        best = None
-        for x0 in xs:
-            r = solve(names, fix, d, w_, x0)
-            if best is None or r.cost < best.cost:
-                best = r
-        return best
-
     speeds = len(np.unique(data.v))
     if speeds < len(free):
         raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
                         "measure at more speeds or fix some (free=...)")
-    def ssr_of(names, fix, q):
-        return float(np.sum(_residuals(names, fix, scale, setup, data, w, seen)(np.array([_to_x(n, q, scale) for n in names])) ** 2))
+    return data, setup, free, values
 
-    grid_rng = np.random.default_rng([seed, 1])  # its own stream: the random starts stay those of `seed` (a superset of them)
-    grid = sorted(_grid_starts(free, values, setup, data, grid_rng), key=lambda q: ssr_of(free, fixed, q))
-    best = best_of(free, fixed, _starts(free, values, setup, data, starts, rng) + grid[:SCREEN_POLISHED])
-    p = _from_x(free, best.x, fixed, scale)
-    res = setup.curve(data.v, p) - data.e
-    n, k = len(data.v), len(free)
-    rms = float(np.sqrt(np.mean(res ** 2)))
+
+class _Problem:
+    """One least-squares problem: the data, the law's setup, the free names and the values of the
+    others; local solves from given starts. Every evaluation on the data is kept in ``seen`` as
+    (sum of squares, parameters): a point under the profile threshold lies inside every interval.
+    Two random streams: ``rng`` (the random starts, the bootstrap) and ``grid_rng`` (the grid's
+    subsets), so the random starts stay those of the seed whatever the grid draws."""
+
+    def __init__(self, data, setup, free, values, seed):
+        self.data, self.setup, self.free, self.values = data, setup, free, values
+        self.scale = {n: _scale(n, values["k1"], setup.m_r, data.v) for n in ("kc", "fa")}
+        self.w = 1.0 / data.sigma if data.sigma is not None else np.ones(len(data.v))
+        self.fixed = {n: values[n] for n in PARAMETERS}
+        self.rng = np.random.default_rng(seed)
+        self.grid_rng = np.random.default_rng([seed, 1])
+        self.seen = []
+
+    def params(self, names, x, fix):
+        return _from_x(names, x, fix, self.scale)
+
+    def solve(self, names, fix, x0, max_nfev=None, data=None, w=None):
+        """A local least-squares solve (on resampled ``data`` with weights ``w`` for the bootstrap)."""
+        on_data = data is None
+        fun = _residuals(names, fix, self.scale, self.setup, self.data if on_data else data, self.w if on_data else w,
+                         self.seen if on_data else None)
+        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
+                             max_nfev=max_nfev)
+
+    def best_of(self, names, fix, starts_p, explore=False):
+        """The best refit from the starts; with explore, each start is first followed for
+        EXPLORE_NFEV steps only and the best EXPLORE_KEPT of those are refitted to convergence
+        (many starts end on the same plateau; only which basin a start reaches matters)."""
+        lo, hi = _bounds(names)
+        xs = [np.clip([_to_x(n, p0, self.scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12) for p0 in starts_p]
+        if explore and len(xs) > EXPLORE_KEPT:
+            short = sorted((self.solve(names, fix, x0, EXPLORE_NFEV) for x0 in xs), key=lambda r: r.cost)
+            xs = [r.x for r in short[:EXPLORE_KEPT]]
+        best = None
+        for x0 in xs:
+            r = self.solve(names, fix, x0)
+            if best is None or r.cost < best.cost:
+                best = r
+        return best
+
+    def ssr_of(self, names, fix, q):
+        """The sum of squares at the values q (no solve)."""
+        x = np.array([_to_x(n, q, self.scale) for n in names])
+        return float(np.sum(_residuals(names, fix, self.scale, self.setup, self.data, self.w, self.seen)(x) ** 2))
+
+    def grid(self, names, fix):
+        """The grid starts (_grid_starts), best sum of squares first."""
+        return sorted(_grid_starts(names, fix, self.setup, self.data, self.grid_rng), key=lambda q: self.ssr_of(names, fix, q))
+
+
+def _multistart(pb, starts):
+    """The best local fit from the given values, `starts` - 1 random starts on grids of the
+    dimensionless groups and the SCREEN_POLISHED best grid starts: (least_squares result, parameters)."""
+    grid = pb.grid(pb.free, pb.fixed)
+    best = pb.best_of(pb.free, pb.fixed, _starts(pb.free, pb.values, pb.setup, pb.data, starts, pb.rng) + grid[:SCREEN_POLISHED])
+    return best, pb.params(pb.free, best.x, pb.fixed)
+
+
+def _noise(data, res, k):
+    """(noise variance s2 the intervals use, reduced chi2 or None, the sigma used): the data's sigma
+    when given, else the residuals' variance (n - k degrees of freedom)."""
+    n = len(data.v)
     if data.sigma is not None:
-        s2, chi2 = 1.0, float(np.sum((res / data.sigma) ** 2) / max(n - k, 1))
-        sigma_used = float(np.median(data.sigma))
-    else:
-        if n <= k or float(np.sum(res ** 2)) < 1e-24 * n:
-            raise DataError(f"{data.source}: the fit passes through every point ({n} points, {k} free parameters): without a sigma "
-                            "column the noise, and so any interval, cannot be estimated; give sigma or more points")
-        s2, chi2 = float(np.sum(res ** 2) / max(n - k, 1)), None
-        sigma_used = math.sqrt(s2)
-    ci, corr, undetermined, statements = _identify(free, p, setup, data, w, s2)
-    # The Jacobian is local: a ridge of equally good fits that ends at a kink (a point crossing
-    # v_p or the sticking window) looks determined there, and near kinks its linear intervals
-    # are too narrow. So the intervals are profile-likelihood intervals: each end is where the
-    # sum of squares, the others refitted, has grown by PROFILE_CHI2 noise^2 (chi2 of one degree
-    # of freedom at 95 %), searched up to UNDETERMINED_FACTOR either way; a side still inside
-    # the threshold there is open and the parameter undetermined.
-    ssr_min = 2 * best.cost  # least_squares' cost is SSR/2
-    ci_jacobian = {m: list(v) for m, v in ci.items()}
-    open_sides = {}
+        return 1.0, float(np.sum((res / data.sigma) ** 2) / max(n - k, 1)), float(np.median(data.sigma))
+    if n <= k or float(np.sum(res ** 2)) < 1e-24 * n:
+        raise DataError(f"{data.source}: the fit passes through every point ({n} points, {k} free parameters): without a sigma "
+                        "column the noise, and so any interval, cannot be estimated; give sigma or more points")
+    s2 = float(np.sum(res ** 2) / max(n - k, 1))
+    return s2, None, math.sqrt(s2)
 
-    def profile(m, value, seeds, search, near=-1):
+
+class _Profile:
+    """Profile-likelihood intervals. The Jacobian is local: a ridge of equally good fits that
+    ends at a kink (a point crossing v_p or the sticking window) looks determined there, and near
+    kinks its linear intervals are too narrow. So each end is where the sum of squares, the others
+    refitted, has grown by PROFILE_CHI2 noise^2 (chi2 of one degree of freedom at 95 %), searched
+    up to UNDETERMINED_FACTOR either way; a side still inside the threshold there is open and the
+    parameter undetermined. run() fills ci (begun as the Jacobian's), undetermined and open_sides,
+    and sets better to (sum of squares, parameters) when a refit beat the fit."""
+
+    def __init__(self, pb, p, ssr_min, s2, ci, undetermined, starts):
+        self.pb, self.p, self.ssr_min, self.s2, self.starts = pb, p, ssr_min, s2, starts
+        self.ci, self.undetermined = ci, undetermined
+        self.open_sides, self.bounded, self.sides = {}, set(), {}
+        self.better = (ssr_min * (1 - 1e-9) - 1e-300, None)
+
+    def refit(self, m, value, seeds, search, near=-1):
         """(growth of the sum of squares in noise^2, the refitted values) with m fixed at value:
-        the others refitted from the seeds (the fit, the scan's neighbours), with search >= 1 also
-        from the neighbour's values moved by decades one at a time and from the best `search` of
-        the grid starts (another branch of a multi-modal problem)."""
+        the others refitted from the seeds (the fit, the scan's neighbours), each also moved along
+        constant v_p for kp and phiF; with search >= 1 also from the seed `near` moved by decades
+        one parameter at a time, and with search > 1 from the best `search` grid starts (another
+        branch of a multi-modal problem)."""
+        pb, p = self.pb, self.p
         fix = dict(p)
         fix[m] = value
-        others = [x for x in free if x != m]
+        others = [x for x in pb.free if x != m]
         if not others:
-            return (float(np.sum(_residuals([], fix, scale, setup, data, w)(np.array([])) ** 2)) - ssr_min) / s2, fix
+            ssr = float(np.sum(_residuals([], fix, pb.scale, pb.setup, pb.data, pb.w)(np.array([])) ** 2))
+            return (ssr - self.ssr_min) / self.s2, fix
         firsts = []
         for q in seeds:
             first = dict(q)
@@ -611,49 +643,74 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
             for x in others:
                 for f in MUTATIONS:
                     q = dict(firsts[near])
-                    q[x] = q[x] * f if q[x] > 0 else f * 1e-2 * _scale(x, q["k1"], setup.m_r, data.v)
+                    q[x] = q[x] * f if q[x] > 0 else f * 1e-2 * _scale(x, q["k1"], pb.setup.m_r, pb.data.v)
                     if x == "phiF":
                         q[x] = min(q[x], 1.0)
                     firsts.append(q)
             if search > 1:
-                cands = _grid_starts(others, fix, setup, data, grid_rng)
-                firsts += sorted(cands, key=lambda q: ssr_of(others, fix, q))[:search]
-        r = best_of(others, fix, firsts, explore=bool(search))
-        q = _from_x(others, r.x, fix, scale)
-        if 2 * r.cost < better[0]:
-            better[:] = [2 * r.cost, q]
-        return (2 * r.cost - ssr_min) / s2, q
+                firsts += pb.grid(others, fix)[:search]
+        r = pb.best_of(others, fix, firsts, explore=bool(search))
+        q = pb.params(others, r.x, fix)
+        if 2 * r.cost < self.better[0]:
+            self.better = (2 * r.cost, q)
+        return (2 * r.cost - self.ssr_min) / self.s2, q
 
-    # Each side is scanned at PROFILE_GRID points out to the factor's value (continuation from the
-    # neighbour; the wider search at the factor's value and beyond), and the end is put at the outermost
-    # crossing of the threshold: a profile with two valleys (two branches of the fit, e.g. a
-    # sticking window made by kc or by fa) gets an interval that holds both.
-    def seen_beyond(m, k, x):
+    def scan(self, m, k, moved):
+        """Side k of m's profile at PROFILE_GRID points out to `moved` (continuation from the
+        neighbour; the wider search and PROFILE_STARTS random starts at `moved`, and the wider
+        search again beyond the outermost point under the threshold: a second valley there moves
+        the end out); then the end (conclude)."""
+        p, pb = self.p, self.pb
+        path = _path(m, p, moved)
+        scan, prev = [(0.0, 0.0, p)], p
+        for i in range(1, PROFILE_GRID + 1):
+            t = i / PROFILE_GRID
+            if i < PROFILE_GRID:
+                delta, prev = self.refit(m, path(t), [p, prev], 0)
+            else:  # a fit stuck on a plateau, where every point is under the threshold, finds its way off here
+                random_starts = _starts([x for x in pb.free if x != m], dict(p, **{m: moved}), pb.setup, pb.data,
+                                        PROFILE_STARTS, pb.rng)[1:]
+                delta, prev = self.refit(m, moved, [p, prev] + random_starts, self.starts, near=1)
+            scan.append([t, delta, prev])
+        outer = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
+        for j in range(PROFILE_GRID - 1, outer, -1):
+            seeds = [p, scan[j][2]] + ([scan[j + 1][2]] if j < PROFILE_GRID else [])
+            delta, q = self.refit(m, path(scan[j][0]), seeds, self.starts)
+            if delta < scan[j][1]:
+                scan[j][1:] = [delta, q]
+        self.sides[m, k] = (moved, path, scan)
+        self.conclude(m, k)
+
+    def seen_beyond(self, m, k, x):
         """The farthest evaluation under the threshold beyond x on side k of m's profile:
         (fraction of the path, growth in noise^2, parameters), or None."""
-        moved, _, _ = sides[m, k]
-        t_x, lim, far = _path_fraction(m, p, moved, x), ssr_min + PROFILE_CHI2 * s2, None
-        for ssr, q in seen:
+        moved = self.sides[m, k][0]
+        t_x, lim, far = _path_fraction(m, self.p, moved, x), self.ssr_min + PROFILE_CHI2 * self.s2, None
+        for ssr, q in self.pb.seen:
             if ssr <= lim:
-                t = _path_fraction(m, p, moved, q[m])
+                t = _path_fraction(m, self.p, moved, q[m])
                 if t > t_x and (far is None or t > far[0]):
-                    far = (t, (ssr - ssr_min) / s2, q)
+                    far = (t, (ssr - self.ssr_min) / self.s2, q)
         return far
 
-    def conclude(m, k):
+    def _undetermined(self, m):
+        if m not in self.undetermined:
+            self.undetermined.append(m)
+
+    def conclude(self, m, k):
         """Side k of m's interval from its scan: open (the parameter undetermined) where the scan
         stays under the threshold out to the factor's value, else the outermost crossing. The
         farthest evaluation under the threshold joins the scan first, and the scan goes on from it."""
-        moved, path, scan = sides[m, k]
-        bounded.discard((m, k))
-        outer = max(row[0] for row in scan if row[1] <= PROFILE_CHI2)
-        far = seen_beyond(m, k, path(outer))
+        p, ci = self.p, self.ci
+        moved, path, scan = self.sides[m, k]
+        self.bounded.discard((m, k))
+        far = self.seen_beyond(m, k, path(max(row[0] for row in scan if row[1] <= PROFILE_CHI2)))
         if far is not None and far[0] >= 1:  # under the threshold beyond the factor's value
             scan.append([far[0], far[1], far[2]])
         elif far is not None:
             prev = far[2]
             for row in (r for r in scan if r[0] > far[0]):  # continuation out from it
-                delta, q = profile(m, path(row[0]), [p, prev, row[2]], 0)
+                delta, q = self.refit(m, path(row[0]), [p, prev, row[2]], 0)
                 if delta < row[1]:
                     row[1:] = [delta, q]
                 prev = row[2]
@@ -664,79 +721,83 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
         if scan[-1][1] <= PROFILE_CHI2:
             end = _BOUND_END[m][k]
             ci[m][k] = p["k1"] if end is None else end
-            if m not in undetermined:
-                undetermined.append(m)
-            open_sides.setdefault(m, []).append(f"{path(scan[-1][0]):.4g} (+{scan[-1][1]:.2f})")
+            self._undetermined(m)
+            self.open_sides.setdefault(m, []).append(f"{path(scan[-1][0]):.4g} (+{scan[-1][1]:.2f})")
             return
-        if not profile(m, p[m], [p], 0)[0] < PROFILE_CHI2:
+        if not self.refit(m, p[m], [p], 0)[0] < PROFILE_CHI2:
             # the fit itself is not below the threshold (no spread to measure): nothing bounds this side
             ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
-            if m not in undetermined:
-                undetermined.append(m)
+            self._undetermined(m)
             return
         i = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
         (t_lo, _, q_lo), (t_hi, _, q_hi) = scan[i], scan[i + 1]
-        rise = lambda t: profile(m, path(t), [p, q_lo, q_hi], 0)[0] - PROFILE_CHI2  # noqa: E731
+        rise = lambda t: self.refit(m, path(t), [p, q_lo, q_hi], 0)[0] - PROFILE_CHI2  # noqa: E731
         ci[m][k] = path(brentq(rise, t_lo, t_hi, xtol=1e-4)) if rise(t_lo) < 0 < rise(t_hi) else path(t_hi)
-        bounded.add((m, k))
+        self.bounded.add((m, k))
 
-    better, bounded, sides = [ssr_min * (1 - 1e-9) - 1e-300, None], set(), {}
-    for m in free:
-        for side, moved in _profile_values(m, p, setup, data):
-            k = 0 if side < 0 else 1
-            path = _path(m, p, moved)
-            scan, prev = [(0.0, 0.0, p)], p
-            for i in range(1, PROFILE_GRID + 1):  # continuation out from the fit
-                t = i / PROFILE_GRID
-                if i < PROFILE_GRID:
-                    delta, prev = profile(m, path(t), [p, prev], 0)
-                else:  # the factor's value: the wider search and random starts always (a fit on a plateau finds its way off here)
-                    delta, prev = profile(m, moved, [p, prev] + _starts([x for x in free if x != m], dict(p, **{m: moved}), setup,
-                                                                        data, PROFILE_STARTS, rng)[1:], starts, near=1)
-                scan.append([t, delta, prev])
-            # beyond the outermost point below the threshold, a wider search (the neighbour's values
-            # moved by decades, the grid's best `starts`): a second valley there moves the end out
-            outer = max(j for j, row in enumerate(scan) if row[1] <= PROFILE_CHI2)
-            for j in range(PROFILE_GRID - 1, outer, -1):
-                delta, q = profile(m, path(scan[j][0]), [p, scan[j][2]] + ([scan[j + 1][2]] if j < PROFILE_GRID else []), starts)
-                if delta < scan[j][1]:
-                    scan[j][1:] = [delta, q]
-            sides[m, k] = (moved, path, scan)
-            conclude(m, k)
-    # A point evaluated on the data (by any fit, scan or search, for any parameter) lies inside every
-    # interval when its sum of squares is under the threshold: the profile at its values is at most
-    # that. An end that such a point contradicts is searched again from it.
-    for m, k in sorted(bounded):
-        if seen_beyond(m, k, ci[m][k]) is not None:
-            conclude(m, k)
-    best_seen = min(seen, key=lambda e: e[0])
-    if best_seen[0] < better[0]:
-        better[:] = list(best_seen)
-    if better[1] is not None and _depth < 3:
-        # a profile refit found a better fit than the starts did: start again from it
-        return fit(data, radius, density, against, adhesion, kca, interpolation, free,
-                   dict(values, **{m: better[1][m] for m in free}), starts, bootstrap, seed, _depth + 1)
-    for m, sides in open_sides.items():
+    def run(self):
+        for m in self.pb.free:
+            for side, moved in _profile_values(m, self.p, self.pb.setup, self.pb.data):
+                self.scan(m, 0 if side < 0 else 1, moved)
+        # A point evaluated on the data (by any fit, scan or search, for any parameter) lies inside
+        # every interval when its sum of squares is under the threshold: the profile at its values is
+        # at most that. An end that such a point contradicts is searched again from it.
+        for m, k in sorted(self.bounded):
+            if self.seen_beyond(m, k, self.ci[m][k]) is not None:
+                self.conclude(m, k)
+        best_seen = min(self.pb.seen, key=lambda e: e[0])
+        if best_seen[0] < self.better[0]:
+            self.better = best_seen
+        for m in self.undetermined:  # an undetermined parameter has no finite interval where the profile found no end
+            for k in (0, 1):
+                if (m, k) not in self.bounded:
+                    self.ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else self.p["k1"]
+
+
+def _bootstrap(pb, x, n_resamples):
+    """2.5/97.5 percentiles of each free parameter over refits (from x) on the data resampled with replacement."""
+    n, samples = len(pb.data.v), []
+    for _ in range(n_resamples):
+        idx = pb.rng.integers(0, n, n)
+        d = Data(pb.data.v[idx], pb.data.e[idx], None if pb.data.sigma is None else pb.data.sigma[idx])
+        r = pb.solve(pb.free, pb.fixed, x, data=d, w=pb.w[idx])
+        samples.append([pb.params(pb.free, r.x, pb.fixed)[m] for m in pb.free])
+    samples = np.array(samples)
+    return {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))] for i, m in enumerate(pb.free)}
+
+
+RESTARTS = 3  # a profile refit that beats the fit starts the fit again from it, at most this often
+
+
+def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf, interpolation="linear",
+        free=None, values=None, starts=40, bootstrap=200, seed=0):
+    """Least-squares fit of the closed-form e(v) to data (a Data, or (v, e[, sigma])).
+
+    values: the fixed parameters' values and the free ones' starting guesses (k1 is always
+    needed: e(v) without adhesion cannot fix it, see the module's docstring); kc defaults to 0,
+    fa to 0. free: names among PARAMETERS (default kp, kc, phiF, and fa with adhesion).
+    Returns a Fit; raises ValueError naming what is wrong with the input."""
+    t0 = time.time()
+    for attempt in range(RESTARTS + 1):
+        data, setup, free, values = _validated(data, radius, density, against, adhesion, kca, interpolation, free, values)
+        pb = _Problem(data, setup, free, values, seed)
+        best, p = _multistart(pb, starts)
+        res = setup.curve(data.v, p) - data.e
+        s2, chi2, sigma_used = _noise(data, res, len(free))
+        ci, corr, undetermined, statements = _identify(free, p, setup, data, pb.w, s2)
+        ci_jacobian = {m: list(v) for m, v in ci.items()}
+        profile = _Profile(pb, p, 2 * best.cost, s2, ci, undetermined, starts)  # least_squares' cost is SSR/2
+        profile.run()
+        if profile.better[1] is None or attempt == RESTARTS:
+            break
+        values = dict(values, **{m: profile.better[1][m] for m in free})  # start again from the better fit
+    for m, sides in profile.open_sides.items():
         statements.append(f"{m}: set to {' or '.join(sides)} with the others refitted it fits as well (in brackets: "
                           f"the growth of the sum of squares in noise^2; 95 % threshold {PROFILE_CHI2:.2f})")
     undetermined = [m for m in free if m in undetermined]
-    for m in undetermined:  # an undetermined parameter has no finite interval where the profile found no end
-        for k in (0, 1):
-            if (m, k) not in bounded:
-                ci[m][k] = _BOUND_END[m][k] if _BOUND_END[m][k] is not None else p["k1"]
     statements = _coverage_statements(setup, p, data, free) + statements
-    boot = {}
-    if bootstrap:
-        samples = []
-        for _ in range(bootstrap):
-            idx = rng.integers(0, n, n)
-            d = Data(data.v[idx], data.e[idx], None if data.sigma is None else data.sigma[idx])
-            r = solve(free, fixed, d, w[idx], best.x)
-            samples.append([_from_x(free, r.x, fixed, scale)[m] for m in free])
-        samples = np.array(samples)
-        boot = {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))]
-                for i, m in enumerate(free)}
-    return Fit(p, free, setup, data, ci, boot, corr, undetermined, statements, rms, chi2,
+    boot = _bootstrap(pb, best.x, bootstrap) if bootstrap else {}
+    return Fit(p, free, setup, data, ci, boot, corr, undetermined, statements, float(np.sqrt(np.mean(res ** 2))), chi2,
                _regimes(setup, p, data), starts, time.time() - t0, sigma_used,
                extra={"ci95_jacobian": _open_ends(ci_jacobian)})
 
