@@ -295,7 +295,7 @@ json.dump({"drag": "contacts", "L0": 0.1155, "max_tension": -0.05, "max_tension_
 frow = campaign.factor_table(fdir)[0]
 fmd = open(os.path.join(fdir, "factors", "factors.md")).read()
 check(frow["weakest_at_peak"] == {"count": 50, "from_left_d0": 4.125, "from_right_d0": 11.55 - 4.125}
-      and "frictionless, loading, radii std 0.05, contacts: L0 ✓, bulk rupture ✓, first gap ✓, last chain ✓ (L0 +0.43 %)" in fmd,
+      and "frictionless, loading, radii std 0.05, seed 1, contacts: L0 ✓, bulk rupture ✓, first gap ✓, last chain ✓ (L0 +0.43 %)" in fmd,
       "factor table: the row of made-up files against the criteria")
 
 # 7. The preparation's options (the factor study): frictionless packing, all six walls glued.
