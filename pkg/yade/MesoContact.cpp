@@ -493,19 +493,31 @@ void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
 {
 	const std::lock_guard<std::mutex> lock(energyMutex);
 	if (!normalEnergiesReady.load(std::memory_order_relaxed)) {
-		scene->energy->add(0, "mesoElastic", elasticIx, /*reset*/ true);
-		scene->energy->add(0, "mesoPlastic", plasticIx, false);
-		scene->energy->add(0, "mesoAdhesive", adhesiveIx, false);
-		scene->energy->add(0, "mesoViscous", viscousIx, false);
+		addEnergies(meso::NormalEnergyStep{});
 		normalEnergiesReady.store(true, std::memory_order_release);
 	}
 	if (tangential && !tangentialEnergiesReady.load(std::memory_order_relaxed)) {
-		scene->energy->add(0, "mesoSprings", springsIx, /*reset*/ true);
-		scene->energy->add(0, "mesoSliding", slidingIx, false);
-		scene->energy->add(0, "mesoRolling", rollingIx, false);
-		scene->energy->add(0, "mesoTorsion", torsionIx, false);
+		addEnergies(meso::TangentialEnergy{});
 		tangentialEnergiesReady.store(true, std::memory_order_release);
 	}
+}
+
+// The one place each energy's name is written (the first call registers it; stored energies are
+// reset every step, dissipated ones accumulate).
+void Law2_ScGeom_MesoPhys_Meso::addEnergies(const meso::NormalEnergyStep& e)
+{
+	scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
+	scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
+	scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
+	scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
+}
+
+void Law2_ScGeom_MesoPhys_Meso::addEnergies(const meso::TangentialEnergy& e)
+{
+	scene->energy->add(e.stored, "mesoSprings", springsIx, /*reset*/ true);
+	scene->energy->add(e.sliding, "mesoSliding", slidingIx, false);
+	scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
+	scene->energy->add(e.torsion, "mesoTorsion", torsionIx, false);
 }
 
 namespace {
@@ -611,10 +623,7 @@ MESO_HOT meso::NormalForce Law2_ScGeom_MesoPhys_Meso::normalStep(MesoPhys& phys,
 		if (!normalEnergiesReady.load(std::memory_order_acquire)) registerEnergies(p.tangential);
 		meso::NormalEnergyStep e;
 		f = meso::normalStepWithEnergy(p, phys.geometry, phys.history, { phys.fHysteretic, phys.fViscous, phys.lastDelta }, delta, vn, scene->dt, e);
-		scene->energy->add(e.elastic, "mesoElastic", elasticIx, /*reset*/ true);
-		scene->energy->add(e.plastic, "mesoPlastic", plasticIx, false);
-		scene->energy->add(e.adhesive, "mesoAdhesive", adhesiveIx, false);
-		scene->energy->add(e.viscous, "mesoViscous", viscousIx, false);
+		addEnergies(e);
 	} else {
 		f = meso::normalForce(p, phys.geometry, phys.history, delta, vn);
 	}
@@ -639,10 +648,7 @@ MESO_HOT void Law2_ScGeom_MesoPhys_Meso::tangentialStep(
 		if (!tangentialEnergiesReady.load(std::memory_order_acquire)) registerEnergies(true);
 		meso::TangentialEnergy e;
 		advance(&e);
-		scene->energy->add(e.stored, "mesoSprings", springsIx, true);
-		scene->energy->add(e.sliding, "mesoSliding", slidingIx, false);
-		scene->energy->add(e.rolling, "mesoRolling", rollingIx, false);
-		scene->energy->add(e.torsion, "mesoTorsion", torsionIx, false);
+		addEnergies(e);
 	} else {
 		advance(nullptr);
 	}

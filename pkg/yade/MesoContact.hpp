@@ -214,14 +214,6 @@ public:
 	// Gives a live contact its bodies' present materials, keeping its history; throws
 	// std::invalid_argument if that would change the hysteretic normal law or the contact class.
 	void adoptMaterials(const boost::python::object& interaction);
-	// Keep the scene's real contacts (geometry and physics) and give them back to the same pairs
-	// once made anew (yade.mpy's split): in C++, since an object assigned from Python carries a
-	// Python reference that the engine thread would later drop without the GIL.
-	static long keepContacts();
-	static long restoreContacts();
-	// The same contacts as bytes for another rank (those of the given bodies), and kept from them.
-	static boost::python::object exportContacts(const boost::python::object& ids);
-	static long                  importContacts(const boost::python::object& data);
 	// The pair parameters the contacts of two materials get: the one mixing rule, for Python too.
 	// Python entry points: every argument is an object checked by name (Boost's converters name none).
 	boost::python::dict mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const;
@@ -235,11 +227,7 @@ public:
 		/*ctor*/,
 		.def("stableStep",&Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("radius1"),boost::python::arg("radius2")=0,boost::python::arg("rotations")=true),"The stable time step [s] of a contact between a free sphere of ``material1`` and radius ``radius1`` and a free sphere of ``material2`` and ``radius2`` (0: a fixed wall, box or facet), masses and inertia from the materials' densities: the bound :yref:`stableDt<Ip2_MesoMat_MesoMat_MesoPhys.stableDt>` applies to each contact, from the same code, before any contact exists. ``mesocontact.scene.time_step`` takes its minimum over a scene.")
 		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'torsion' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
-		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.")
-		.def("keepContacts",&Ip2_MesoMat_MesoMat_MesoPhys::keepContacts,"Keeps the geometry and physics of every real interaction of the scene (any law), by body ids; returns how many. With :yref:`restoreContacts<Ip2_MesoMat_MesoMat_MesoPhys.restoreContacts>`, contacts survive an operation that erases and remakes pairs, such as :yref:`yade.mpy`'s split (``mesocontact.mpi.keep_contacts``).").staticmethod("keepContacts")
-		.def("restoreContacts",&Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts,"Gives the kept geometry and physics back to every pair that exists again without them (both bodies present, the collider's candidate interaction made), with the bodies in the order the contact was made for, so it goes on with its history; pairs still real keep their own. Forgets the kept contacts and returns how many it gave back (none if the scene is not the one they were kept from, e.g. after ``O.load``).").staticmethod("restoreContacts")
-		.def("exportContacts",&Ip2_MesoMat_MesoMat_MesoPhys::exportContacts,(boost::python::arg("ids")),"The real interactions of the scene that involve any of the bodies ``ids`` (geometry and physics, any law), serialized as ``O.save`` does, as bytes: for another process (``mesocontact.mpi`` sends them with the bodies that :yref:`yade.mpy` moves to another worker).").staticmethod("exportContacts")
-		.def("importContacts",&Ip2_MesoMat_MesoMat_MesoPhys::importContacts,(boost::python::arg("data")),"Adds the contacts of ``data`` (bytes from :yref:`exportContacts<Ip2_MesoMat_MesoMat_MesoPhys.exportContacts>`) to the kept ones, which :yref:`restoreContacts<Ip2_MesoMat_MesoMat_MesoPhys.restoreContacts>` gives to their pairs; call it after :yref:`keepContacts<Ip2_MesoMat_MesoMat_MesoPhys.keepContacts>`, which forgets what was kept before. Returns how many; ``ValueError`` if ``data`` is not such bytes.").staticmethod("importContacts");
+		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.");
 		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm)
 	);
 	// clang-format on
@@ -256,6 +244,8 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	std::mutex        energyMutex;
 	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
 	void              registerEnergies(bool tangential);
+	void              addEnergies(const meso::NormalEnergyStep& e);
+	void              addEnergies(const meso::TangentialEnergy& e);
 	std::atomic<bool> foreignWarned{ false };
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
 	// The steps of go(), in MesoContact.cpp: the normal force (with its energy when tracked), then

@@ -66,7 +66,7 @@ PERIODS = {"tension": (480.0, 1920.0), "compression": (120.0, 480.0)}
 PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us]: the peak wall speed of 240 t_w cycles at Dx = 0.2, where the first pull's peak agrees within 2.2 % from 120 t_w on (Dx = 9 in about 1 040 000 steps)
 FAST, SLOW = PERIODS["compression"]
 GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
-# The campaign's time step per test, as a multiple of tablet.time_step (t_c/50), from the
+# The campaign's time step per test, as a multiple of tablet.contact_step (t_c/50), from the
 # time-step study (docs/tablet/timestep.md): the largest factor whose outcome stays within 0.5 %
 # of 1 dt, or within the spread of perturbed runs where that is larger.
 DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
@@ -143,7 +143,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
-    campaign's PROTOCOL is read back, not repeated. ``dt_factor`` scales tablet.time_step (default
+    campaign's PROTOCOL is read back, not repeated. ``dt_factor`` scales tablet.contact_step (default
     DT_FACTORS[mode]); ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance)
     to the JSON; ``cycles`` overrides the campaign's cycle count. Returns (description, rows)."""
     name = run_name(mode, amplitude, period, prefix)
@@ -261,7 +261,7 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
 
 # The time-step study: one tension cycle (Dx = 0.2, the tension FAST period), one compression
 # cycle (Dx = 0.3, the compression FAST period) and the pull to TIMESTEP_PULL_UNTIL, at these
-# multiples of the campaign's time step (tablet.time_step); PERTURBED, a step changed by 1e-6,
+# multiples of the campaign's time step (tablet.contact_step); PERTURBED, a step changed by 1e-6,
 # measures how much the rupture moves for a change far below any integration error.
 TIMESTEP_FACTORS = (1.0, 2.0, 3.0, 4.0)
 PERTURBED = 1.000001
@@ -493,7 +493,7 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     through the sample, where the last contact chain between the walls breaks, and the force
     after that (no drag acts on a detached half moving as a body: it must vanish). Under
     yade.mpy (--mpi) the same force rows, without the events and snapshots. ``tag`` names the
-    bundle; ``dt_factor`` scales tablet.time_step (default DT_FACTORS['pull']); ``energy`` adds
+    bundle; ``dt_factor`` scales tablet.contact_step (default DT_FACTORS['pull']); ``energy`` adds
     the run's energy balance; ``check_every``: records (each 100 campaign steps of wall travel, the
     same Dx at any dt_factor) between the costly gap and connectivity checks, their resolution.
     ``protocol``: the preparation's options (tablet.prepare's packing, glue); ``drag``: the

@@ -49,6 +49,13 @@ def _note_rect(fig):
     return (0, getattr(fig, "_meso_note_bottom", 0.03), 1, 1)
 
 
+def save_figure(fig, outdir, stem):
+    """Lays the figure out above its note, writes <outdir>/<stem>.png (atomically) and closes it."""
+    fig.tight_layout(rect=_note_rect(fig))
+    outputs.savefig_atomic(fig, os.path.join(outdir, stem + ".png"), dpi=150)
+    plt.close(fig)
+
+
 def _write_csv(path, header, rows):
     text = io.StringIO(newline="")
     w = csv.writer(text)
@@ -94,9 +101,7 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     ax.set_title("Fig. 5: jump-in adhesion, η = 4, β = 1")
     ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 0.08))
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, "fig5_restitution_adhesive.png"), dpi=150)
-    plt.close(fig)
+    save_figure(fig, outdir, "fig5_restitution_adhesive")
     _write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
                ["alpha", "fa_N", "zeta", "v_inf_m_s", "e_yade", "e_theory", "stuck"], rows)
     return rows
@@ -132,9 +137,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
     ax.legend()
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, "fig6_restitution.png"), dpi=150)
-    plt.close(fig)
+    save_figure(fig, outdir, "fig6_restitution")
 
     lo, hi = theory.chi_c_b(eta, beta), theory.chi_c_c(eta, beta)
     fig, ax = plt.subplots(figsize=(6, 4.2))
@@ -149,9 +152,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
     ax.legend()
     _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, "fig8_sticking_overlap.png"), dpi=150)
-    plt.close(fig)
+    save_figure(fig, outdir, "fig8_sticking_overlap")
     _write_csv(os.path.join(outdir, "fig6_restitution.csv"),
                ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
                rows)
@@ -186,9 +187,7 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")
     _fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, "fig7_force_overlap.png"), dpi=150)
-    plt.close(fig)
+    save_figure(fig, outdir, "fig7_force_overlap")
     _write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),
                ["chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return rows

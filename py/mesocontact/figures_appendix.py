@@ -5,8 +5,9 @@ import math
 import os
 import time
 
-from . import outputs, pair, theory
-from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _note_rect, _progress, _write_csv, plt
+from . import loop as _loop
+from . import pair, theory
+from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt, save_figure
 
 K1 = PAPER["k1"]
 PHI_F = PAPER["phiF"]
@@ -33,14 +34,8 @@ def _finish_sweep(fig, ax, outdir, stem, rows, title, note, ylabel="e", legend_s
     ax.set_title(title)
     ax.legend(fontsize=legend_size, loc=legend_loc)
     _fig_note(fig, note)
-    _save(fig, outdir, stem)
+    save_figure(fig, outdir, stem)
     _write_csv(os.path.join(outdir, stem + ".csv"), SWEEP_HEADER, rows)
-
-
-def _save(fig, outdir, stem):
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, stem + ".png"), dpi=150)
-    plt.close(fig)
 
 
 def _log_grid(lo, hi, n):
@@ -158,7 +153,7 @@ def fig10(outdir, quick=False, phiF_tuned=0.5, chis=(0.5, 1.0, 2.5)):
     ax.set_title(f"Fig. 10: force law with φf = {PHI_F:g} and φf' = {phiF_tuned:g} (Appendix A)")
     ax.legend(fontsize=6.5, loc="upper left")
     _fig_note(fig, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE)
-    _save(fig, outdir, "fig10_tuned_force_law")
+    save_figure(fig, outdir, "fig10_tuned_force_law")
     _write_csv(os.path.join(outdir, "fig10_tuned_force_law.csv"),
                ["model", "chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 10", collisions=len(summary_rows), kp_tuned=kp_t,
@@ -205,7 +200,7 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
         axt.legend(fontsize=7, loc="upper right")
     _fig_note(fig, f"χ = {chi:g}, η = 4, β* = 1/3; " + PARAM_LINE.replace(", γ0 = 0", ""))
     fig.suptitle("Fig. 11: viscosity at χ = 1 for β below, at and above β*")
-    _save(fig, outdir, "fig11_viscosity")
+    save_figure(fig, outdir, "fig11_viscosity")
     _write_csv(os.path.join(outdir, "fig11_viscosity.csv"),
                ["kc_N_m", "gamma0_kg_s", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 11", collisions=len(cases), cases=cases,
@@ -325,7 +320,7 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
     back along its k2 line ('mesoElastic'); the times where the overlap passes the closed form's
     delta0, deltaMin (and deltaC, where the pair sticks) marked. The energy balance (kinetic + stored
     + dissipated = E0) is checked on every sample."""
-    from yade import O, wrapper as _w
+    from yade import O
     eta, beta = 4.0, 1.0
     mat = _mat(eta, beta)
     fig, axes = plt.subplots(2, len(chis), figsize=(5.2 * len(chis), 6.6), squeeze=False)
@@ -335,11 +330,10 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         s = pair.build(RADIUS, v, mat, track_energy=True)
         e0 = 0.5 * s.m_r * v ** 2  # no force acts before contact: the kinetic energy is exact
         t_load = math.pi * math.sqrt(s.m_r / K1)
-        _SAMPLES.update(scene=s, rows=[])
-        sampler = _w.PyRunner(iterPeriod=1 if quick else 20, command="import mesocontact.figures_appendix as _f; _f._sample()")
+        samples = []
+        sampler = _loop.runner(lambda: samples.append(_sample(s)), 1 if quick else 20, "fig15Sampler")
         O.engines = O.engines + [sampler]
         O.run(int((3 if quick else 6) * t_load / O.dt), True)
-        samples = _SAMPLES["rows"]
         kc = mat["kc"]
         potential = [_branch_potential(x[7], x[8], K1, x[9], kc) for x in samples]
         worst = max(abs(x[5] - e0) for x in samples) / e0
@@ -393,7 +387,7 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
               flush=True)
     _fig_note(fig, "η = 4, β = 1; " + PARAM_LINE)
     fig.suptitle("Fig. 15: kinetic and potential energies of one collision (YADE)")
-    _save(fig, outdir, "fig15_energies")
+    save_figure(fig, outdir, "fig15_energies")
     _write_csv(os.path.join(outdir, "fig15_energies.csv"),
                ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J", "overlap_m",
                 "hystereticForce_N", "plastic_potential_J"], rows)
@@ -401,16 +395,13 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
                 worst_abs_sum_error_over_E0=max(c["worst_abs_sum_error_over_E0"] for c in cases))
 
 
-_SAMPLES = {}  # fig15: the scene and its samples, filled by a PyRunner inside YADE's loop (one O.run)
-
-
-def _sample():
+def _sample(s):
+    """fig15: one row of the collision's energies and contact state, taken inside YADE's loop (one O.run)."""
     from yade import O
     en = {k: O.energy[k] for k in O.energy.keys()}
-    s = _SAMPLES["scene"]
     i = O.interactions[s.ids[0], s.ids[1]] if O.interactions.has(s.ids[0], s.ids[1]) else None
     real = i is not None and i.isReal
-    _SAMPLES["rows"].append((O.time, en.get("kinetic", 0.0), en.get("mesoElastic", 0.0), en.get("mesoPlastic", 0.0),
-                             en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(s),
-                             i.phys.branch if real else "apart", i.phys.hystereticForce if real else 0.0,
-                             i.phys.k2 if real else K1))
+    return (O.time, en.get("kinetic", 0.0), en.get("mesoElastic", 0.0), en.get("mesoPlastic", 0.0),
+            en.get("mesoAdhesive", 0.0), O.energy.total(), pair.overlap(s),
+            i.phys.branch if real else "apart", i.phys.hystereticForce if real else 0.0,
+            i.phys.k2 if real else K1)

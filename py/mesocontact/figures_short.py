@@ -5,8 +5,8 @@ import os
 import time
 
 from . import theory
-from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt
-from .figures_appendix import _collide, _live, _log_grid, _save
+from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt, save_figure
+from .figures_appendix import _collide, _live, _log_grid
 
 SHORT = dict(k1=100.0, kp=500.0, kc=100.0, phiF=PAPER["phiF"])
 FA = 5e-7  # N, Fig. 5
@@ -61,7 +61,7 @@ def short_fig5(outdir, quick=False):
     ax.set_title(f"Short paper, Fig. 5: f_a = {FA:g} N")
     ax.legend(fontsize=7, loc="center left")
     _fig_note(fig, PARAM_LINE)
-    _save(fig, outdir, "short_fig5_elastic_vs_plastic")
+    save_figure(fig, outdir, "short_fig5_elastic_vs_plastic")
     _write_csv(os.path.join(outdir, "short_fig5_elastic_vs_plastic.csv"), HEADER, rows)
     return dict(figure="short 5", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows),
                 v_fa=v_fa)
@@ -100,7 +100,7 @@ def short_fig6(outdir, quick=False, fas=(0.0, 5e-9, 5e-7, 5e-5, 5e-3, 0.1)):
     ax.set_title("Short paper, Fig. 6: the strength of the non-contact adhesion")
     ax.legend(fontsize=6, loc="center left", ncol=2)
     _fig_note(fig, "kp = 500 N/m; " + PARAM_LINE)
-    _save(fig, outdir, "short_fig6_adhesion_strength")
+    save_figure(fig, outdir, "short_fig6_adhesion_strength")
     _write_csv(os.path.join(outdir, "short_fig6_adhesion_strength.csv"), HEADER, rows)
     grid = _log_grid(1e-5, 3.0, 600)
     summary = []

@@ -5,12 +5,12 @@ those its own bodies can touch (the mirrors, and the master's walls). Every cont
 body is therefore made anew at the first split: deltaMax becomes the present overlap, the
 springs restart at zero, and a run that was prepared serially and loaded continues as another
 material would. ``keep_contacts`` wraps mpy's collision step: before each one it keeps this
-rank's real contacts (their geometry and physics objects, by body ids, in C++:
-``Ip2_MesoMat_MesoMat_MesoPhys.keepContacts``), after it it gives them back to the same pairs
-wherever mpy made the pair again without them (``restoreContacts``). When mpy's reallocation
-(``REALLOCATE_FREQUENCY > 0``, off by default) moves bodies to another worker, their contacts go
-along (``exportContacts`` / ``importContacts``, the scene's own serialization) and their pairs
-are made on the new worker at once.
+rank's real contacts (their geometry and physics objects, by body ids, in the C++ store
+``MesoContactStore.keep``), after it it gives them back to the same pairs wherever mpy made the
+pair again without them (``restore``). When mpy's reallocation (``REALLOCATE_FREQUENCY > 0``, off
+by default) moves bodies to another worker, their contacts go along (``exportContacts`` /
+``importContacts``, the scene's own serialization) and their pairs are made on the new worker at
+once.
 
     from yade import mpy
     from mesocontact import mpi
@@ -28,6 +28,41 @@ from .scene import py_runner
 
 _KEPT = {"restored": 0, "collisions": 0, "reallocations": 0, "moved": 0, "sent": 0, "received": 0}
 _ARRIVING = []  # bytes of contacts sent by other ranks with the bodies mpy moved here
+_STORE = []  # this process's MesoContactStore, made on first use (yade's classes need a running yade)
+
+
+def store():
+    """The MesoContactStore through which this process keeps its contacts across mpy's steps."""
+    if not _STORE:
+        _STORE.append(w.MesoContactStore())
+    return _STORE[0]
+
+
+# The yade.mpy whose functions keep_contacts wraps, as ctest's mpi tests run it: the wrappers call
+# them with the arguments they were given and rely on mpy.rank, numThreads and comm.
+TESTED_YADE = ("2023.02a",)
+_WRAPPED = {"parallelCollide": (), "reallocateBodiesToSubdomains": ("_filter", "blocking")}
+
+
+def check_mpy(mpy):
+    """Refuses (RuntimeError) an mpy whose functions that keep_contacts replaces are missing or take
+    other parameters than the wrappers pass on; warns once when YADE is not a version the wrappers
+    were tested with. Returns YADE's version."""
+    import inspect
+    import warnings
+    from yade import config
+    version = getattr(config, "version", "unknown")
+    for name, params in _WRAPPED.items():
+        fn = getattr(mpy, name, None)
+        got = tuple(inspect.signature(fn).parameters) if callable(fn) else None
+        if got != params:
+            found = "missing" if got is None else "(" + ", ".join(got) + ")"
+            raise RuntimeError(f"yade.mpy.{name} of YADE {version} is {found}: "
+                               f"mesocontact.mpi wraps mpy.{name}({', '.join(params)}) of YADE {', '.join(TESTED_YADE)}")
+    if version not in TESTED_YADE:
+        warnings.warn(f"mesocontact.mpi: YADE {version}'s yade.mpy has not been tested with its contact keeping "
+                      f"(tested: {', '.join(TESTED_YADE)}); run ctest -R mpi to check it", stacklevel=3)
+    return version
 
 
 def keep_contacts(mpy):
@@ -38,17 +73,18 @@ def keep_contacts(mpy):
     of contacts sent with them and the contacts received (for logs and tests)."""
     if getattr(mpy.parallelCollide, "_keeps_contacts", False):
         return _KEPT
+    check_mpy(mpy)
     collide, reallocate = mpy.parallelCollide, mpy.reallocateBodiesToSubdomains
-    ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys
+    kept = store()
 
     def parallelCollide():
-        ip2.keepContacts()
+        kept.keep()
         for data in _ARRIVING:
-            _KEPT["received"] += ip2.importContacts(data)
+            _KEPT["received"] += kept.importContacts(data)
         _ARRIVING.clear()
         collide()
         _KEPT["collisions"] += 1
-        _KEPT["restored"] += ip2.restoreContacts()
+        _KEPT["restored"] += kept.restore()
 
     def reallocateBodiesToSubdomains(*args, **kwargs):
         # mpy ships a moved body's interactions only with the partners its new worker already
@@ -63,7 +99,7 @@ def keep_contacts(mpy):
             if b and b.subdomain != mpy.rank:
                 gone[b.subdomain].append(b.id)
         _KEPT["moved"] += sum(len(ids) for ids in gone)
-        sent = [ip2.exportContacts(ids) if ids else b"" for ids in gone]
+        sent = [kept.exportContacts(ids) if ids else b"" for ids in gone]
         _KEPT["sent"] += sum(len(data) for data in sent)
         _ARRIVING.extend(data for data in mpy.comm.alltoall(sent) if data)
         mpy.parallelCollide()

@@ -8,6 +8,7 @@
 import math
 from dataclasses import dataclass, field
 
+from . import loop as _loop
 from . import params as _params
 from . import scene as _scene
 from .theory import _number
@@ -248,30 +249,28 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     trace = []
     check_every = max(1, int(0.02 * s.contact_time / O.dt))
     limit = O.iter + steps
-    _DRIVER.update(scene=s, trace=trace if record else None, low=math.inf, separated=False, touched=False)
-    watcher = _w.PyRunner(iterPeriod=1 if record else check_every, command=_COMMAND % "_watch()")
+    state = dict(scene=s, trace=trace if record else None, low=math.inf, separated=False, touched=False)
+    watcher = _loop.runner(lambda: _watch(state), 1 if record else check_every, "pairWatcher")
     O.engines = O.engines + [watcher]
     try:
         _run_until(limit)
-        if not _DRIVER["touched"] and not _touching(s):
+        if not state["touched"] and not _touching(s):
             raise RuntimeError(f"the pair never came into contact in {steps} steps (gap {s.start_gap:.3g} m, v_inf {s.v_inf:g} m/s)")
         if _passed_through(s):
             raise RuntimeError(f"the bodies passed through each other (v_inf = {s.v_inf:g} m/s, dt = {O.dt:.3g} s): no collision to report")
-        if _DRIVER["separated"]:
+        if state["separated"]:
             return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
         watcher.iterPeriod = 1
-        watcher.command = _COMMAND % "_track_low()"
+        _loop.register("pairWatcher", lambda: _track_low(state))
         _run_until(O.iter + int(settle_contact_times * t_load / O.dt))
-        if _DRIVER["separated"]:
+        if state["separated"]:
             return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
-        return PairResult(0.0, True, _DRIVER["low"], O.iter, trace)
+        return PairResult(0.0, True, state["low"], O.iter, trace)
     finally:
         O.engines = [e for e in O.engines if e is not watcher]
 
 
 # The watcher runs inside YADE's loop (one PyRunner) so that a collision costs one O.run().
-_COMMAND = "import mesocontact.pair as _mp; _mp.%s"
-_DRIVER = {}
 
 
 def _run_until(iteration):
@@ -292,28 +291,28 @@ def _passed_through(s):
     return O.bodies[s.ids[1]].state.pos[0] < O.bodies[s.ids[0]].state.pos[0]
 
 
-def _watch():
-    s = _DRIVER["scene"]
-    if _DRIVER["trace"] is not None:
-        _DRIVER["trace"].append(_sample(s))
-        _plot.addData(t=O.time, overlap=_DRIVER["trace"][-1][1], force=_DRIVER["trace"][-1][3])  # live: plot.plot()
+def _watch(state):
+    s = state["scene"]
+    if state["trace"] is not None:
+        state["trace"].append(_sample(s))
+        _plot.addData(t=O.time, overlap=state["trace"][-1][1], force=state["trace"][-1][3])  # live: plot.plot()
     if overlap(s) > 0:
-        _DRIVER["touched"] = True
+        state["touched"] = True
     if overlap(s) < s.delta_a and separation_speed(s) > 0:
-        _DRIVER["separated"] = True
+        state["separated"] = True
         # end the run after this step through stopAtIter, not O.pause(): a pause from inside the
         # loop lets O.wait() return while this step is still in Python, and the next O.reset()
         # (pair.build) then deadlocks on YADE's thread lock against the GIL (seen under load)
         O.stopAtIter = O.iter + 1
 
 
-def _track_low():
-    s = _DRIVER["scene"]
-    _DRIVER["low"] = min(_DRIVER["low"], overlap(s))
-    if _DRIVER["trace"] is not None:
-        _DRIVER["trace"].append(_sample(s))
+def _track_low(state):
+    s = state["scene"]
+    state["low"] = min(state["low"], overlap(s))
+    if state["trace"] is not None:
+        state["trace"].append(_sample(s))
     if overlap(s) < s.delta_a and separation_speed(s) > 0:  # beyond every force, moving apart: free for good
-        _DRIVER["separated"] = True
+        state["separated"] = True
         O.stopAtIter = O.iter + 1
 
 

@@ -17,13 +17,9 @@ def reset():
 
 
 def py_runner(fn, period, label):
-    """A PyRunner calling fn every ``period`` steps. PyRunner runs its command in yade's
-    __main__; the callable is reached there through builtins."""
-    import builtins
-    from yade import wrapper as w
-    name = f"_mesocontact_{label}"
-    setattr(builtins, name, fn)
-    return w.PyRunner(iterPeriod=period, command=f"{name}()", label=label)
+    """A PyRunner calling fn every ``period`` steps (``mesocontact.loop.runner``)."""
+    from .loop import runner
+    return runner(fn, period, label)
 
 
 def engines(gravity=(0, 0, -9.81)):

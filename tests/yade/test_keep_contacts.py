@@ -1,10 +1,11 @@
-# ctest (inside yade): Ip2_MesoMat_MesoMat_MesoPhys.keepContacts / restoreContacts. A settled bed
+# ctest (inside yade): MesoContactStore.keep / restore. A settled bed
 # whose interactions are all erased and remade by the collider (what yade.mpy's split does to the
 # pairs it imports) goes on as if nothing happened once the kept contacts are given back,
 # box-sphere pairs in their original body order included; without them it does not. Remade pairs
 # sit elsewhere in the interaction container, so each body sums its forces in another order:
 # the runs agree to round-off grown over 300 steps, not bitwise (tolerance below). The same through
 # exportContacts / importContacts (bytes, for another MPI rank): bitwise right after, as above after.
+# Each store owns what it keeps: another store gives nothing back.
 import math
 
 from yade import O, pack, utils
@@ -51,7 +52,7 @@ def difference(a, b):
 TOLERANCE = 1e-9
 
 
-ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys
+store = w.MesoContactStore()
 
 
 def remake():
@@ -67,12 +68,15 @@ check(walls > 5 and all(i.id1 == floor for i in O.interactions if i.isReal and f
       f"{walls} floor contacts, the box first as the loop orders them")
 for give_back in (True, False):
     O.loadTmp("bed")
-    kept = ip2.keepContacts() if give_back else 0
+    kept = store.keep() if give_back else 0
+    other = w.MesoContactStore()
+    check(other.size == 0 and other.restore() == 0 and store.size == kept, "another store holds none of these contacts")
     remake()
-    restored = ip2.restoreContacts() if give_back else 0
+    restored = store.restore() if give_back else 0
     if give_back:
         check(kept > 20 and restored == kept, f"kept {kept} contacts, gave back {restored}")
-        check(ip2.restoreContacts() == 0, "the kept contacts are forgotten once given back")
+        check(store.size == 0, "the store is empty once it gave them back")
+        check(store.restore() == 0, "the kept contacts are forgotten once given back")
     O.run(300, True)
     dc, dx = difference(state(), serial)
     if give_back:
@@ -96,13 +100,13 @@ def everything():
 O.loadTmp("bed")
 before = everything()
 some = [b.id for b in O.bodies][:5]
-check(ip2.importContacts(ip2.exportContacts(some)) == len({p for p in before if set(p) & set(some)}),
+check(store.importContacts(store.exportContacts(some)) == len({p for p in before if set(p) & set(some)}),
       "exportContacts(ids) takes the contacts of those bodies only")
-data = ip2.exportContacts([b.id for b in O.bodies])
+data = store.exportContacts([b.id for b in O.bodies])
 remake()
-ip2.keepContacts()  # what a collision step keeps on the receiving rank: none of these are real now
-arrived = ip2.importContacts(data)
-restored = ip2.restoreContacts()
+store.keep()  # what a collision step keeps on the receiving rank: none of these are real now
+arrived = store.importContacts(data)
+restored = store.restore()
 check(arrived == len(before) and restored == arrived, f"{arrived} contacts through {len(data)} bytes, {restored} given back")
 check(everything() == before, "every attribute of every contact's geometry and physics bitwise as before")
 O.run(300, True)
@@ -110,20 +114,20 @@ dc, dx = difference(state(), serial)
 check(dc < TOLERANCE and dx < TOLERANCE, f"after 300 steps as without the trip to {dc:.1e}, positions to {dx:.1e} R")
 for bad in (b"not contacts", "a string", data[:len(data) // 2]):
     try:
-        ip2.importContacts(bad)
+        store.importContacts(bad)
         check(False, f"importContacts({bad[:20]!r}) refused")
     except ValueError as e:
         check("data" in str(e), f"importContacts({bad[:20]!r}) refused: {e}")
 O.loadTmp("bed")
-ip2.keepContacts()
+store.keep()
 O.loadTmp("bed")
 remake()
-check(ip2.restoreContacts() == 0, "contacts kept from another scene (before O.load) are not given back")
+check(store.restore() == 0, "contacts kept from another scene (before O.load) are not given back")
 # Contacts of bodies this scene does not have (exported from a larger one): skipped, not a segfault
 # (Body::byId was called with ids beyond the container).
 O.loadTmp("bed")
-data = ip2.exportContacts([b.id for b in O.bodies])
+data = store.exportContacts([b.id for b in O.bodies])
 O.reset()
 O.bodies.append([utils.sphere((0, 0, 0), R, material=mat), utils.sphere((10 * R, 0, 0), R, material=mat)])
-check(ip2.importContacts(data) > 0 and ip2.restoreContacts() == 0, "contacts of bodies beyond this scene's ids are skipped")
+check(store.importContacts(data) > 0 and store.restore() == 0, "contacts of bodies beyond this scene's ids are skipped")
 finish()

@@ -17,7 +17,8 @@ import tempfile
 
 from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom6D,
-                          Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator, MesoMat, MesoBackgroundDamping)
+                          Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator, MesoMat, MesoBackgroundDamping,
+                          MesoContactStore)
 from harness import check, finish
 
 A, RHO = 1e-3, 2000.0
@@ -128,15 +129,15 @@ for kw, named in ((dict(radius2=1e-300), "radius = 1e-300"), (dict(dt=True), "dt
     except ValueError as e:
         check(str(e).startswith(named), f"pair.build({kw}) refused, naming it", str(e))
 
-# 12. The Ip2's Python methods name the argument they refuse (Boost's converters named none), and
-#     numpy's numbers are numbers (numpy's bool_ is not).
+# 12. The Ip2's and the contact store's Python methods name the argument they refuse (Boost's
+#     converters named none), and numpy's numbers are numbers (numpy's bool_ is not).
 import numpy as np  # noqa: E402
 
-ip2, m = Ip2_MesoMat_MesoMat_MesoPhys(), MesoMat(k1=100.0, kp=500.0, density=RHO)
+ip2, m, store = Ip2_MesoMat_MesoMat_MesoPhys(), MesoMat(k1=100.0, kp=500.0, density=RHO), MesoContactStore()
 for what, call, error, words in (
-        ("exportContacts(None)", lambda: ip2.exportContacts(None), TypeError, "ids = None"),
-        ("exportContacts([2**31])", lambda: ip2.exportContacts([2 ** 31]), ValueError, "ids[0] = 2147483648"),
-        ("exportContacts([1.5])", lambda: ip2.exportContacts([1.5]), TypeError, "ids[0] = 1.5"),
+        ("exportContacts(None)", lambda: store.exportContacts(None), TypeError, "ids = None"),
+        ("exportContacts([2**31])", lambda: store.exportContacts([2 ** 31]), ValueError, "ids[0] = 2147483648"),
+        ("exportContacts([1.5])", lambda: store.exportContacts([1.5]), TypeError, "ids[0] = 1.5"),
         ("adoptMaterials(5)", lambda: ip2.adoptMaterials(5), TypeError, "interaction = 5"),
         ("stableStep(m, m, 1e-3, 'a')", lambda: ip2.stableStep(m, m, 1e-3, "a"), TypeError, "radius2 = 'a'"),
         ("stableStep(m, None, 1e-3)", lambda: ip2.stableStep(m, None, 1e-3), TypeError, "material2 = None"),
@@ -159,7 +160,7 @@ n.kp = np.int32(600)
 check(n.kc == 20.0 and n.kp == 600.0 and isinstance(upd["kc"], np.float32), "numpy numbers in updateAttrs and assignments; the caller's dict untouched")
 d = MesoBackgroundDamping(gammaB=np.float32(0.5))
 check(d.gammaB == 0.5, "numpy numbers in an engine's keywords")
-check(ip2.exportContacts(np.array([0, 1], dtype=np.int64)) is not None and ip2.stableStep(m, m, np.float32(1e-3)) > 0,
+check(store.exportContacts(np.array([0, 1], dtype=np.int64)) is not None and ip2.stableStep(m, m, np.float32(1e-3)) > 0,
       "numpy ids and radii are taken")
 try:
     MesoMat(frictionAngle=5e-324)

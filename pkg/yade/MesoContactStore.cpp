@@ -1,7 +1,6 @@
-// Contacts kept aside while yade.mpy erases and remakes pairs (its split, its collision steps) or
-// moves bodies to another worker (its reallocation), and given back to the same pairs with their
-// history. Used by mesocontact.mpi; any law's contacts are kept, not only this one's.
-#include "MesoContact.hpp"
+// The contact store (MesoContactStore.hpp): kept by body ids, given back to pairs made anew, sent
+// as bytes of the scene's own archive. Any law's contacts are kept, not only this one's.
+#include "MesoContactStore.hpp"
 #include <core/BodyContainer.hpp>
 #include <core/InteractionContainer.hpp>
 #include <core/Omega.hpp>
@@ -14,41 +13,35 @@
 
 namespace yade {
 
-namespace {
-	struct KeptContact {
-		Body::id_t        id1, id2;
-		shared_ptr<IGeom> geom;
-		shared_ptr<IPhys> phys;
-	};
-	std::vector<KeptContact> keptContacts; // Python calls these one at a time (GIL held)
-	boost::weak_ptr<Scene>   keptFrom; // contacts of another scene (even at the same address) are never given back
+YADE_PLUGIN((MesoContactStore));
 
+namespace {
 	// Marks the bytes as ours, so that other bytes are refused before boost reads lengths from them.
 	const std::string contactsTag = "mesocontact contacts 1\n";
-
-	void keepFor(const shared_ptr<Scene>& scene) // what was kept from another scene is forgotten
-	{
-		if (keptFrom.lock() != scene) keptContacts.clear();
-		keptFrom = scene;
-	}
 }
 
-long Ip2_MesoMat_MesoMat_MesoPhys::keepContacts()
+void MesoContactStore::keepFor(const shared_ptr<Scene>& scene)
+{
+	if (from.lock() != scene) kept.clear();
+	from = scene;
+}
+
+long MesoContactStore::keep()
 {
 	const shared_ptr<Scene>& scene = Omega::instance().getScene();
-	keptContacts.clear();
-	keptFrom = scene;
+	kept.clear();
+	from = scene;
 	for (const auto& I : *scene->interactions)
-		if (I->isReal()) keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
-	return static_cast<long>(keptContacts.size());
+		if (I->isReal()) kept.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
+	return static_cast<long>(kept.size());
 }
 
-long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
+long MesoContactStore::restore()
 {
 	Scene* sc       = Omega::instance().getScene().get();
 	long   restored = 0;
-	if (keptFrom.lock().get() != sc) keptContacts.clear();
-	for (const auto& k : keptContacts) {
+	if (from.lock().get() != sc) kept.clear();
+	for (const auto& k : kept) {
 		if (!sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue; // a body not on this rank (or no such id)
 		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);
 		if (!I || I->geom || I->phys) continue; // no candidate pair here, or one that kept its state
@@ -57,13 +50,13 @@ long Ip2_MesoMat_MesoMat_MesoPhys::restoreContacts()
 		I->phys = k.phys;
 		++restored;
 	}
-	keptContacts.clear();
+	kept.clear();
 	return restored;
 }
 
 // Serialized with the scene's own binary archive (what O.save writes), so every field that survives
 // save/load survives the trip to another rank.
-boost::python::object Ip2_MesoMat_MesoMat_MesoPhys::exportContacts(const boost::python::object& ids)
+boost::python::object MesoContactStore::exportContacts(const boost::python::object& ids) const
 {
 	if (!PyObject_HasAttrString(ids.ptr(), "__iter__") || PyUnicode_Check(ids.ptr()) || PyBytes_Check(ids.ptr()))
 		pychecks::typeError("ids = " + pychecks::describe(ids) + " is invalid: must be a sequence of body ids");
@@ -80,24 +73,24 @@ boost::python::object Ip2_MesoMat_MesoMat_MesoPhys::exportContacts(const boost::
 	return boost::python::object(boost::python::handle<>(PyBytes_FromStringAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size()))));
 }
 
-long Ip2_MesoMat_MesoMat_MesoPhys::importContacts(const boost::python::object& data)
+long MesoContactStore::importContacts(const boost::python::object& data)
 {
 	char*      buffer = nullptr;
 	Py_ssize_t size   = 0;
-	if (!PyBytes_Check(data.ptr())) throw std::invalid_argument("data: must be bytes made by exportContacts");
+	if (!PyBytes_Check(data.ptr())) throw std::invalid_argument("data: must be bytes made by MesoContactStore.exportContacts");
 	if (PyBytes_AsStringAndSize(data.ptr(), &buffer, &size) != 0) boost::python::throw_error_already_set();
 	const std::string bytes(buffer, static_cast<size_t>(size));
-	if (bytes.compare(0, contactsTag.size(), contactsTag) != 0) throw std::invalid_argument("data: not contacts made by exportContacts");
+	if (bytes.compare(0, contactsTag.size(), contactsTag) != 0) throw std::invalid_argument("data: not contacts made by MesoContactStore.exportContacts");
 	std::istringstream                   in(bytes.substr(contactsTag.size()));
 	std::vector<shared_ptr<Interaction>> contacts;
 	try {
 		ObjectIO::load<decltype(contacts), boost::archive::binary_iarchive>(in, "contacts", contacts);
 	} catch (const std::exception& e) { // a broken archive may throw anything from boost or the library
-		throw std::invalid_argument(std::string("data: not contacts made by exportContacts (") + e.what() + ")");
+		throw std::invalid_argument(std::string("data: not contacts made by MesoContactStore.exportContacts (") + e.what() + ")");
 	}
 	keepFor(Omega::instance().getScene());
 	for (const auto& I : contacts)
-		keptContacts.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
+		kept.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });
 	return static_cast<long>(contacts.size());
 }
 
