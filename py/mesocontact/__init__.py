@@ -1,14 +1,34 @@
 """The adhesive, visco-elasto-plastic meso-particle contact model (Singh, Magnanimo & Luding,
-after Luding 2008) for YADE.
+after Luding 2008) for YADE. The modules, by layer:
 
-- ``mesocontact.theory``: closed-form restitution, sticking limits and overlaps (plain Python);
-- ``mesocontact.params``: parameters from dimensionless groups, time steps (plain Python);
-- ``mesocontact.pair``: pair-collision scenes and driver (inside ``yade``);
-- ``mesocontact.figures``: the papers' figures (matplotlib);
-- ``mesocontact.tablet``, ``stages``, ``uniaxial``, ``snapshots``, ``campaign``: the agglomerate tablet of
-  Appendix F, its unconfined uni-axial tests and Figs. 16-19 (inside ``yade``).
+Theory and parameters (plain Python, no YADE):
+- ``theory``: closed-form restitution, sticking limits and overlaps;
+- ``params``: parameters from dimensionless groups and from measured quantities, time steps;
+- ``calibrate``: the normal parameters fitted to measured restitution e(v) (its check of a fit
+  runs YADE pair collisions);
+- ``outputs``, ``scene_names``: result files that are whole or absent; names shared with readers.
 
-The C++ classes (``MesoMat``, ``MesoPhys``, ``Ip2_MesoMat_MesoMat_MesoPhys``,
-``Law2_ScGeom_MesoPhys_Meso``) come with the plugin and appear in ``yade`` like built-in ones.
+Scenes and drivers (inside ``yade``):
+- ``scene``: what every scene shares (engines, detection, time step, contact states, VTK);
+- ``loop``: the one way Python is called from YADE's loop (PyRunners by label);
+- ``pair``: pair collisions, sphere-sphere and sphere-wall;
+- ``mpi``: the law under ``yade.mpy`` with contact history kept;
+- ``batch``: scripts that also run as ``yade-batch`` jobs.
+
+The agglomerate tablet of Appendix F (inside ``yade``):
+- ``tablet``: the sample and its materials; ``stages``: its cached preparation states;
+- ``uniaxial``: unconfined tension and compression; ``snapshots``: pictures and where it tears;
+- ``campaign``: Figs. 16-19, the factor study, the command line and the docs report;
+- ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers, contact branches
+  (plain Python, from the campaign's files).
+
+Figures:
+- ``figures``, ``figures_appendix``, ``figures_short``: the papers' pair figures; ``atlas``: all
+  of them behind one command.
+
+The C++ classes (``MesoMat``, ``MesoPhys``, ``MesoTangentialPhys``, ``Ip2_MesoMat_MesoMat_MesoPhys``,
+``Law2_ScGeom_MesoPhys_Meso``, ``MesoBackgroundDamping``, ``MesoContactStore`` and the geometry
+functors ``Ig2_Facet_Sphere_MesoScGeom[6D]``, ``Ig2_Wall_Sphere_MesoScGeom``) come with the plugin
+and appear in ``yade`` like built-in ones.
 """
 __version__ = "0.1"
