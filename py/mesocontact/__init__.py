@@ -18,7 +18,8 @@ Scenes and drivers (inside ``yade``):
 The agglomerate tablet of Appendix F (inside ``yade``):
 - ``tablet``: the sample and its materials; ``stages``: its cached preparation states;
 - ``uniaxial``: unconfined tension and compression; ``snapshots``: pictures and where it tears;
-- ``campaign``: Figs. 16-19, the factor study, the command line and the docs report;
+- ``campaign`` (a subpackage split by job: ``common``, ``runs``, ``plots``, ``report``, ``cli``):
+  Figs. 16-19, the time-step and factor studies, the docs report, plan and totals;
 - ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers, contact branches
   (plain Python, from the campaign's files).
 

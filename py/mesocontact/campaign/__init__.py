@@ -1,0 +1,34 @@
+"""Figures 16-19 of the long paper (Appendix F) from the tablet tests (inside ``yade``).
+
+Each figure function runs its tests from the cached unconfined start (stages.ensure: made once,
+reused), prints progress and returns a summary dict. Results are bundles (outputs.Bundle: whole
+or absent, whatever stops the job): each run in ``runs/<run>/`` (``<run>.csv``: iter, Dx,
+F/(kp d0); ``<run>.json``: its description and peaks), each figure in ``<figure>/`` (its JSON and
+PNG with copies of the runs it plots). ``quick=True``: a 216-particle tablet and one cycle, for
+the test suite, under ``<out>/quick/`` (quick and full results never share a name).
+
+Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.crossing_time).
+``rates`` runs one amplitude at three periods, each 4x the last; the figures run FAST and the
+4x slower SLOW, the pair where the peak force of every cycle agrees within 5 %.
+
+The package, by job: ``common`` (constants, run places, the MPI mode), ``runs`` (every test the
+figures need), ``plots`` (their pictures), ``report`` (tables, the docs copy, plan and totals) and
+``cli`` (the scripts' options). Every name is also reachable here, as before the split.
+"""
+from .common import (  # noqa: F401
+    COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FIRST_PROTOCOL, FULL, GAP_AREA, PERIODS,
+    PROTOCOL, PULL_SPEED, QUICK, RATE_PERIODS, SLOW, TENSION_AMPLITUDES, _csv_text, _protocol_of,
+    cycle_peaks, is_master, mpy, prepare, read_csv, root, run_dir, run_name, use_mpi,)
+from .plots import (  # noqa: F401
+    AMPLITUDE_COLOURS, PAPER_LARGEST, _arrow, _plot_compression, _plot_pull, _plot_rates,
+    plot_cycles,)
+from .runs import (  # noqa: F401
+    FACTOR_VARIANTS, FIG19_DX, PERTURBED, PERTURBED_MORE, TIMESTEP_FACTORS, TIMESTEP_PULL_UNTIL,
+    TIMESTEP_RUNS, TIMESTEP_TOLERANCE, _spread_widths, _test, cyclic, drag_share, factor_dir,
+    factor_run, large_compression, pull, rates, run_cycles, timestep_markdown, timestep_run,
+    timestep_study, timestep_table,)
+from .report import (  # noqa: F401
+    JOBS_LOG, _factor_row, _job_steps, _stage_numbers, factor_report, factor_table, log_job,
+    peaks_table, plan, report, restore, totals,)
+from .cli import (  # noqa: F401
+    FIGURES, MPI_FIGURES, _main, _numbers, main, parse_args,)

@@ -1,0 +1,165 @@
+"""The tablet scripts' command line: the checked options and the dispatch to the figures' runs."""
+import json
+import math
+import os
+import tempfile
+import time
+
+
+from .. import mpi as _mpi
+from .. import outputs as _out
+from .. import stages as _stages
+from .. import tablet as _tablet
+from .common import (
+    FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
+)
+from .runs import (
+    PERTURBED, PERTURBED_MORE, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic, drag_share, factor_run,
+    large_compression, pull, rates, timestep_study,
+)
+from .report import factor_report, factor_table
+
+
+FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19", "factors")
+MPI_FIGURES = ("fig16", "fig17", "fig18")
+
+
+def parse_args(figure, argv):
+    """The checked options of a tablet script: argparse's error (SystemExit 2, the option named)
+    for any value outside its range, an unwritable --out included, before any work starts.
+    Returns (namespace, amplitudes, slow_amplitudes, periods)."""
+    import argparse
+    if figure not in FIGURES:
+        raise ValueError(f"figure = {figure!r} is invalid: one of {FIGURES}")
+    p = argparse.ArgumentParser(prog=f"yade -n -x scripts/tablet_{figure}.py",
+                                description=f"Appendix F, {figure}: writes CSV, JSON, PNG (and VTK) into --out.")
+    p.add_argument("--quick", action="store_true", help="216 particles, one cycle (for tests)")
+    p.add_argument("--out", default="results/tablet", help="output directory (the cached states are reused from it)")
+    default_periods = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}.get(figure, (FAST, SLOW))
+    p.add_argument("--periods", default=",".join(f"{x:g}" for x in default_periods),
+                   help="comma-separated cycle periods in elastic crossing times (the first drawn thin)")
+    p.add_argument("--amplitudes", default=None, help="comma-separated amplitudes Dx in d0")
+    p.add_argument("--slow-amplitudes", default=None,
+                   help="fig16, fig18: comma-separated amplitudes that also run at the slower periods (default: all)")
+    p.add_argument("--no-run", action="store_true", help="rates: only the periods whose runs are complete")
+    p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
+    p.add_argument("--until", type=float, default=None,
+                   help="fig17: pull until Dx = UNTIL (default 9); fig19: compress until Dx = -UNTIL (default 3) (in d0)")
+    p.add_argument("--factors", default=None,
+                   help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and the perturbed 1.000001, 1.000002, 0.999999)")
+    p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
+    p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
+                   help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
+    p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
+    p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
+    p.add_argument("--packing", default="full", choices=_tablet.PACKINGS,
+                   help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")
+    p.add_argument("--glue", default="loading", choices=_tablet.GLUES,
+                   help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
+    p.add_argument("--rel-std", type=float, default=0.05,
+                   help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
+    p.add_argument("--seed", type=int, default=1,
+                   help="factors: the random seed of the gas (positions and radii): another realization of the preparation")
+    p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
+                   help="factors: the background drag's reference in the pull")
+    p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
+    p.add_argument("--report", default=None, metavar="DOCS",
+                   help="factors: copy the study's files to DOCS/factors/ and write the table there from them")
+    p.add_argument("--mpi", type=int, default=None, metavar="N",
+                   help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
+                        " fig17 without crack events and snapshots)")
+    a = p.parse_args(argv)
+    if a.mpi is not None and figure not in MPI_FIGURES:
+        p.error(f"--mpi {a.mpi}: only {', '.join(MPI_FIGURES)} run under yade.mpy (not {figure})")
+    if a.mpi is not None and a.mpi < 2:
+        p.error(f"--mpi {a.mpi} is invalid: a master and at least one worker (N >= 2)")
+    if a.mpi is not None:
+        try:
+            use_mpi(a.mpi)
+        except ValueError as e:
+            p.error(str(e))
+    n = a.n or (_stages.QUICK_N if a.quick else FULL["n"])
+    if not 8 <= n <= 10 ** 6:
+        p.error(f"--n {n} is invalid: between 8 and 1000000 particles")
+    side = n ** (1 / 3)  # the sample's length in d0, roughly
+    mode = {"fig18": "compression", "fig19": "compression"}.get(figure, "tension")
+    amps = _numbers(p, "--amplitudes", a.amplitudes, 0, 0.5 * side if mode == "compression" else side,
+                    f"a {mode} amplitude in d0 (the sample is about {side:.3g} d0 long)") if a.amplitudes else None
+    slow = _numbers(p, "--slow-amplitudes", a.slow_amplitudes, 0, side, "an amplitude in d0") if a.slow_amplitudes else None
+    a.factors = _numbers(p, "--factors", a.factors, 0, 10, "a multiple of the campaign's time step") if a.factors else None
+    a.runs = tuple(a.runs.split(",")) if a.runs else None
+    if a.runs and not set(a.runs) <= set(TIMESTEP_RUNS):
+        p.error(f"--runs {','.join(a.runs)}: each must be one of {', '.join(TIMESTEP_RUNS)}")
+    periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
+    _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
+    if a.until is not None:
+        _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull or compression in d0")
+    if a.kc_over_kp is not None and not (math.isfinite(a.kc_over_kp) and 0 <= a.kc_over_kp <= 100):
+        p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
+    try:  # an unwritable --out fails now, not after the computation
+        os.makedirs(a.out, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=a.out, prefix=".writable-"):
+            pass  # a name of its own: two jobs sharing --out must not remove each other's probe
+    except OSError as e:
+        p.error(f"--out {a.out}: not writable ({e.strerror})")
+    return a, amps, slow, periods
+
+
+def main(figure, argv):
+    """Command line of the tablet scripts (prepare, rates, fig16 ... fig19)."""
+    a, amps, slow, periods = parse_args(figure, argv)
+    if _mpy() is None:
+        return _main(figure, a, amps, slow, periods)
+    _mpi.run_ranks(_mpy(), lambda: _main(figure, a, amps, slow, periods))
+
+
+def _main(figure, a, amps, slow, periods):
+    if is_master():
+        _out.sweep(a.out)
+    t0 = time.time()
+    if figure == "prepare":
+        info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
+        out = {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
+    elif figure == "drag":
+        out = drag_share(a.out, a.quick)
+    elif figure == "timestep":
+        out = timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE,
+                             runs=a.runs or TIMESTEP_RUNS)
+    elif figure == "rates":
+        out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods, run_missing=not a.no_run)
+    elif figure in ("fig16", "fig18"):
+        out = cyclic("tension" if figure == "fig16" else "compression", a.out, amps, a.quick, periods,
+                     slow_amplitudes=slow)
+    elif figure == "fig19":
+        out = large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0)
+    elif figure == "fig17":
+        out = pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0)
+    elif figure == "factors":
+        if a.report:
+            out = factor_report(a.out, a.report)
+        else:
+            if not a.table:
+                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed)
+            out = factor_table(a.out, a.quick)
+    else:
+        raise ValueError(f"figure = {figure!r} is invalid")
+    if not is_master():
+        return
+    print(json.dumps(out, indent=1, default=str)[:4000])
+    print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
+
+
+def _numbers(parser, option, text, low, high, what):
+    """Comma-separated numbers in (low, high], or the parser's error naming the option."""
+    values = []
+    for x in text.split(","):
+        try:
+            v = float(x)
+        except ValueError:
+            parser.error(f"{option} {text}: {x!r} is not a number")
+        if not (math.isfinite(v) and low < v <= high):
+            parser.error(f"{option} {text}: {x} is invalid: must lie in ({low:g}, {high:g}], {what}")
+        values.append(v)
+    return tuple(values)
+
+
