@@ -8,7 +8,8 @@
 import argparse
 import sys
 
-from mesocontact import atlas, batch
+from mesocontact import batch
+from mesocontact.figures import atlas
 
 p = argparse.ArgumentParser(prog="yade -n -x scripts/figure.py",
                             description="Figures of the papers: YADE pair collisions over the closed form (CSV + PNG).")

@@ -23,9 +23,9 @@ The agglomerate tablet of Appendix F (inside ``yade``):
 - ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers, contact branches
   (plain Python, from the campaign's files).
 
-Figures:
-- ``figures``, ``figures_appendix``, ``figures_short``: the papers' pair figures; ``atlas``: all
-  of them behind one command.
+Figures (a subpackage, inside ``yade``):
+- ``figures``: ``common`` (what they share), ``long`` (long paper Figs. 5-8), ``appendix`` (Figs.
+  9-15), ``short`` (short paper Figs. 5-6), ``atlas`` (every figure behind one command).
 
 The C++ classes (``MesoMat``, ``MesoPhys``, ``MesoTangentialPhys``, ``Ip2_MesoMat_MesoMat_MesoPhys``,
 ``Law2_ScGeom_MesoPhys_Meso``, ``MesoBackgroundDamping``, ``MesoContactStore`` and the geometry

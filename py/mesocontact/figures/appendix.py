@@ -5,9 +5,12 @@ import math
 import os
 import time
 
-from . import loop as _loop
-from . import pair, theory
-from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt, save_figure
+from .. import loop as _loop
+from .. import pair, theory
+from .common import (
+    DENSITY, PAPER, RADIUS, fig_note, pair_reduced_mass, plt, print_progress, save_figure,
+    write_csv,
+)
 
 K1 = PAPER["k1"]
 PHI_F = PAPER["phiF"]
@@ -18,10 +21,10 @@ def _mat(eta, beta, **kw):
 
 
 def _speed(chi, mat):
-    return theory.impact_velocity_for_chi(chi, mat["k1"], mat["kp"], mat["phiF"], RADIUS, _m_r())
+    return theory.impact_velocity_for_chi(chi, mat["k1"], mat["kp"], mat["phiF"], RADIUS, pair_reduced_mass())
 
 
-def _collide(mat, v, **kw):
+def collide_pair(mat, v, **kw):
     return pair.collide(pair.build(RADIUS, v, mat), **kw)
 
 
@@ -33,12 +36,12 @@ def _finish_sweep(fig, ax, outdir, stem, rows, title, note, ylabel="e", legend_s
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.legend(fontsize=legend_size, loc=legend_loc)
-    _fig_note(fig, note)
+    fig_note(fig, note)
     save_figure(fig, outdir, stem)
-    _write_csv(os.path.join(outdir, stem + ".csv"), SWEEP_HEADER, rows)
+    write_csv(os.path.join(outdir, stem + ".csv"), SWEEP_HEADER, rows)
 
 
-def _log_grid(lo, hi, n):
+def log_grid(lo, hi, n):
     return [lo * (hi / lo) ** (i / (n - 1)) for i in range(n)]
 
 
@@ -50,17 +53,17 @@ def _sweep(tag, curves, t0, rows, interpolation="linear"):
         mat = _mat(eta, beta, k2Interpolation=interpolation)
         for chi in chis:
             v = _speed(chi, mat)
-            r = _collide(mat, v, max_contact_times=15)
+            r = collide_pair(mat, v, max_contact_times=15)
             e_th = theory.restitution_fa0(chi, eta, beta, interpolation)
             rows.append((label, eta, beta, chi, v, r.e, e_th, int(r.stuck)))
-            _live(chi=chi, v=v, e_yade=r.e, e_theory=e_th)
+            plot_live(chi=chi, v=v, e_yade=r.e, e_theory=e_th)
             out.setdefault(label, []).append((chi, r.e))
             k += 1
-            _progress(tag, k, n, t0)
+            print_progress(tag, k, n, t0)
     return out
 
 
-def _live(**point):
+def plot_live(**point):
     """Each collision also goes to yade.plot (plot.plot() in the shell shows e as it comes)."""
     from yade import plot
     if not plot.plots:
@@ -88,17 +91,17 @@ def fig9(outdir, quick=False, phiF_tuned=0.5):
     ref = _mat(eta, bs / 3)
     kp_t = theory.widened_kp(K1, ref["kp"], PHI_F, phiF_tuned)
     tuned = dict(ref, kp=kp_t, phiF=phiF_tuned)
-    m_r = _m_r()
+    m_r = pair_reduced_mass()
 
     def e_tuned(chi):
         return theory.pair_collision(_speed(chi, ref), K1, kp_t, ref["kc"], phiF_tuned, RADIUS, m_r).e
 
     tuned_sim = []
     for chi in ([0.5, 3.0] if quick else [0.3, 0.7, 1.5, 3.0, 5.0]):
-        r = _collide(tuned, _speed(chi, ref), max_contact_times=15)
+        r = collide_pair(tuned, _speed(chi, ref), max_contact_times=15)
         rows.append(("tuned", (kp_t - K1) / K1, ref["kc"] / K1, chi, _speed(chi, ref), r.e, e_tuned(chi), int(r.stuck)))
         tuned_sim.append((chi, r.e))
-    grid = _log_grid(0.01, 6.0, 500)
+    grid = log_grid(0.01, 6.0, 500)
     same = max(abs(e_tuned(c) - theory.restitution_fa0(c, eta, bs / 3)) for c in grid if c <= 1)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for (label, _, beta, _), color, (cin, cout) in zip(curves, ("tab:red", "tab:green", "tab:blue"),
@@ -125,12 +128,12 @@ def fig10(outdir, quick=False, phiF_tuned=0.5, chis=(0.5, 1.0, 2.5)):
     kp_t = theory.widened_kp(K1, ref["kp"], PHI_F, phiF_tuned)
     tuned = dict(ref, kp=kp_t, phiF=phiF_tuned)
     dmp = theory.delta_max_p(K1, ref["kp"], PHI_F, RADIUS)
-    m_r, rows, summary_rows = _m_r(), [], []
+    m_r, rows, summary_rows = pair_reduced_mass(), [], []
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for chi, lw in zip(chis[:1] if quick else chis, (0.8, 1.0, 1.2)):
         v = _speed(chi, ref)
         for mat, style, name in ((ref, "k-", "reference"), (tuned, "r--", "tuned")):
-            r = _collide(mat, v, max_contact_times=8, record=True, settle_contact_times=1)
+            r = collide_pair(mat, v, max_contact_times=8, record=True, settle_contact_times=1)
             e_th = theory.pair_collision(v, K1, mat["kp"], mat["kc"], mat["phiF"], RADIUS, m_r).e
             summary_rows.append((name, chi, v, r.e, e_th, int(r.stuck)))
             tr = [t for t in r.trace if t[1] > 0]
@@ -152,9 +155,9 @@ def fig10(outdir, quick=False, phiF_tuned=0.5, chis=(0.5, 1.0, 2.5)):
     ax.set_ylabel("hysteretic force f [mN]")
     ax.set_title(f"Fig. 10: force law with φf = {PHI_F:g} and φf' = {phiF_tuned:g} (Appendix A)")
     ax.legend(fontsize=6.5, loc="upper left")
-    _fig_note(fig, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE)
+    fig_note(fig, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE)
     save_figure(fig, outdir, "fig10_tuned_force_law")
-    _write_csv(os.path.join(outdir, "fig10_tuned_force_law.csv"),
+    write_csv(os.path.join(outdir, "fig10_tuned_force_law.csv"),
                ["model", "chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 10", collisions=len(summary_rows), kp_tuned=kp_t,
                 worst_abs_e_error=max(abs(r[3] - r[4]) for r in summary_rows),
@@ -173,7 +176,7 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
         beta = kc / K1
         for g, color, name in ((0.0, "tab:blue", "γ0 = 0"), (gamma0, "tab:red", f"γ0 = {gamma0:g} kg/s")):
             mat = _mat(eta, beta, gammaN=g)
-            r = _collide(mat, _speed(chi, mat), max_contact_times=10 if quick else 30, record=True,
+            r = collide_pair(mat, _speed(chi, mat), max_contact_times=10 if quick else 30, record=True,
                          settle_contact_times=4 if quick else 8)
             e2 = theory.en_squared(chi, eta, beta)
             dc = theory.sticking_overlap(chi, eta, beta) if e2 <= 0 else None
@@ -198,10 +201,10 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
         axt.axhline(0, color="0.6", lw=0.5)
         axf.legend(fontsize=7)
         axt.legend(fontsize=7, loc="upper right")
-    _fig_note(fig, f"χ = {chi:g}, η = 4, β* = 1/3; " + PARAM_LINE.replace(", γ0 = 0", ""))
+    fig_note(fig, f"χ = {chi:g}, η = 4, β* = 1/3; " + PARAM_LINE.replace(", γ0 = 0", ""))
     fig.suptitle("Fig. 11: viscosity at χ = 1 for β below, at and above β*")
     save_figure(fig, outdir, "fig11_viscosity")
-    _write_csv(os.path.join(outdir, "fig11_viscosity.csv"),
+    write_csv(os.path.join(outdir, "fig11_viscosity.csv"),
                ["kc_N_m", "gamma0_kg_s", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 11", collisions=len(cases), cases=cases,
                 note="no closed form with viscosity: the viscous runs are compared with the non-viscous closed form")
@@ -219,10 +222,10 @@ def _within(grid, exact, approx, tol=0.05):
 def fig12(outdir, quick=False, etas=(5.0, 50.0, 500.0)):
     """log-log e(chi <= 1) for beta = 0 and eta = 5, 50, 500 with the asymptote (eta chi)^-1/2 (C.2)."""
     t0, rows = time.time(), []
-    chis = [0.01, 0.3] if quick else _log_grid(0.001, 1.0, 10)
+    chis = [0.01, 0.3] if quick else log_grid(0.001, 1.0, 10)
     curves = [(f"η = {eta:g}", eta, 0.0, chis) for eta in etas]
     sim = _sweep("fig12", curves, t0, rows)
-    grid = _log_grid(0.001, 1.0, 300)
+    grid = log_grid(0.001, 1.0, 300)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     holds = {}
     for (label, eta, _, _), color in zip(curves, ("tab:red", "tab:green", "tab:blue")):
@@ -244,10 +247,10 @@ def fig13(outdir, quick=False, betas=(0.01, 0.1, 1.0), eta=50.0):
     """log-log e(chi <= 1) at eta = 50 for beta = 0.01, 0.1, 1 with sqrt(1/(eta chi) - beta) (C.3)
     and the chi^-1/4, chi^-1/2 guides."""
     t0, rows = time.time(), []
-    chis = [0.003, 0.3] if quick else _log_grid(0.001, 1.0, 10)
+    chis = [0.003, 0.3] if quick else log_grid(0.001, 1.0, 10)
     curves = [(f"β = {b:g}", eta, b, chis) for b in betas]
     sim = _sweep("fig13", curves, t0, rows)
-    grid = _log_grid(0.001, 1.0, 300)
+    grid = log_grid(0.001, 1.0, 300)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     holds = {}
     for (label, _, b, _), color in zip(curves, ("tab:red", "tab:green", "tab:blue")):
@@ -279,10 +282,10 @@ def fig14(outdir, quick=False, eta=50.0):
     """Linear (Eq. 9) against square-root (Eq. D.1) k2 interpolation, eta = 50, beta = 0, with
     the asymptotes (eta chi)^-1/2 and (eta sqrt(chi))^-1/2 (D.2)."""
     t0, rows = time.time(), []
-    chis = [0.01, 0.5] if quick else _log_grid(0.001, 1.0, 10)
+    chis = [0.01, 0.5] if quick else log_grid(0.001, 1.0, 10)
     sim = _sweep("fig14 linear", [("linear", eta, 0.0, chis)], t0, rows)
     sim.update(_sweep("fig14 sqrt", [("sqrt", eta, 0.0, chis)], t0, rows, interpolation="sqrt"))
-    grid = _log_grid(0.001, 1.0, 300)
+    grid = log_grid(0.001, 1.0, 300)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     holds = {}
     for interp, color, asym in (("linear", "tab:red", "(ηχ)^−1/2 (C.2)"), ("sqrt", "tab:blue", "(η√χ)^−1/2 (D.2)")):
@@ -385,10 +388,10 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         rows += [(chi,) + x[:7] + (x[8], p) for x, p in zip(samples, potential)]
         print(f"[fig15] chi = {chi}: {len(samples)} samples, worst |sum - E0|/E0 = {worst:.2e}, lowest plastic potential {low:.3f} E0",
               flush=True)
-    _fig_note(fig, "η = 4, β = 1; " + PARAM_LINE)
+    fig_note(fig, "η = 4, β = 1; " + PARAM_LINE)
     fig.suptitle("Fig. 15: kinetic and potential energies of one collision (YADE)")
     save_figure(fig, outdir, "fig15_energies")
-    _write_csv(os.path.join(outdir, "fig15_energies.csv"),
+    write_csv(os.path.join(outdir, "fig15_energies.csv"),
                ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J", "overlap_m",
                 "hystereticForce_N", "plastic_potential_J"], rows)
     return dict(figure="long 15", collisions=len(cases), cases=cases,

@@ -1,77 +1,21 @@
-"""Regenerates the figures of the papers from YADE simulations and the closed form (run inside
-``yade``). Each function writes a CSV of the simulated points and a PNG with the simulation
-over the theory, prints progress, and returns the rows."""
-import csv
-import io
+"""Figs. 5-8 of the long paper: restitution with and without adhesion, sticking overlap and
+force-overlap loops, YADE pair collisions over the closed form (inside ``yade``). Each function
+writes a CSV of the simulated points and a PNG with the simulation over the theory, prints
+progress, and returns the rows."""
 import math
 import os
 import time
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from . import outputs, pair, params, theory  # noqa: E402
-
-# Fig. 5-8 parameters (docs/model.md §9): k1 = 1e2, kp = 5e2, kc = 1e2 N/m, radius 1.1 mm, 2000 kg/m3.
-PAPER = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)
-RADIUS, DENSITY = 1.1e-3, 2000.0
-
-
-def _m_r():
-    return params.sphere_mass(RADIUS, DENSITY) / 2
-
-
-PARAM_NOTE = f"k1 = {PAPER['k1']:g}, kp = {PAPER['kp']:g}, kc = {PAPER['kc']:g} N/m, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, γ0 = 0"
-
-
-def _fig_note(fig, text, fontsize=7.5):
-    """Parameters under the figure (a box inside a panel would hide data), wrapped at commas to the
-    figure's width; _note_rect(fig) then keeps the panels above it."""
-    width_pt, height_pt = fig.get_size_inches() * 72
-    per_line = max(20, int(0.92 * width_pt / (0.52 * fontsize)))  # about 0.52 em per character
-    lines, line = [], ""
-    for part in text.split(", "):
-        candidate = part if not line else line + ", " + part
-        if len(candidate) > per_line and line:
-            lines.append(line + ",")
-            line = part
-        else:
-            line = candidate
-    lines.append(line)
-    fig.text(0.5, 0.005, "\n".join(lines), ha="center", va="bottom", fontsize=fontsize, color="0.25", linespacing=1.25)
-    fig._meso_note_bottom = (len(lines) * 1.25 * fontsize + 4) / height_pt
-
-
-def _note_rect(fig):
-    """tight_layout's rect that leaves the note under the panels free."""
-    return (0, getattr(fig, "_meso_note_bottom", 0.03), 1, 1)
-
-
-def save_figure(fig, outdir, stem):
-    """Lays the figure out above its note, writes <outdir>/<stem>.png (atomically) and closes it."""
-    fig.tight_layout(rect=_note_rect(fig))
-    outputs.savefig_atomic(fig, os.path.join(outdir, stem + ".png"), dpi=150)
-    plt.close(fig)
-
-
-def _write_csv(path, header, rows):
-    text = io.StringIO(newline="")
-    w = csv.writer(text)
-    w.writerow(header)
-    w.writerows(rows)
-    outputs.write_atomic(path, text.getvalue())  # a stopped job leaves the old file or the new one
-
-
-def _progress(tag, i, n, t0):
-    print(f"[{tag}] {i}/{n} collisions, {time.time() - t0:.1f} s", flush=True)
-
+from .. import pair, params, theory
+from .common import (
+    DENSITY, PAPER, PARAM_NOTE, RADIUS, fig_note, pair_reduced_mass, plt, print_progress,
+    save_figure, write_csv,
+)
 
 def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     """e versus zeta = v_i/v_p with jump-in adhesion, fa from alpha at v_i = 0.01 m/s."""
     zetas = zetas or [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.1, 1.2, 1.5, 2, 3, 5]
-    m_r, a12, rows, t0 = _m_r(), RADIUS, [], time.time()
+    m_r, a12, rows, t0 = pair_reduced_mass(), RADIUS, [], time.time()
     fig, ax = plt.subplots(figsize=(6, 4.2))
     n = len(alphas) * len(zetas)
     for k, (alpha, color) in enumerate(zip(alphas, ("tab:red", "tab:blue"))):
@@ -93,16 +37,16 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
                                          fa=fa, kca=kca, adhesion="jumpIn").e
             rows.append((alpha, fa, z, z * v_p, r.e, e_th, int(r.stuck)))
             sim.append((z, r.e))
-            _progress("fig5", k * len(zetas) + j + 1, n, t0)
+            print_progress("fig5", k * len(zetas) + j + 1, n, t0)
         ax.plot(*zip(*sim), "o" if k == 0 else "s", mfc="none", color=color, label=f"YADE, α = {alpha}")
     ax.set_xscale("log")
     ax.set_xlabel("ζ = v_i / v_p")
     ax.set_ylabel("coefficient of restitution e")
     ax.set_title("Fig. 5: jump-in adhesion, η = 4, β = 1")
     ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 0.08))
-    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
+    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
     save_figure(fig, outdir, "fig5_restitution_adhesive")
-    _write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
+    write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
                ["alpha", "fa_N", "zeta", "v_inf_m_s", "e_yade", "e_theory", "stuck"], rows)
     return rows
 
@@ -111,7 +55,7 @@ def fig6_fig8(outdir, chis=None):
     """Fig. 6: e(chi) for fa = 0, eta = 4, beta = 1; Fig. 8: sticking overlap delta_c/deltaMax^p."""
     chis = chis or [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.34, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0,
                     1.05, 1.1, 1.15, 1.2, 1.37, 1.6, 2, 3, 5, 10]
-    m_r, a12, rows, t0 = _m_r(), RADIUS, [], time.time()
+    m_r, a12, rows, t0 = pair_reduced_mass(), RADIUS, [], time.time()
     eta, beta = 4.0, 1.0
     dmp = theory.delta_max_p(PAPER["k1"], PAPER["kp"], PAPER["phiF"], a12)
     for j, chi in enumerate(chis):
@@ -121,7 +65,7 @@ def fig6_fig8(outdir, chis=None):
         e_th = theory.restitution_fa0(chi, eta, beta)
         dc_th = theory.sticking_overlap(chi, eta, beta) if e_th == 0 else float("nan")
         rows.append((chi, v, r.e, e_th, int(r.stuck), r.final_overlap / dmp if r.stuck else float("nan"), dc_th))
-        _progress("fig6/8", j + 1, len(chis), t0)
+        print_progress("fig6/8", j + 1, len(chis), t0)
     grid = [10 ** (-3 + i * 4.0 / 800) for i in range(801)]
     fig, ax = plt.subplots(figsize=(6, 4.2))
     ax.plot([c for c in grid if c <= 1], [theory.restitution_fa0(c, eta, beta) for c in grid if c <= 1], "r-",
@@ -136,7 +80,7 @@ def fig6_fig8(outdir, chis=None):
     ax.set_ylabel("e")
     ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
     ax.legend()
-    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
+    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
     save_figure(fig, outdir, "fig6_restitution")
 
     lo, hi = theory.chi_c_b(eta, beta), theory.chi_c_c(eta, beta)
@@ -151,9 +95,9 @@ def fig6_fig8(outdir, chis=None):
     ax.set_ylabel("δ_c / δ_max^p")
     ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
     ax.legend()
-    _fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
+    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
     save_figure(fig, outdir, "fig8_sticking_overlap")
-    _write_csv(os.path.join(outdir, "fig6_restitution.csv"),
+    write_csv(os.path.join(outdir, "fig6_restitution.csv"),
                ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
                rows)
     return rows
@@ -161,7 +105,7 @@ def fig6_fig8(outdir, chis=None):
 
 def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
     """Force-overlap loops of single collisions (eta = 4, beta = 1, phiF = 0.05)."""
-    m_r, a12 = _m_r(), RADIUS
+    m_r, a12 = pair_reduced_mass(), RADIUS
     mat = dict(PAPER, phiF=phiF, density=DENSITY)
     dmp = theory.delta_max_p(PAPER["k1"], PAPER["kp"], phiF, a12)
     fig, axes = plt.subplots(2, 2, figsize=(8, 6.4))
@@ -186,8 +130,8 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
         print(f"[fig7] chi = {chi}: {'stuck' if r.stuck else 'e = %.4f' % r.e}", flush=True)
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("Fig. 7: force–overlap loops, η = 4, β = 1, φf = 0.05")
-    _fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
+    fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
     save_figure(fig, outdir, "fig7_force_overlap")
-    _write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),
+    write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),
                ["chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return rows

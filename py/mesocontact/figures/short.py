@@ -4,16 +4,19 @@ stiffness is kc there: kca = kc). YADE pair collisions over the closed form, ins
 import os
 import time
 
-from . import theory
-from .figures import DENSITY, PAPER, RADIUS, _fig_note, _m_r, _progress, _write_csv, plt, save_figure
-from .figures_appendix import _collide, _live, _log_grid
+from .. import theory
+from .appendix import collide_pair, log_grid, plot_live
+from .common import (
+    DENSITY, PAPER, RADIUS, fig_note, pair_reduced_mass, plt, print_progress, save_figure,
+    write_csv,
+)
 
 SHORT = dict(k1=100.0, kp=500.0, kc=100.0, phiF=PAPER["phiF"])
 FA = 5e-7  # N, Fig. 5
 
 
 def _e_theory(v, mat, fa):
-    return theory.pair_collision(v, mat["k1"], mat["kp"], mat["kc"], mat["phiF"], RADIUS, _m_r(), fa=fa,
+    return theory.pair_collision(v, mat["k1"], mat["kp"], mat["kc"], mat["phiF"], RADIUS, pair_reduced_mass(), fa=fa,
                                  kca=mat["kc"], adhesion="jumpIn" if fa > 0 else "none").e
 
 
@@ -23,10 +26,10 @@ def _run(tag, curves, t0):
     for label, mat, fa, speeds in curves:
         m = dict(mat, density=DENSITY, fa=fa, kca=mat["kc"], adhesion="jumpIn" if fa > 0 else "none")
         for v in speeds:
-            r = _collide(m, v, max_contact_times=15)
+            r = collide_pair(m, v, max_contact_times=15)
             rows.append((label, fa, v, r.e, _e_theory(v, mat, fa), int(r.stuck)))
-            _live(v=v, e_yade=r.e, e_theory=rows[-1][4])
-            _progress(tag, len(rows), n, t0)
+            plot_live(v=v, e_yade=r.e, e_theory=rows[-1][4])
+            print_progress(tag, len(rows), n, t0)
     return rows
 
 
@@ -48,21 +51,21 @@ def short_fig5(outdir, quick=False):
     """Irreversible elastic-adhesive (kp = k1) against elasto-plastic adhesive (kp = 5 k1) spheres,
     fa = 5e-7 N: one low-velocity sticking limit, a second sticking regime only with plasticity."""
     t0 = time.time()
-    speeds = [1e-4, 0.1, 2.0] if quick else _log_grid(1e-5, 3.0, 23)
-    v_fa = FA / (_m_r() * SHORT["kc"]) ** 0.5  # Eq. 19 of the short paper
+    speeds = [1e-4, 0.1, 2.0] if quick else log_grid(1e-5, 3.0, 23)
+    v_fa = FA / (pair_reduced_mass() * SHORT["kc"]) ** 0.5  # Eq. 19 of the short paper
     curves = [("elastic-adhesive (kp = k1)", dict(SHORT, kp=SHORT["k1"]), FA, speeds),
               ("elasto-plastic adhesive (kp = 5 k1)", SHORT, FA, speeds)]
     rows = _run("short fig5", curves, t0)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    _plot(ax, curves, rows, ("tab:blue", "tab:red"), _log_grid(1e-5, 3.0, 600))
+    _plot(ax, curves, rows, ("tab:blue", "tab:red"), log_grid(1e-5, 3.0, 600))
     ax.axvline(v_fa, color="0.5", lw=0.6, ls=":")
     ax.text(v_fa * 1.1, 0.05, f"v_f^a = {v_fa:.2g} m/s", fontsize=7, color="0.3")
     ax.set_ylim(-0.02, 1.05)
     ax.set_title(f"Short paper, Fig. 5: f_a = {FA:g} N")
     ax.legend(fontsize=7, loc="center left")
-    _fig_note(fig, PARAM_LINE)
+    fig_note(fig, PARAM_LINE)
     save_figure(fig, outdir, "short_fig5_elastic_vs_plastic")
-    _write_csv(os.path.join(outdir, "short_fig5_elastic_vs_plastic.csv"), HEADER, rows)
+    write_csv(os.path.join(outdir, "short_fig5_elastic_vs_plastic.csv"), HEADER, rows)
     return dict(figure="short 5", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows),
                 v_fa=v_fa)
 
@@ -72,7 +75,7 @@ def _low_sticking_edge(mat, fa, lo=1e-9, hi=3.0):
     closed form between lo (stuck) and the first rebound above it; None if it rebounds at lo."""
     if _e_theory(lo, mat, fa) > 0:
         return None
-    grid = _log_grid(lo, hi, 400)
+    grid = log_grid(lo, hi, 400)
     up = next((v for v in grid if _e_theory(v, mat, fa) > 0), None)
     if up is None:
         return hi  # stuck over the whole range
@@ -90,19 +93,19 @@ def short_fig6(outdir, quick=False, fas=(0.0, 5e-9, 5e-7, 5e-5, 5e-3, 0.1)):
     (within 1 %) over the whole range, its own sticking limit far below it."""
     t0 = time.time()
     fas = (0.0, 5e-9, 0.1) if quick else fas
-    speeds = [1e-3, 0.1] if quick else _log_grid(1e-5, 3.0, 15)
+    speeds = [1e-3, 0.1] if quick else log_grid(1e-5, 3.0, 15)
     curves = [(f"f_a = {fa:g} N", SHORT, fa, speeds) for fa in fas]
     rows = _run("short fig6", curves, t0)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     _plot(ax, curves, rows, ("k", "tab:cyan", "tab:green", "tab:orange", "tab:red", "tab:purple"),
-          _log_grid(1e-5, 3.0, 600))
+          log_grid(1e-5, 3.0, 600))
     ax.set_ylim(-0.02, 1.05)
     ax.set_title("Short paper, Fig. 6: the strength of the non-contact adhesion")
     ax.legend(fontsize=6, loc="center left", ncol=2)
-    _fig_note(fig, "kp = 500 N/m; " + PARAM_LINE)
+    fig_note(fig, "kp = 500 N/m; " + PARAM_LINE)
     save_figure(fig, outdir, "short_fig6_adhesion_strength")
-    _write_csv(os.path.join(outdir, "short_fig6_adhesion_strength.csv"), HEADER, rows)
-    grid = _log_grid(1e-5, 3.0, 600)
+    write_csv(os.path.join(outdir, "short_fig6_adhesion_strength.csv"), HEADER, rows)
+    grid = log_grid(1e-5, 3.0, 600)
     summary = []
     for fa in fas:
         on_fa0 = max(abs(_e_theory(v, SHORT, fa) - _e_theory(v, SHORT, 0.0)) / max(_e_theory(v, SHORT, 0.0), 1e-300)

@@ -11,7 +11,8 @@ import json
 import os
 import time
 
-from . import figures, figures_appendix as fa, figures_short as fs, outputs
+from .. import outputs
+from . import appendix as fa, long as figures, short as fs
 
 LONG_PAIR = (5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)
 LONG_TABLET = (16, 17, 18, 19)
@@ -65,7 +66,7 @@ def figure(paper, number, out, quick=False, tablet_out=None):
     if key in PAIR:
         summary = PAIR[key](out, quick)
     else:
-        from . import campaign  # the tablet's figures: their own cached runs and outputs
+        from .. import campaign  # the tablet's figures: their own cached runs and outputs
         tablet = tablet_out or os.path.join(out, "tablet")
         campaign.main(f"fig{number}", ["--out", tablet] + (["--quick"] if quick else []))
         summary = dict(figure=f"long {number}", outputs=tablet, note="see docs/tablet/README.md")
