@@ -51,6 +51,16 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     return rows
 
 
+def _finish_fa0(fig, ax, outdir, stem, ylabel, title):
+    """Labels, legend, the parameter note (f_a = 0) and the file of a panel over χ."""
+    ax.set_xlabel("χ = v_i / v_p")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend()
+    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
+    save_figure(fig, outdir, stem)
+
+
 def fig6_fig8(outdir, chis=None):
     """Fig. 6: e(chi) for fa = 0, eta = 4, beta = 1; Fig. 8: sticking overlap delta_c/deltaMax^p."""
     chis = chis or [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.34, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0,
@@ -76,12 +86,7 @@ def fig6_fig8(outdir, chis=None):
             lw=0.6, label="1 − ηχ/2")
     ax.plot([r[0] for r in rows], [r[2] for r in rows], "ko", mfc="none", label="YADE")
     ax.set_xscale("log")
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("e")
-    ax.set_title("Fig. 6: f_a = 0, η = 4, β = 1")
-    ax.legend()
-    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    save_figure(fig, outdir, "fig6_restitution")
+    _finish_fa0(fig, ax, outdir, "fig6_restitution", "e", "Fig. 6: f_a = 0, η = 4, β = 1")
 
     lo, hi = theory.chi_c_b(eta, beta), theory.chi_c_c(eta, beta)
     fig, ax = plt.subplots(figsize=(6, 4.2))
@@ -91,12 +96,7 @@ def fig6_fig8(outdir, chis=None):
     stuck = [(r[0], r[5]) for r in rows if r[4]]
     if stuck:
         ax.plot(*zip(*stuck), "ko", mfc="none", label="YADE")
-    ax.set_xlabel("χ = v_i / v_p")
-    ax.set_ylabel("δ_c / δ_max^p")
-    ax.set_title("Fig. 8: sticking overlap, η = 4, β = 1")
-    ax.legend()
-    fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, f_a = 0")
-    save_figure(fig, outdir, "fig8_sticking_overlap")
+    _finish_fa0(fig, ax, outdir, "fig8_sticking_overlap", "δ_c / δ_max^p", "Fig. 8: sticking overlap, η = 4, β = 1")
     write_csv(os.path.join(outdir, "fig6_restitution.csv"),
                ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
                rows)
