@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq, least_squares
 
+from . import checks as _checks
 from . import params as _params
 from . import theory as _theory
 
@@ -493,7 +494,7 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
         raise ValueError(f"free = {free}: a parameter is named twice")
     if adhesion == "none" and "fa" in free:
         raise ValueError("free parameter 'fa' needs adhesion 'reversible' or 'jumpIn' (with adhesion 'none' fa does nothing)")
-    if adhesion != "none" and not (_theory._number(kca) and kca > 0):
+    if adhesion != "none" and not (_checks.is_number(kca) and kca > 0):
         raise ValueError(f"kca = {kca!r} is invalid: must be > 0 with adhesion {adhesion!r} (inf allowed for 'jumpIn')")
     if adhesion == "reversible" and not math.isfinite(kca):
         raise ValueError("kca = inf is invalid with adhesion 'reversible': the pull-in range fa/kca needs a finite kca")
@@ -513,7 +514,7 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
         raise DataError(f"{data.source}: {len(data.v)} points cannot fix {len(free)} free parameters ({', '.join(free)})")
     values.setdefault("kp", values["k1"] * 5.0)
     values.setdefault("phiF", 0.1)
-    _theory._law(values["k1"], values["kp"], values["phiF"], a12)
+    _theory.check_law(values["k1"], values["kp"], values["phiF"], a12)
     if values["kp"] == values["k1"] and "kp" in free:
         values["kp"] = values["k1"] * 1.5
     speeds = len(np.unique(data.v))
@@ -807,10 +808,10 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
 def from_groups(eta, beta, phiF, v_p, radius, density, against="particle"):
     """k1, kp, kc, phiF that give plasticity eta, adhesivity beta, plasticity depth phiF and the
     plastic-limit speed v_p (Eq. 19 with fa = 0) for the collision of `against`."""
-    _theory._groups(eta, beta)
-    _theory._positive("eta", eta)
-    _theory._positive("v_p", v_p)
-    if not (_theory._number(phiF) and 0 < phiF <= 1):
+    _theory.check_groups(eta, beta)
+    _checks.positive("eta", eta)
+    _checks.positive("v_p", v_p)
+    if not (_checks.is_number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
     m_r, a12 = geometry(radius, density, against)
     k1 = m_r * (_phiF_for(v_p, 1.0, eta, 1.0, a12) / phiF) ** 2  # _phiF_for scales as 1/sqrt(k1/m_r)
@@ -836,10 +837,10 @@ def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, aga
     contact lasting t_c (time with positive overlap), for given eta and beta (what MercuryDPM's
     users set from e and t_c for a linear spring). The speed is placed on the decreasing branch of
     e(chi) below the sticking window."""
-    _theory._positive("t_c", t_c)
-    _theory._positive("v", v)
-    _theory._positive("eta", eta)
-    if not (_theory._number(e) and 0 < e < 1):
+    _checks.positive("t_c", t_c)
+    _checks.positive("v", v)
+    _checks.positive("eta", eta)
+    if not (_checks.is_number(e) and 0 < e < 1):
         raise ValueError(f"e = {e!r} is invalid: must lie in (0, 1)")
     e_min = _theory.restitution_fa0(1.0, eta, beta, interpolation)
     # the branch from chi = 0 (e = 1) down to the first chi where e = 0 or chi = 1

@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 from . import loop as _loop
 from . import params as _params
 from . import scene as _scene
-from .theory import _number
+from . import checks as _checks
+from .checks import is_number
 from . import theory as _theory
 
 try:
@@ -62,9 +63,9 @@ def _materials(material, material2, density):
 
 
 def _check_step(dt, gap):
-    if dt is not None and not (_number(dt) and math.isfinite(dt) and dt > 0):
+    if dt is not None and not (is_number(dt) and math.isfinite(dt) and dt > 0):
         raise ValueError(f"dt = {dt!r} is invalid: must be a finite number > 0 [s]")
-    if gap is not None and not (_number(gap) and math.isfinite(gap) and gap >= 0):
+    if gap is not None and not (is_number(gap) and math.isfinite(gap) and gap >= 0):
         raise ValueError(f"gap = {gap!r} is invalid: must be a finite number >= 0 [m] (the pair starts apart)")
 
 
@@ -96,11 +97,11 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     non-contact force starts. dt defaults to the contact time of kp over steps_per_contact.
     The scene replaces whatever O holds (O.reset(); O.tags survive).
     """
-    _params._positive("radius1", radius1)
-    _params._positive("v_inf", v_inf)
+    _checks.positive("radius1", radius1)
+    _checks.positive("v_inf", v_inf)
     radius2 = radius1 if radius2 is None else radius2
-    _params._positive("radius2", radius2)
-    _params._positive("steps_per_contact", steps_per_contact)
+    _checks.positive("radius2", radius2)
+    _checks.positive("steps_per_contact", steps_per_contact)
     _check_step(dt, gap)
     _scene.reset()
     m1, m2, mixed = _materials(material, material2, density)
@@ -144,14 +145,14 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     and the reduced mass is the sphere's mass. spin and tangential_velocity set the sphere's
     initial angular and tangential velocity.
     """
-    _params._positive("radius", radius)
+    _checks.positive("radius", radius)
     if not v_inf >= 0:
         raise ValueError(f"v_inf = {v_inf!r} is invalid: must be >= 0")
     if kind not in ("box", "wall", "facet"):
         raise ValueError(f"kind = {kind!r} is invalid: must be 'box', 'wall' or 'facet'")
     if six_d and kind == "wall":
         raise ValueError("six_d = True needs kind 'box' or 'facet': YADE has no ScGeom6D functor for Wall")
-    _params._positive("steps_per_contact", steps_per_contact)
+    _checks.positive("steps_per_contact", steps_per_contact)
     _check_step(dt, gap)
     _scene.reset()
     m, w, mixed = _materials(material, wall_material, density)

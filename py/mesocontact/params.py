@@ -2,7 +2,7 @@
 import inspect
 import math
 
-from .theory import _nonnegative, _number, _positive, _positive_or_inf
+from .checks import is_number, nonnegative, positive, positive_or_inf
 
 
 def _representable(f, zero_ok=False):
@@ -27,8 +27,8 @@ def _zero_ok(f):
 
 def sphere_mass(radius, density):
     """Mass of a sphere [kg]."""
-    _positive("radius", radius)
-    _positive("density", density)
+    positive("radius", radius)
+    positive("density", density)
     try:
         m = 4.0 / 3.0 * math.pi * radius ** 3 * density
     except OverflowError:
@@ -41,34 +41,34 @@ def sphere_mass(radius, density):
 @_representable
 def reduced_mass(m1, m2=math.inf):
     """m1 m2/(m1 + m2); against a wall (m2 = inf) the sphere's own mass [kg]."""
-    _positive("m1", m1)
-    _positive_or_inf("m2", m2)
+    positive("m1", m1)
+    positive_or_inf("m2", m2)
     return m1 if math.isinf(m2) else m1 * m2 / (m1 + m2)
 
 
 @_representable
 def reduced_radius(a1, a2=math.inf):
     """a12 = 2 a1 a2/(a1 + a2); against a wall (a2 = inf) 2 a1 [m]."""
-    _positive("a1", a1)
-    _positive_or_inf("a2", a2)
+    positive("a1", a1)
+    positive_or_inf("a2", a2)
     return 2.0 * a1 if math.isinf(a2) else 2.0 * a1 * a2 / (a1 + a2)
 
 
 @_zero_ok
 def fa_from_alpha(alpha, k1, m_r, v_i):
     """Non-contact force from the adhesivity alpha = sqrt(fa^2/(k1 m_r v_i^2)) (Eq. 27c) [N]."""
-    _nonnegative("alpha", alpha)
-    _positive("k1", k1)
-    _positive("m_r", m_r)
-    _nonnegative("v_i", v_i)
+    nonnegative("alpha", alpha)
+    positive("k1", k1)
+    positive("m_r", m_r)
+    nonnegative("v_i", v_i)
     return alpha * math.sqrt(k1 * m_r) * v_i
 
 
 @_representable
 def contact_time(k, m_r):
     """Half period pi sqrt(m_r/k) of a linear contact of stiffness k [s]."""
-    _positive("k", k)
-    _positive("m_r", m_r)
+    positive("k", k)
+    positive("m_r", m_r)
     return math.pi * math.sqrt(m_r / k)
 
 
@@ -87,11 +87,11 @@ def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contac
     a'12 = a/2 (10 k/m with lever 'a12'; pass 4 kr, 4 ko for that convention). The period of the
     fastest one is resolved by 2 steps_per_contact steps; gamma: the largest dashpot [kg/s].
     """
-    _positive("kp", kp)
-    _positive("m_min", m_min)
-    _positive("steps_per_contact", steps_per_contact)
+    positive("kp", kp)
+    positive("m_min", m_min)
+    positive("steps_per_contact", steps_per_contact)
     for name, v in (("kt", kt), ("kr", kr), ("ko", ko), ("gamma", gamma)):
-        _nonnegative(name, v)
+        nonnegative(name, v)
     m_r = 0.5 * m_min
     omega2 = max(kp / m_r, 3.5 * kt / m_r, 2.5 * kr / m_min, 2.5 * ko / m_min)
     dt = math.pi / math.sqrt(omega2) / steps_per_contact
@@ -180,33 +180,33 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
       rolling and torsion elements (docs/tangential.md).
     Raises ValueError naming the input that no parameters reproduce."""
     from .theory import ADHESION_MODES, contact_duration, pair_collision
-    _positive("radius", radius)
-    _positive("density", density)
-    _positive("impact_speed", impact_speed)
-    if not (_number(restitution) and 0 < restitution < 1):
+    positive("radius", radius)
+    positive("density", density)
+    positive("impact_speed", impact_speed)
+    if not (is_number(restitution) and 0 < restitution < 1):
         raise ValueError(f"restitution = {restitution!r} is invalid: must lie in (0, 1) (1 has no plasticity, 0 is the sticking regime)")
-    _positive("contact_time", contact_time)
-    _nonnegative("kc_over_kp", kc_over_kp)
-    _nonnegative("fa", fa)
+    positive("contact_time", contact_time)
+    nonnegative("kc_over_kp", kc_over_kp)
+    nonnegative("fa", fa)
     if kca is not None:
-        _positive("kca", kca)
+        positive("kca", kca)
     if adhesion not in ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
     if limit not in (None, True, False):
         raise ValueError(f"limit = {limit!r} is invalid: None, True or False")
     radius2 = radius if radius2 is None else radius2
-    _positive_or_inf("radius2", radius2)
+    positive_or_inf("radius2", radius2)
     m_r = reduced_mass(sphere_mass(radius, density), math.inf if math.isinf(radius2) else sphere_mass(radius2, density))
     a12 = reduced_radius(radius, radius2)
     if (phiF is None) == (plastic_overlap is None):
         raise ValueError("phiF, plastic_overlap: give exactly one (phiF = plastic_overlap/a12)")
     if plastic_overlap is not None:
-        _positive("plastic_overlap", plastic_overlap)
+        positive("plastic_overlap", plastic_overlap)
         phiF = plastic_overlap / a12
-    if not (_number(phiF) and 0 < phiF <= 1):
+    if not (is_number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1] (plastic_overlap up to a12 = {a12!r})")
     if pull_off_force is not None:
-        _positive("pull_off_force", pull_off_force)
+        positive("pull_off_force", pull_off_force)
 
     def kc_of(kp):
         if pull_off_force is None:

@@ -4,7 +4,7 @@ import math
 from yade import O
 
 from .scene_names import BRANCHES  # noqa: F401  (MesoPhys.branch's names, in branchIndex order)
-from .theory import _number
+from .checks import is_number
 
 
 def reset():
@@ -62,7 +62,7 @@ def set_detection(margin=1.2):
     neither may be hertzian). Call it after O.engines, O.materials and the spheres are in place;
     returns the factor (1.0 when no material is adhesive, leaving the engines unchanged)."""
     from yade import wrapper as w
-    if not (_number(margin) and margin >= 1):
+    if not (is_number(margin) and margin >= 1):
         raise ValueError(f"margin = {margin!r} is invalid: must be a number >= 1")
     gap = adhesion_range()
     radii = [b.shape.radius for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere)]
@@ -123,7 +123,7 @@ def time_step(safety=0.1):
     0.096 and 0.128 of the bound stay within what a 1e-6 perturbation of the step changes; the
     last contact chain of a pull to rupture is resolved only at 0.032."""
     from yade import wrapper as w
-    if not (_number(safety) and 0 < safety <= 1):
+    if not (is_number(safety) and 0 < safety <= 1):
         raise ValueError(f"safety = {safety!r} is invalid: must lie in (0, 1]")
     smallest, walls, count = {}, {}, {}
     for b in O.bodies:

@@ -10,31 +10,12 @@ Two layers:
 """
 import functools
 import math
-import numbers
 from dataclasses import dataclass
+
+from .checks import is_number, nonnegative, positive, positive_or_inf
 
 ADHESION_MODES = ("none", "reversible", "jumpIn")
 K2_INTERPOLATIONS = ("linear", "sqrt")
-
-
-def _number(value):
-    """A real number (numpy's included), not a bool: dt=True is a slip, not 1 s."""
-    return isinstance(value, numbers.Real) and not isinstance(value, bool)
-
-
-def _positive(name, value):
-    if not (_number(value) and math.isfinite(value) and value > 0):
-        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
-
-
-def _nonnegative(name, value):
-    if not (_number(value) and math.isfinite(value) and value >= 0):
-        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number >= 0")
-
-
-def _positive_or_inf(name, value):
-    if not (_number(value) and value > 0):  # NaN fails too
-        raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
 
 
 def _in_range(f):
@@ -62,20 +43,20 @@ def _in_range(f):
     return checked
 
 
-def _groups(eta, beta=0.0, interpolation="linear"):
-    _nonnegative("eta", eta)
-    _nonnegative("beta", beta)
+def check_groups(eta, beta=0.0, interpolation="linear"):
+    nonnegative("eta", eta)
+    nonnegative("beta", beta)
     if interpolation not in K2_INTERPOLATIONS:
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
 
 
-def _law(k1, kp, phiF, a12):
-    _positive("k1", k1)
-    if not (_number(kp) and math.isfinite(kp) and kp >= k1):
+def check_law(k1, kp, phiF, a12):
+    positive("k1", k1)
+    if not (is_number(kp) and math.isfinite(kp) and kp >= k1):
         raise ValueError(f"kp = {kp!r} is invalid: must be a finite number >= k1")
-    if not (_number(phiF) and 0 < phiF <= 1):
+    if not (is_number(phiF) and 0 < phiF <= 1):
         raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
-    _positive("a12", a12)
+    positive("a12", a12)
 
 
 # --- fa = 0, dimensionless: eta = (kp - k1)/k1, beta = kc/k1, chi = v_i/v_p (Eq. 27) -------
@@ -83,8 +64,8 @@ def _law(k1, kp, phiF, a12):
 @_in_range
 def k2_over_k1(chi, eta, interpolation="linear"):
     """k2(deltaMax)/k1 at chi = deltaMax/deltaMax^p (Eq. 29; Eq. D.1 for 'sqrt'), capped at 1 + eta."""
-    _nonnegative("chi", chi)
-    _groups(eta, 0.0, interpolation)
+    nonnegative("chi", chi)
+    check_groups(eta, 0.0, interpolation)
     x = min(chi, 1.0)
     return 1.0 + eta * (math.sqrt(x) if interpolation == "sqrt" else x)
 
@@ -94,8 +75,8 @@ def k2_over_k1(chi, eta, interpolation="linear"):
 @_in_range
 def en_squared(chi, eta, beta, interpolation="linear"):
     """Signed e_n^2 for fa = 0 (argument of the roots of Eqs. 32 and 33); negative means sticking."""
-    _nonnegative("chi", chi)
-    _groups(eta, beta, interpolation)
+    nonnegative("chi", chi)
+    check_groups(eta, beta, interpolation)
     if chi <= 1.0:
         r = k2_over_k1(chi, eta, interpolation)  # k2/k1
         # E_f/E_i = k1/k2 - kc (k2 - k1)^2/(k1 k2 (k2 + kc))  (Eq. 21 with fa = 0)
@@ -113,8 +94,8 @@ def restitution_fa0(chi, eta, beta, interpolation="linear"):
 def low_velocity_restitution(chi, eta):
     """Small-chi approximation e ~ 1 - eta chi/2 (Fig. 6); only for eta chi/2 < 1 (beyond it the
     line is negative and the approximation meaningless)."""
-    _nonnegative("chi", chi)
-    _groups(eta)
+    nonnegative("chi", chi)
+    check_groups(eta)
     if not 0.5 * eta * chi < 1:
         raise ValueError(f"chi = {chi!r} is invalid with eta = {eta!r}: the small-chi line needs eta chi/2 < 1")
     return 1.0 - 0.5 * eta * chi
@@ -123,22 +104,22 @@ def low_velocity_restitution(chi, eta):
 @_in_range
 def chi_c_b(eta, beta):
     """Lower end of the sticking window, Eq. 34 (requires beta > 0)."""
-    _positive("eta", eta)
-    _positive("beta", beta)
+    positive("eta", eta)
+    positive("beta", beta)
     return (1.0 + math.sqrt(1.0 + 4.0 * beta * (1.0 + beta))) / (2.0 * beta * eta)
 
 
 @_in_range
 def chi_c_c(eta, beta):
     """Upper end of the sticking window, Eq. 37."""
-    _groups(eta, beta)
+    check_groups(eta, beta)
     return math.sqrt(1.0 - 1.0 / (1.0 + eta) + beta * eta ** 2 / ((1.0 + eta) * (1.0 + beta + eta)))
 
 
 @_in_range
 def beta_star(eta):
     """Smallest adhesivity for which pairs can stick, Eq. 40b (eta > 1)."""
-    _groups(eta)
+    check_groups(eta)
     if not eta > 1:
         raise ValueError(f"eta = {eta!r} is invalid: beta* exists only for eta > 1")
     return 1.0 / (eta - 1.0)
@@ -151,7 +132,7 @@ def sticking_overlap(chi, eta, beta, interpolation="linear"):
     The overlap where the kinetic energy vanishes on the -kc branch (the lower turning point of
     the oscillation that follows). Raises ValueError where the pair does not stick.
     """
-    _positive("beta", beta)
+    positive("beta", beta)
     e2 = en_squared(chi, eta, beta, interpolation)
     if e2 > 0:
         raise ValueError(f"chi = {chi!r}: the pair rebounds (e = {math.sqrt(e2):.6g}), no sticking overlap")
@@ -161,8 +142,8 @@ def sticking_overlap(chi, eta, beta, interpolation="linear"):
 @_in_range
 def max_sticking_overlap(eta, beta):
     """delta_c(chi = 1)/deltaMax^p, Eq. 39 (where the pair sticks at chi = 1: beta eta^2 >= 1 + eta + beta)."""
-    _groups(eta, beta)
-    _positive("beta", beta)
+    check_groups(eta, beta)
+    positive("beta", beta)
     if beta * eta ** 2 < 1.0 + eta + beta:
         raise ValueError(f"beta = {beta!r} is invalid with eta = {eta!r}: the pair does not stick at chi = 1 (needs beta eta^2 >= 1 + eta + beta)")
     return math.sqrt((beta * eta ** 2 - (1.0 + eta + beta)) / (beta * (1.0 + eta) * (1.0 + eta + beta)))
@@ -172,9 +153,9 @@ def max_sticking_overlap(eta, beta):
 def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
     """Large-chi (chi <= 1, eta chi >> 1) asymptotes: (eta chi)^-1/2 (C.2), sqrt(1/(eta chi) - beta)
     (C.3); for 'sqrt' interpolation sqrt(eta)^-1 chi^-1/4-type decay (D.2)."""
-    _positive("chi", chi)
-    _groups(eta, beta, interpolation)
-    _positive("eta", eta)
+    positive("chi", chi)
+    check_groups(eta, beta, interpolation)
+    positive("eta", eta)
     if interpolation == "sqrt":
         return 1.0 / math.sqrt(eta * math.sqrt(chi))
     return math.sqrt(max(1.0 / (eta * chi) - beta, 0.0))
@@ -184,8 +165,8 @@ def restitution_asymptote(chi, eta, beta=0.0, interpolation="linear"):
 def widened_kp(k1, kp, phiF, phiF_new):
     """Appendix A, Eq. A.3: limit stiffness kp' for a wider plastic range phiF' > phiF that keeps
     the low-overlap behaviour."""
-    _law(k1, kp, phiF, 1.0)
-    if not (_number(phiF_new) and 0 < phiF_new <= 1):
+    check_law(k1, kp, phiF, 1.0)
+    if not (is_number(phiF_new) and 0 < phiF_new <= 1):
         raise ValueError(f"phiF_new = {phiF_new!r} is invalid: must lie in (0, 1]")
     A = (kp - k1) ** 2 / kp
     B = phiF_new / phiF
@@ -213,15 +194,15 @@ class PairOutcome:
 @_in_range
 def delta_max_p(k1, kp, phiF, a12):
     """Limit overlap kp/(kp - k1) phiF a12, Eq. 10 [m] (inf when kp == k1)."""
-    _law(k1, kp, phiF, a12)
+    check_law(k1, kp, phiF, a12)
     return math.inf if kp == k1 else kp / (kp - k1) * phiF * a12
 
 
 @_in_range
 def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
     """v_p of Eq. 19: 1/2 m_r v_p^2 = 1/2 k1 dmp^2 - fa dmp [m/s]."""
-    _positive("m_r", m_r)
-    _nonnegative("fa", fa)
+    positive("m_r", m_r)
+    nonnegative("fa", fa)
     dmp = delta_max_p(k1, kp, phiF, a12)
     return math.sqrt(max(dmp * (k1 * dmp - 2.0 * fa), 0.0) / m_r)
 
@@ -235,12 +216,12 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
     fa [N]. adhesion: 'none', 'reversible' (pull-in and pull-off along -kca delta - fa) or
     'jumpIn' (no pull-in; -fa from first touch; pull-off tail after contact).
     """
-    _positive("v_inf", v_inf)
-    _positive("m_r", m_r)
-    _law(k1, kp, phiF, a12)
-    _nonnegative("kc", kc)
-    _nonnegative("fa", fa)
-    _positive_or_inf("kca", kca)
+    positive("v_inf", v_inf)
+    positive("m_r", m_r)
+    check_law(k1, kp, phiF, a12)
+    nonnegative("kc", kc)
+    nonnegative("fa", fa)
+    positive_or_inf("kca", kca)
     if adhesion not in ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
     if interpolation not in K2_INTERPOLATIONS:
@@ -277,10 +258,10 @@ def pair_collision(v_inf, k1, kp, kc, phiF, a12, m_r, fa=0.0, kca=math.inf, adhe
 def max_overlap(v_i, k1, kp, phiF, a12, m_r, fa=0.0):
     """Largest overlap of a head-on collision with contact speed v_i, without viscosity [m]:
     Eq. 20b on the loading branch k1; beyond deltaMax^p along the limit branch kp (delta - phiF a12)."""
-    _nonnegative("v_i", v_i)
-    _law(k1, kp, phiF, a12)
-    _positive("m_r", m_r)
-    _nonnegative("fa", fa)
+    nonnegative("v_i", v_i)
+    check_law(k1, kp, phiF, a12)
+    positive("m_r", m_r)
+    nonnegative("fa", fa)
     E_i = 0.5 * m_r * v_i ** 2
     d = (fa + math.sqrt(fa * fa + k1 * m_r * v_i ** 2)) / k1  # Eq. 20b: 1/2 k1 d^2 - fa d = E_i
     dmp = delta_max_p(k1, kp, phiF, a12)
@@ -294,9 +275,9 @@ def max_overlap(v_i, k1, kp, phiF, a12, m_r, fa=0.0):
 @_in_range
 def impact_velocity_for_chi(chi, k1, kp, phiF, a12, m_r, fa=0.0):
     """Approach speed at contact v_i that reaches deltaMax = chi deltaMax^p (inverse of Eq. 20b) [m/s]."""
-    _nonnegative("chi", chi)
-    _positive("m_r", m_r)
-    _nonnegative("fa", fa)
+    nonnegative("chi", chi)
+    positive("m_r", m_r)
+    nonnegative("fa", fa)
     dmp = delta_max_p(k1, kp, phiF, a12)
     d = chi * dmp
     v = math.sqrt(max(d * (k1 * d - 2.0 * fa), 0.0) / m_r)

@@ -20,7 +20,7 @@ from .common import (  # noqa: F401
     PROTOCOL, PULL_SPEED, QUICK, RATE_PERIODS, SLOW, TENSION_AMPLITUDES, _csv_text, _protocol_of,
     cycle_peaks, is_master, mpy, prepare, read_csv, root, run_dir, run_name, use_mpi,)
 from .plots import (  # noqa: F401
-    AMPLITUDE_COLOURS, PAPER_LARGEST, _arrow, _plot_compression, _plot_pull, _plot_rates,
+    AMPLITUDE_COLOURS, PAPER_LARGEST, _arrow, plot_compression, plot_pull, plot_rates,
     plot_cycles,)
 from .runs import (  # noqa: F401
     FACTOR_VARIANTS, FIG19_DX, PERTURBED, PERTURBED_MORE, TIMESTEP_FACTORS, TIMESTEP_PULL_UNTIL,

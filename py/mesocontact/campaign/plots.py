@@ -4,7 +4,7 @@ from .. import outputs as _out
 from .. import uniaxial as _uni
 
 
-def _plot_rates(table, periods, png):
+def plot_rates(table, periods, png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -84,7 +84,7 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
     plt.close(fig)
 
 
-def _plot_compression(rows, snaps, png):
+def plot_compression(rows, snaps, png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -101,7 +101,7 @@ def _plot_compression(rows, snaps, png):
     plt.close(fig)
 
 
-def _plot_pull(rows, events, png):
+def plot_pull(rows, events, png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

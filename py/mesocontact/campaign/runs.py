@@ -20,7 +20,7 @@ from .common import (
     PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, _protocol_of, cycle_peaks,
     is_master, mpy as _mpy, prepare, read_csv, root, run_dir, run_name,
 )
-from .plots import _plot_compression, _plot_pull, _plot_rates, plot_cycles
+from .plots import plot_compression, plot_cycles, plot_pull, plot_rates
 
 
 def _test(progress):
@@ -153,7 +153,7 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
             b.copy_from(run_dir(outdir, name, quick))
         b.write_text("rates.csv", text)
         b.write_json("rates.json", summary)
-        _plot_rates(table, periods, b.path("rates.png"))
+        plot_rates(table, periods, b.path("rates.png"))
     return summary
 
 
@@ -405,7 +405,7 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
     with bundle:
         bundle.write_text(tag + ".csv", _csv_text(rows))
         bundle.write_json(tag + ".json", summary)
-        _plot_pull(rows, events, bundle.path(tag + ".png"))
+        plot_pull(rows, events, bundle.path(tag + ".png"))
     return summary
 
 
@@ -457,7 +457,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
     with bundle:
         bundle.write_text(tag + ".csv", _csv_text(rows))
         bundle.write_json(tag + ".json", summary)
-        _plot_compression(rows, snaps, bundle.path(tag + ".png"))
+        plot_compression(rows, snaps, bundle.path(tag + ".png"))
     return summary
 
 

@@ -1,0 +1,24 @@
+"""Argument checks shared by the package's plain-Python and YADE-side helpers: a wrong value is a
+ValueError naming the argument and the range it must lie in (plain Python, no YADE)."""
+import math
+import numbers
+
+
+def is_number(value):
+    """A real number (numpy's included), not a bool: dt=True is a slip, not 1 s."""
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
+def positive(name, value):
+    if not (is_number(value) and math.isfinite(value) and value > 0):
+        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
+
+
+def nonnegative(name, value):
+    if not (is_number(value) and math.isfinite(value) and value >= 0):
+        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number >= 0")
+
+
+def positive_or_inf(name, value):
+    if not (is_number(value) and value > 0):  # NaN fails too
+        raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
