@@ -24,7 +24,7 @@ drives a collider of its own that the scene does not run.
 from yade import O
 from yade import wrapper as w
 
-from .scene import py_runner
+from .loop import runner
 
 _KEPT = {"restored": 0, "collisions": 0, "reallocations": 0, "moved": 0, "sent": 0, "received": 0}
 _ARRIVING = []  # bytes of contacts sent by other ranks with the bodies mpy moved here
@@ -136,7 +136,7 @@ def follow_master_bodies(mpy):
             s.pos = s.pos + s.vel * dt  # NewtonIntegrator's leapfrog for a body without forces
 
     at = next(k for k, e in enumerate(engines) if isinstance(e, w.NewtonIntegrator))
-    O.engines = engines[:at + 1] + [py_runner(follow, 1, "followMaster")] + engines[at + 1:]
+    O.engines = engines[:at + 1] + [runner(follow, 1, "followMaster")] + engines[at + 1:]
     return ids
 
 

@@ -12,7 +12,6 @@ from . import loop as _loop
 from . import params as _params
 from . import scene as _scene
 from . import checks as _checks
-from .checks import is_number
 from . import theory as _theory
 
 try:
@@ -63,9 +62,9 @@ def _materials(material, material2, density):
 
 
 def _check_step(dt, gap):
-    if dt is not None and not (is_number(dt) and math.isfinite(dt) and dt > 0):
+    if dt is not None and not (_checks.is_number(dt) and math.isfinite(dt) and dt > 0):
         raise ValueError(f"dt = {dt!r} is invalid: must be a finite number > 0 [s]")
-    if gap is not None and not (is_number(gap) and math.isfinite(gap) and gap >= 0):
+    if gap is not None and not (_checks.is_number(gap) and math.isfinite(gap) and gap >= 0):
         raise ValueError(f"gap = {gap!r} is invalid: must be a finite number >= 0 [m] (the pair starts apart)")
 
 
@@ -251,6 +250,7 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     check_every = max(1, int(0.02 * s.contact_time / O.dt))
     limit = O.iter + steps
     state = dict(scene=s, trace=trace if record else None, low=math.inf, separated=False, touched=False)
+    # the watcher runs inside YADE's loop (one PyRunner), so that a collision costs one O.run()
     watcher = _loop.runner(lambda: _watch(state), 1 if record else check_every, "pairWatcher")
     O.engines = O.engines + [watcher]
     try:
@@ -269,9 +269,6 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
         return PairResult(0.0, True, state["low"], O.iter, trace)
     finally:
         O.engines = [e for e in O.engines if e is not watcher]
-
-
-# The watcher runs inside YADE's loop (one PyRunner) so that a collision costs one O.run().
 
 
 def _run_until(iteration):

@@ -16,12 +16,6 @@ def reset():
         O.tags[k] = v
 
 
-def py_runner(fn, period, label):
-    """A PyRunner calling fn every ``period`` steps (``mesocontact.loop.runner``)."""
-    from .loop import runner
-    return runner(fn, period, label)
-
-
 def engines(gravity=(0, 0, -9.81)):
     """The engine loop of a scene of spheres and boxes with the meso law, the collider and the
     integrator labelled as yade.mpy looks them up (``collider``, ``newton``)."""

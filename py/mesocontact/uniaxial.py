@@ -27,6 +27,7 @@ try:
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.uniaxial needs YADE: run it inside `yade`") from _exc
 
+from . import loop as _loop
 from . import scene as _scene
 from . import tablet as _tablet
 
@@ -93,7 +94,7 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
     target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
-    _before_newton([_scene.py_runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
+    _before_newton([_loop.runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
     scale = _tablet.KP * _tablet.D0
 
     def measure():
@@ -210,7 +211,7 @@ class Test:
         energy_balance() compares them."""
         O.trackEnergy = True
         self._work = _WallWork((self.left, self.right))
-        O.engines = O.engines + [_scene.py_runner(self._work, 1, "wallwork")]
+        O.engines = O.engines + [_loop.runner(self._work, 1, "wallwork")]
 
     def energy_balance(self):
         """From the first step after track_energy(): the walls' work W, the change of kinetic + stored + dissipated
@@ -237,7 +238,7 @@ class Test:
         O.engines = [e for e in O.engines if id(e) not in old and e.label != "recorder"]
         self._motion = motion
         self._on_record = on_record
-        _before_newton(motion + [_scene.py_runner(self._record, every, "recorder")])
+        _before_newton(motion + [_loop.runner(self._record, every, "recorder")])
 
     def _record(self):
         if not self.records:

@@ -9,7 +9,8 @@ import types
 import __main__
 from yade import O
 from yade import wrapper as w
-from mesocontact import loop, mpi, pair, scene
+from yade import config
+from mesocontact import loop, mpi, pair
 from harness import check, finish
 
 
@@ -19,8 +20,8 @@ def one_collision():
     return pair.collide(s).e
 
 
-def a_scene_runner():  # the helper the tablet's servo, recorder and wall work use
-    O.engines = O.engines + [scene.py_runner(lambda: None, 1, "sceneRunner")]
+def a_scene_runner():  # as the tablet's servo, recorder and wall work install theirs
+    O.engines = O.engines + [loop.runner(lambda: None, 1, "sceneRunner")]
     O.run(3, True)
 
 
@@ -67,9 +68,9 @@ for label, fn, error in (("two words", print, ValueError), (5, print, ValueError
 
 # mesocontact.mpi replaces two yade.mpy functions: their parameters are checked first.
 good = dict(parallelCollide=lambda: None, reallocateBodiesToSubdomains=lambda _filter=None, blocking=True: None)
-check(mpi.check_mpy(types.SimpleNamespace(**good)) == "2023.02a", "this YADE's mpy signatures pass")
-for change, words in ((dict(parallelCollide=lambda steps: None), "parallelCollide of YADE 2023.02a is (steps)"),
-                      (dict(reallocateBodiesToSubdomains=None), "reallocateBodiesToSubdomains of YADE 2023.02a is missing")):
+check(mpi.check_mpy(types.SimpleNamespace(**good)) == config.version, "this YADE's mpy signatures pass")
+for change, words in ((dict(parallelCollide=lambda steps: None), f"parallelCollide of YADE {config.version} is (steps)"),
+                      (dict(reallocateBodiesToSubdomains=None), f"reallocateBodiesToSubdomains of YADE {config.version} is missing")):
     try:
         mpi.check_mpy(types.SimpleNamespace(**dict(good, **change)))
         check(False, f"an mpy with {words} refused", "accepted")
