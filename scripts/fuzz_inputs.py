@@ -20,7 +20,8 @@ import tempfile
 from yade import O, utils
 from yade import wrapper as w
 
-from mesocontact import campaign, outputs, params, theory
+from mesocontact import outputs, params, theory
+from mesocontact.tablet import campaign
 
 ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/fuzz_inputs.py")
 ap.add_argument("--n", type=int, default=200, help="inputs per category")

@@ -10,7 +10,8 @@ import os
 import sys
 import time
 
-from mesocontact import batch, campaign
+from mesocontact import batch
+from mesocontact.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0])
 

@@ -2,6 +2,6 @@
 #   yade -n -x scripts/tablet_fig17.py [--quick] [--out DIR] ...
 import sys
 
-from mesocontact import campaign
+from mesocontact.tablet import campaign
 
 campaign.main("fig17", sys.argv[1:])

@@ -2,6 +2,6 @@
 #   yade -n -x scripts/tablet_fig19.py [--quick] [--out DIR] ...
 import sys
 
-from mesocontact import campaign
+from mesocontact.tablet import campaign
 
 campaign.main("fig19", sys.argv[1:])

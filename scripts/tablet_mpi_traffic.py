@@ -18,7 +18,8 @@ import time
 
 from yade import O, mpy
 from yade import wrapper as w
-from mesocontact import mpi, stages, tablet, uniaxial
+from mesocontact import mpi, tablet
+from mesocontact.tablet import stages, uniaxial
 
 p = argparse.ArgumentParser(prog="mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py")
 p.add_argument("--quick", action="store_true", help="the 216-particle tablet")

@@ -6,7 +6,8 @@ import json
 import os
 import sys
 
-from mesocontact import campaign, outputs
+from mesocontact import outputs
+from mesocontact.tablet import campaign
 
 p = argparse.ArgumentParser(prog="tablet_plan.py")
 p.add_argument("table", nargs="?", default="batch/tablet-campaign.table")

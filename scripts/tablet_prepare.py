@@ -2,6 +2,6 @@
 #   yade -n -x scripts/tablet_prepare.py [--quick] [--out DIR] ...
 import sys
 
-from mesocontact import campaign
+from mesocontact.tablet import campaign
 
 campaign.main("prepare", sys.argv[1:])

@@ -12,7 +12,8 @@ import time
 from yade import O, timing
 from yade import wrapper as w
 
-from mesocontact import campaign, outputs, uniaxial
+from mesocontact import outputs
+from mesocontact.tablet import campaign, uniaxial
 
 p = argparse.ArgumentParser(prog="tablet_profile.py")
 p.add_argument("--out", default="results/tablet", help="the campaign directory (its cached unconfined start)")

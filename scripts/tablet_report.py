@@ -2,7 +2,8 @@
 #   yade -n -x scripts/tablet_report.py OUT DOCS
 import sys
 
-from mesocontact import batch, campaign
+from mesocontact import batch
+from mesocontact.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 

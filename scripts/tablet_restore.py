@@ -3,7 +3,8 @@
 #   yade -n -x scripts/tablet_restore.py DOCS OUT
 import sys
 
-from mesocontact import batch, campaign
+from mesocontact import batch
+from mesocontact.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 

@@ -15,13 +15,14 @@ Scenes and drivers (inside ``yade``):
 - ``mpi``: the law under ``yade.mpy`` with contact history kept;
 - ``batch``: scripts that also run as ``yade-batch`` jobs.
 
-The agglomerate tablet of Appendix F (inside ``yade``):
-- ``tablet``: the sample and its materials; ``stages``: its cached preparation states;
-- ``uniaxial``: unconfined tension and compression; ``snapshots``: pictures and where it tears;
-- ``campaign`` (a subpackage split by job: ``common``, ``runs``, ``plots``, ``report``, ``cli``):
-  Figs. 16-19, the time-step and factor studies, the docs report, plan and totals;
-- ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers, contact branches
-  (plain Python, from the campaign's files).
+The agglomerate tablet of Appendix F (a subpackage, inside ``yade`` except where said):
+- ``tablet``: ``sample`` (the sample and its materials; its names are ``tablet``'s too),
+  ``stages`` (its cached preparation states), ``uniaxial`` (unconfined tension and compression),
+  ``snapshots`` (pictures and where it tears), ``campaign`` (a subpackage split by job:
+  ``common``, ``runs``, ``plots``, ``report``, ``cli``: Figs. 16-19, the time-step and factor
+  studies, the docs report, plan and totals), ``measures``, ``statements``, ``branchplot`` (the
+  paper's statements as numbers, contact branches: plain Python, from the campaign's files).
+  The old paths (``mesocontact.campaign``, ``mesocontact.statements`` ...) give the same modules.
 
 Figures (a subpackage, inside ``yade``):
 - ``figures``: ``common`` (what they share), ``long`` (long paper Figs. 5-8), ``appendix`` (Figs.
@@ -33,3 +34,8 @@ functors ``Ig2_Facet_Sphere_MesoScGeom[6D]``, ``Ig2_Wall_Sphere_MesoScGeom``) co
 and appear in ``yade`` like built-in ones.
 """
 __version__ = "0.1"
+
+from . import _moved
+
+_moved.install(__name__)
+del _moved

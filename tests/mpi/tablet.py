@@ -23,7 +23,8 @@ import time
 
 from yade import O
 from yade.wrapper import Sphere
-from mesocontact import mpi, stages, tablet, uniaxial
+from mesocontact import mpi, tablet
+from mesocontact.tablet import stages, uniaxial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from contact_state import compare, contacts  # noqa: E402

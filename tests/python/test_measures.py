@@ -1,8 +1,8 @@
-"""The cycle measures of mesocontact.measures on cycles whose answers are known in closed form."""
+"""The cycle measures of mesocontact.tablet.measures on cycles whose answers are known in closed form."""
 import math
 import unittest
 
-from mesocontact import measures
+from mesocontact.tablet import measures
 
 
 def ellipse(n, amp, k, b, cycles=1):

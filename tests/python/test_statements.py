@@ -1,10 +1,10 @@
-"""mesocontact.statements on the committed campaign of docs/tablet: one row per statement of
+"""mesocontact.tablet.statements on the committed campaign of docs/tablet: one row per statement of
 Appendix F, numbers read from the files (checked here against the files directly)."""
 import json
 import os
 import unittest
 
-from mesocontact import statements
+from mesocontact.tablet import statements
 
 DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
 

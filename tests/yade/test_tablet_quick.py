@@ -13,7 +13,8 @@ import tempfile
 import numpy as np
 from yade import O, utils
 from yade import wrapper as w
-from mesocontact import campaign, outputs, snapshots, tablet, uniaxial
+from mesocontact import outputs, tablet
+from mesocontact.tablet import campaign, snapshots, uniaxial
 from harness import check, finish
 
 
@@ -82,7 +83,7 @@ out = tempfile.mkdtemp(prefix="tablet-quick-")
 info = campaign.prepare(out, quick=True)
 # Stage files that cannot be used are made again, not loaded: a truncated state, a truncated
 # description, a state without its description.
-from mesocontact import stages  # noqa: E402
+from mesocontact.tablet import stages  # noqa: E402
 
 p_unc = stages.path("unconfined", out, quick=True)
 for damage in ("truncated state", "truncated JSON", "kc_over_kp as text", "no JSON"):

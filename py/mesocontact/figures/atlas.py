@@ -4,7 +4,7 @@
     yade -n -x scripts/figure.py --all [--no-tablet] [--quick]
 
 Pair figures (long 5-15, short 5-6) run YADE collisions over the closed form; long 16-19 are
-the tablet of Appendix F (``mesocontact.campaign``, hours, runs cached in --tablet-out). Every
+the tablet of Appendix F (``mesocontact.tablet.campaign``, hours, runs cached in --tablet-out). Every
 figure writes CSV + PNG into DIR and its summary into DIR/atlas.json."""
 import fcntl
 import json
@@ -66,7 +66,7 @@ def figure(paper, number, out, quick=False, tablet_out=None):
     if key in PAIR:
         summary = PAIR[key](out, quick)
     else:
-        from .. import campaign  # the tablet's figures: their own cached runs and outputs
+        from ..tablet import campaign  # the tablet's figures: their own cached runs and outputs
         tablet = tablet_out or os.path.join(out, "tablet")
         campaign.main(f"fig{number}", ["--out", tablet] + (["--quick"] if quick else []))
         summary = dict(figure=f"long {number}", outputs=tablet, note="see docs/tablet/README.md")

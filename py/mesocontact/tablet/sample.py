@@ -26,11 +26,11 @@ try:
     from yade import utils as _utils
     from yade import wrapper as _w
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.tablet needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesocontact.tablet.sample needs YADE: run it inside `yade`") from _exc
 
-from . import outputs as _outputs
-from . import params as _params
-from . import scene as _scene
+from .. import outputs as _outputs
+from .. import params as _params
+from .. import scene as _scene
 
 D0 = 0.01          # mean primary-particle diameter [mm]
 DENSITY = 2.0      # 2000 kg/m^3 in mg/mm^3

@@ -2,12 +2,12 @@
 committed files (plain Python: the JSON and CSV that ``campaign.report`` copies into a docs
 directory):
 
-    python3 -m mesocontact.statements docs/tablet      # writes statements.md and statements.json there
+    python3 -m mesocontact.tablet.statements docs/tablet      # writes statements.md and statements.json there
 
 Each statement gets the project's number, the definition it is measured by, and a verdict:
 '✓' met, '◐' met in part or only approximately (the reason given), '✗' not met, '–' not in this
 campaign's files. The thresholds are stated with each statement; the cycle measures are those of
-``mesocontact.measures`` (loop area against the elastic energy of the force swing, permanent set
+``mesocontact.tablet.measures`` (loop area against the elastic energy of the force swing, permanent set
 from the starting force).
 """
 import glob
@@ -230,7 +230,7 @@ def statements(d):
 
 def markdown(items, source):
     lines = [f"# Appendix F, statement by statement ({source})", "",
-             "Computed by `python3 -m mesocontact.statements DIR` from the files in this directory; "
+             "Computed by `python3 -m mesocontact.tablet.statements DIR` from the files in this directory; "
              "✓ met, ◐ in part, ✗ not met, – not in these files.", "",
              "| # | the paper | the project | measured as | verdict |", "|---|---|---|---|---|"]
     for s in items:
@@ -241,7 +241,7 @@ def markdown(items, source):
 
 def main(argv):
     if len(argv) != 1 or not os.path.isdir(argv[0]):
-        sys.exit("usage: python3 -m mesocontact.statements DOCS_DIR (a campaign's docs directory)")
+        sys.exit("usage: python3 -m mesocontact.tablet.statements DOCS_DIR (a campaign's docs directory)")
     items = statements(argv[0])
     with open(os.path.join(argv[0], "statements.json"), "w") as f:
         json.dump(items, f, indent=1, ensure_ascii=False)

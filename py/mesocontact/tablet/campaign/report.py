@@ -6,10 +6,10 @@ import time
 
 from yade import O
 
-from .. import outputs as _out
+from ... import outputs as _out
 from .. import snapshots as _snap
 from .. import stages as _stages
-from .. import tablet as _tablet
+from .. import sample as _tablet
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS,

@@ -6,10 +6,10 @@ import tempfile
 import time
 
 
-from .. import mpi as _mpi
-from .. import outputs as _out
+from ... import mpi as _mpi
+from ... import outputs as _out
 from .. import stages as _stages
-from .. import tablet as _tablet
+from .. import sample as _tablet
 from .common import (
     FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
 )

@@ -14,9 +14,9 @@ try:
     from yade import O
     from yade import export as _export
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.snapshots needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesocontact.tablet.snapshots needs YADE: run it inside `yade`") from _exc
 
-from . import tablet as _tablet
+from . import sample as _tablet
 
 
 def _spheres():

@@ -9,11 +9,11 @@ import time
 from yade import O
 from yade import wrapper as _w
 
-from .. import mpi as _mpi
-from .. import outputs as _out
-from .. import scene as _scene
+from ... import mpi as _mpi
+from ... import outputs as _out
+from ... import scene as _scene
 from .. import snapshots as _snap
-from .. import tablet as _tablet
+from .. import sample as _tablet
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FULL, GAP_AREA, PERIODS, PROTOCOL,

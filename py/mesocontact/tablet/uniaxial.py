@@ -25,11 +25,11 @@ try:
     from yade import Vector3
     from yade import plot as _plot
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.uniaxial needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesocontact.tablet.uniaxial needs YADE: run it inside `yade`") from _exc
 
-from . import loop as _loop
-from . import scene as _scene
-from . import tablet as _tablet
+from .. import loop as _loop
+from .. import scene as _scene
+from . import sample as _tablet
 
 MODES = ("tension", "compression")
 

@@ -20,7 +20,7 @@ from contextlib import contextmanager
 
 from yade import O
 
-from . import tablet as _tablet
+from . import sample as _tablet
 from . import uniaxial as _uni
 
 STAGES = ("released", "unconfined")
