@@ -1,4 +1,4 @@
-# Appendix F of the long paper (fig19): see py/mesocontact/campaign/ (runs.py for the tests, cli.py for the options).
+# Appendix F of the long paper (fig19): see py/mesocontact/tablet/campaign/ (runs.py for the tests, cli.py for the options).
 #   yade -n -x scripts/tablet_fig19.py [--quick] [--out DIR] ...
 import sys
 
