@@ -5,7 +5,7 @@
 # where the truth fits within the 95 % threshold (chi2 of the truth - chi2 of the best fit < 3.84, all
 # parameters at the truth, none refitted: so the truth lies inside every true profile interval)
 # and it is a miss when a reported interval does not hold the truth.
-#   python3 scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] [--compare OLD_MODULE.py | --compare-rev REV]
+#   python3 scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] [--compare OLD_MODULE.py|OLD_PACKAGE_DIR | --compare-rev REV]
 import argparse
 import importlib.util
 import json
@@ -25,23 +25,50 @@ ap = argparse.ArgumentParser(prog="calibrate_profile_study.py")
 ap.add_argument("--draws", type=int, default=12)
 ap.add_argument("--starts", type=int, default=10)
 ap.add_argument("--out", default=None)
-ap.add_argument("--compare", default=None, help="another version of mesocontact/calibrate.py to run on the same draws")
-ap.add_argument("--compare-rev", default=None, help="the same, calibrate.py as it was at this git revision")
+ap.add_argument("--compare", default=None,
+                help="another version of mesocontact's calibrate (its module file, or its package directory) on the same draws")
+ap.add_argument("--compare-rev", default=None, help="the same, calibrate as it was at this git revision")
 a = ap.parse_args()
-if a.compare_rev:  # the module of that revision, its package-relative imports made absolute
-    old = subprocess.run(["git", "-C", HERE, "show", f"{a.compare_rev}:py/mesocontact/calibrate.py"], check=True,
-                         capture_output=True, text=True).stdout
-    fd, a.compare = tempfile.mkstemp(suffix="-calibrate.py")
-    with os.fdopen(fd, "w") as f:
-        f.write(re.sub(r"^from \.(\w*) import", lambda m: f"from mesocontact{'.' + m.group(1) if m.group(1) else ''} import",
-                       old, flags=re.M))
+
+
+def _git(*args):
+    return subprocess.run(["git", "-C", HERE, *args], check=True, capture_output=True, text=True).stdout
+
+
+def load_compared(files):
+    """A package `calibrate_compared` from {file name: text} (a single module becomes its
+    __init__), its imports of the rest of mesocontact made absolute."""
+    pkg = os.path.join(tempfile.mkdtemp(prefix="calibrate-compared-"), "calibrate_compared")
+    os.mkdir(pkg)
+    up = r"\." if "__init__.py" in files and len(files) == 1 else r"\.\."  # the level that leaves calibrate
+    for name, text in files.items():
+        text = re.sub(r"^(\s*)from " + up + r"(\w*) import",
+                      lambda m: f"{m.group(1)}from mesocontact{'.' + m.group(2) if m.group(2) else ''} import", text, flags=re.M)
+        with open(os.path.join(pkg, name), "w") as f:
+            f.write(text)
+    spec = importlib.util.spec_from_file_location("calibrate_compared", os.path.join(pkg, "__init__.py"),
+                                                  submodule_search_locations=[pkg])
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["calibrate_compared"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+compared = None
+if a.compare_rev:  # the module of that revision (one file before the package split, a package after)
+    kind = subprocess.run(["git", "-C", HERE, "cat-file", "-t", f"{a.compare_rev}:py/mesocontact/calibrate"],
+                          capture_output=True, text=True).stdout.strip()
+    names = _git("ls-tree", "--name-only", f"{a.compare_rev}:py/mesocontact/calibrate").split() if kind == "tree" else []
+    compared = {f: _git("show", f"{a.compare_rev}:py/mesocontact/calibrate/{f}") for f in names if f.endswith(".py")} \
+        or {"__init__.py": _git("show", f"{a.compare_rev}:py/mesocontact/calibrate.py")}
+elif a.compare:
+    compared = ({f: open(os.path.join(a.compare, f)).read() for f in os.listdir(a.compare) if f.endswith(".py")}
+                if os.path.isdir(a.compare) else {"__init__.py": open(a.compare).read()})
 R, RHO, KCA = 1e-3, 2500.0, 200.0
 TRUTH = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, fa=2e-4)
 versions = {"this": calibrate}
-if a.compare:
-    spec = importlib.util.spec_from_file_location("calibrate_compared", a.compare)
-    versions["compared"] = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(versions["compared"])
+if compared:
+    versions["compared"] = load_compared(compared)
 m_r, a12 = calibrate.geometry(R, RHO)
 v_p = theory.plastic_limit_velocity(TRUTH["k1"], TRUTH["kp"], TRUTH["phiF"], a12, m_r, TRUTH["fa"])
 v = np.geomspace(0.3 * v_p, 4 * v_p, 7)

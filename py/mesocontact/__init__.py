@@ -4,8 +4,10 @@ after Luding 2008) for YADE. The modules, by layer:
 Theory and parameters (plain Python, no YADE):
 - ``theory``: closed-form restitution, sticking limits and overlaps;
 - ``params``: parameters from dimensionless groups and from measured quantities, time steps;
-- ``calibrate``: the normal parameters fitted to measured restitution e(v) (its check of a fit
-  runs YADE pair collisions);
+- ``calibrate``: the normal parameters fitted to measured restitution e(v), a subpackage split by
+  job: ``data`` (the measured points), ``problem`` (the model against them), ``identify`` (what
+  the data can tell), ``profile`` (profile intervals), ``fitting`` (multi-start and bootstrap),
+  ``groups`` (the dimensionless groups), ``verify`` (a fit checked by YADE pair collisions);
 - ``outputs``, ``scene_names``: result files that are whole or absent; names shared with readers.
 
 Scenes and drivers (inside ``yade``):

@@ -263,7 +263,7 @@ check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12 and set(rows[2.0]["chan
       f"time-step study: 2 dt against 1 dt {rows[2.0]['change_vs_1dt']}")
 
 # The campaign's time steps are those the committed study accepts (docs/tablet/timestep.json).
-with open(os.path.join(os.path.dirname(os.path.abspath(campaign.__file__)), "..", "..", "..", "docs", "tablet", "timestep.json")) as f:
+with open(os.path.join(os.path.dirname(os.path.abspath(__import__("harness").__file__)), "..", "..", "docs", "tablet", "timestep.json")) as f:
     accepted = json.load(f)["largest_accepted_factor"]
 check(accepted == campaign.DT_FACTORS, f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
 

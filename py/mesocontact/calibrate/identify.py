@@ -1,0 +1,121 @@
+"""What the data determine: the Jacobian in the logarithms of the free parameters, its intervals,
+the directions the data cannot see, and the regimes the data cover, in words."""
+import math
+
+import numpy as np
+
+from .. import theory as _theory
+from .problem import _scale
+
+Z95 = 1.959963984540054           # two-sided 95 % quantile of the normal distribution
+UNDETERMINED_FACTOR = 10.0        # a 95 % interval reaching beyond this factor either way: not determined
+NULL_RCOND = 1e-7                 # singular values below this fraction of the largest: a direction the data cannot see
+
+
+def _log_jacobian(names, p, setup, data, w):
+    """d residual / d log(parameter) for each free parameter (central differences; a parameter at
+    0 gets d/d(value) times a natural scale instead, flagged)."""
+    cols, at_zero = [], []
+    for n in names:
+        h = 1e-5
+        if p[n] > 0:
+            pl, ph = dict(p), dict(p)
+            pl[n], ph[n] = p[n] * math.exp(-h), p[n] * math.exp(h)
+            if n == "kp" and pl[n] <= p["k1"]:
+                pl[n] = p[n]
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / h)
+            elif n == "phiF" and ph[n] > 1:
+                ph[n] = p[n]
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / h)
+            else:
+                cols.append((setup.curve(data.v, ph) - setup.curve(data.v, pl)) * w / (2 * h))
+            at_zero.append(False)
+        else:
+            scale = _scale(n, p["k1"], setup.m_r, data.v)
+            ph = dict(p)
+            ph[n] = h * scale
+            cols.append((setup.curve(data.v, ph) - setup.curve(data.v, p)) * w / h)
+            at_zero.append(True)
+    return np.array(cols).T, at_zero
+
+
+def _identify(names, p, setup, data, w, s2):
+    """Covariance of the log parameters, 95 % intervals, correlation, the undetermined and why."""
+    J, at_zero = _log_jacobian(names, p, setup, data, w)
+    U, sv, Vt = np.linalg.svd(J, full_matrices=False)
+    null = sv < NULL_RCOND * max(sv.max(), 1e-300)
+    # var(log p_i) = s2 sum_k V_ki^2 / sv_k^2; a null direction makes it infinite for the
+    # parameters it involves
+    with np.errstate(divide="ignore", invalid="ignore"):  # 0 x inf in the branch np.where discards
+        inv = np.where(null, np.inf, 1.0 / np.where(null, 1.0, sv) ** 2)
+        terms = np.where(Vt ** 2 > 1e-6, Vt ** 2 * inv[:, None], np.where(null[:, None], 0.0, Vt ** 2 * inv[:, None]))
+    var = s2 * terms.sum(axis=0)
+    sd = np.sqrt(var)
+    ridge = 1e-12 * max(float(np.max(sv)) ** 2, 1e-300)
+    C = np.linalg.inv(J.T @ J + ridge * np.eye(len(names)))
+    d = np.sqrt(np.diag(C))
+    corr = (C / np.outer(d, d)).tolist()
+    ci, undetermined = {}, []
+    for i, n in enumerate(names):
+        if at_zero[i]:  # d/d(value/scale): the interval's upper end from the linear sd
+            scale = _scale(n, p["k1"], setup.m_r, data.v)
+            ci[n] = [0.0, float(Z95 * sd[i] * scale) if math.isfinite(sd[i]) else math.inf]
+            if not math.isfinite(sd[i]):
+                undetermined.append(n)
+            continue
+        f = math.exp(Z95 * sd[i]) if sd[i] < 700 else math.inf
+        lo, hi = p[n] / f, p[n] * f
+        if n == "kp":
+            lo = max(lo, p["k1"])
+        if n == "phiF":
+            hi = min(hi, 1.0)
+        ci[n] = [lo, hi]
+        if not f < UNDETERMINED_FACTOR:
+            undetermined.append(n)
+    statements = []
+    colnorm = np.linalg.norm(J, axis=0)
+    for i, n in enumerate(names):
+        if n in undetermined and colnorm[i] <= 1e-6 * max(colnorm.max(), 1e-300):
+            statements.append(f"{n}: e(v) does not depend on it at the data's speeds (no point where it acts)")
+    # the weak directions: where moving the log parameters changes e by less than the noise over
+    # the interval factor
+    weak = [k for k in range(len(sv)) if sv[k] == 0 or math.sqrt(s2) / sv[k] * Z95 > math.log(UNDETERMINED_FACTOR)]
+    for k in weak:
+        v = Vt[k]
+        involved = [(names[i], v[i]) for i in range(len(names)) if abs(v[i]) > 0.05 * np.abs(v).max()]
+        if len(involved) < 2:
+            continue
+        ref = max(involved, key=lambda t: abs(t[1]))[1]
+        moves = ", ".join(f"{n} x lambda^{c / ref:+.2f}" for n, c in involved)
+        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; e(v) stays the same "
+                          f"(to the noise) along {moves}; fix one of them")
+    return ci, corr, undetermined, statements
+
+
+def _regimes(setup, p, data):
+    counts = {}
+    for v in data.v:
+        o = setup.outcome(float(v), p)
+        key = ("sticking" if o.e == 0 else "rebound") + (" beyond v_p" if o.plastic_limit else " below v_p")
+        counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def _coverage_statements(setup, p, data, free):
+    """Which regimes the data miss, in words (the Jacobian says what that costs)."""
+    v_p = _theory.plastic_limit_velocity(p["k1"], p["kp"], p["phiF"], setup.a12, setup.m_r,
+                                         p["fa"] if setup.adhesion != "none" else 0.0)
+    out = []
+    if data.v.max() < v_p:
+        out.append(f"all points below v_p = {v_p:.4g} m/s: kp and phiF act only through eta chi = eta v/v_p "
+                   "(Eq. 32), and the limit branch is not seen")
+    if data.v.min() > v_p:
+        out.append(f"all points beyond v_p = {v_p:.4g} m/s: e^2 = 1 - (1 - e_p^2) (v_p/v)^2 (Eq. 33) fixes "
+                   "one combination of eta, beta and v_p")
+    if setup.adhesion != "none" and "fa" in free:
+        p0 = dict(p, fa=0.0)
+        de = np.abs(setup.curve(data.v, p) - setup.curve(data.v, p0))
+        if not np.any(de > 0.01):
+            out.append("no point where the non-contact force changes e by more than 0.01: "
+                       "fa needs slower collisions")
+    return out
