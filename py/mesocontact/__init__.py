@@ -20,7 +20,8 @@ Scenes and drivers (inside ``yade``):
 The agglomerate tablet of Appendix F (a subpackage, inside ``yade`` except where said):
 - ``tablet``: ``sample`` (the sample and its materials; its names are ``tablet``'s too),
   ``stages`` (its cached preparation states), ``uniaxial`` (unconfined tension and compression),
-  ``snapshots`` (pictures and where it tears), ``campaign`` (a subpackage split by job:
+  ``snapshots`` (pictures and where it tears), ``roughness`` (the fracture faces, plain Python),
+  ``campaign`` (a subpackage split by job:
   ``common``, ``runs``, ``plots``, ``report``, ``cli``: Figs. 16-19, the time-step and factor
   studies, the docs report, plan and totals), ``measures``, ``statements``, ``branchplot`` (the
   paper's statements as numbers, contact branches: plain Python, from the campaign's files).

@@ -25,6 +25,20 @@ class TestStatements(unittest.TestCase):
         row = next(s for s in items if s["paper"].startswith("the contact is lost only at Dx ~ 8"))
         self.assertEqual(row["project"], f"Dx = {last:.2f}")
         self.assertEqual(row["verdict"], "✓" if 6 <= last <= 10 else "✗")
+        row = next(s for s in items if s["paper"].startswith("the contact surface has developed a roughness"))
+        self.assertEqual(row["verdict"], "–")  # no roughness.json there
+
+    def test_roughness_of_the_chosen_campaign(self):
+        chosen = os.path.join(DOCS, "chosen")
+        items = statements.statements(chosen)
+        with open(os.path.join(chosen, "roughness.json")) as f:
+            rough = json.load(f)
+        ranges = [rough[s]["range_5_95"] for s in ("left", "right")]
+        flat = max(rough["flat_cut"][s]["range_5_95"] for s in ("left", "right"))
+        row = next(s for s in items if s["paper"].startswith("the contact surface has developed a roughness"))
+        self.assertIn(f"range {ranges[0]:.1f} and {ranges[1]:.1f} d0", row["project"])
+        self.assertEqual(row["verdict"], "✓" if min(ranges) >= 2 and min(ranges) >= 2 * flat else
+                         ("◐" if min(ranges) >= 1 else "✗"))
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 - ``stages``: the prepared states, made once under a lock and reused;
 - ``uniaxial``: unconfined tension and compression, the pull;
 - ``snapshots``: pictures of the sample and the planes where it tears;
+- ``roughness``: the roughness of the fracture faces, from a snapshot (plain Python, no YADE);
 - ``campaign`` (a subpackage: ``common``, ``runs``, ``plots``, ``report``, ``cli``): Figs. 16-19,
   the time-step and factor studies, the docs report, plan and totals;
 - ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers and the contact
@@ -16,7 +17,8 @@ so that the plain-Python modules load without YADE.
 
 import importlib
 
-_SUBMODULES = ("sample", "stages", "uniaxial", "snapshots", "campaign", "measures", "statements", "branchplot")
+_SUBMODULES = ("sample", "stages", "uniaxial", "snapshots", "roughness", "campaign", "measures", "statements",
+               "branchplot")
 
 
 def __getattr__(name):

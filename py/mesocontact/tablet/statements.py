@@ -169,8 +169,21 @@ def statements(d):
         marks = [round(s["mark"], 2) for s in pull.get("snapshots", [])]
         add("snapshots at Dx = 0, 0.81, 1.8, 3.1, 4.7, 7.4 and 8.6 (a)–(g)", f"snapshots at {marks}",
             "the pull's snapshot marks", "✓" if marks == [0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6] else "✗")
-        add("the contact surface has developed a roughness of the size of several primary particles", "–",
-            "not measured (the snapshots show it)", "–")
+        rough = _load(d, "roughness.json")
+        if rough:
+            lr, rr, flat = rough["left"], rough["right"], rough.get("flat_cut")
+            ranges = (lr["range_5_95"], rr["range_5_95"])
+            flat_range = max(flat["left"]["range_5_95"], flat["right"]["range_5_95"]) if flat else None
+            add("the contact surface has developed a roughness of the size of several primary particles",
+                f"fracture faces ({rough['snapshot']}): heights' 5–95 % range {ranges[0]:.1f} and {ranges[1]:.1f} d0 (rms "
+                f"{lr['rms']:.2f}, {rr['rms']:.2f})" + (f"; a flat cut through the sample: {flat_range:.1f} d0" if flat else ""),
+                "each torn half's outermost sphere surface over d0 x d0 columns across the pull "
+                "(mesocontact.tablet.roughness); several particles: range >= 2 d0 on both faces and >= 2 x a flat cut's",
+                "✓" if min(ranges) >= 2 and flat and min(ranges) >= 2 * flat_range else
+                ("◐" if min(ranges) >= 1 else "✗"))
+        else:
+            add("the contact surface has developed a roughness of the size of several primary particles", "–",
+                "not measured (roughness.json absent: python3 -m mesocontact.tablet.roughness)", "–")
         g = pull.get("first_gap_Dx")
         add("the first visible gap is opened at Dx ~ d0", f"Dx = {g:.2f}" if g else "–",
             pull.get("gap_criterion", "") + "; ~ d0: 0.6–1.4", "✓" if g and 0.6 <= g <= 1.4 else "✗")
