@@ -34,7 +34,9 @@ from . import sample as _tablet
 MODES = ("tension", "compression")
 
 
-def _check_mode(mode):
+def check_mode(mode):
+    """The sign of the walls' motion for a test mode (tension +1, compression -1); a ValueError
+    naming any other mode."""
     if mode not in MODES:
         raise ValueError(f"mode = {mode!r} is invalid: must be 'tension' or 'compression'")
     return 1.0 if mode == "tension" else -1.0
@@ -256,7 +258,7 @@ class Test:
         """n_cycles cosine cycles of amplitude Dx = amplitude (in d0) in tension or compression.
         The period is ``steps_per_cycle`` steps, or ``period`` elastic crossing times. Returns
         the rows (iter, Dx, F/(kp d0)) recorded every ``every`` steps (default: 400 per cycle)."""
-        sign = _check_mode(mode)
+        sign = check_mode(mode)
         if not amplitude > 0:
             raise ValueError(f"amplitude = {amplitude} is invalid: must be > 0 (in units of d0)")
         if int(n_cycles) != n_cycles or n_cycles < 1:

@@ -97,7 +97,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
     times, default PERIODS[mode]; thin lines the first, thick the others; the slower periods
     only for ``slow_amplitudes`` when given); writes the figure's bundle (fig16 or fig18)."""
-    _uni._check_mode(mode)
+    _uni.check_mode(mode)
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
     periods = tuple(periods or PERIODS[mode])
     runs, data = {}, {}
