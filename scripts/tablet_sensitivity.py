@@ -22,11 +22,12 @@ def gather(out, docs):
     """Per amplitude with perturbed runs: each cycle's peak at 480 t_w (committed and perturbed) and
     1920 t_w, the perturbations' largest relative change against the committed run, and the rate's."""
     rows = {}
-    for path in sorted(glob.glob(os.path.join(out, "runs", "perturbed-x*-tension-Dx*-P%d" % PERIOD, "*.json"))):
-        name = os.path.basename(path)[:-5]
-        factor, amp = name.split("-")[1][1:], float(name.split("-Dx")[1].split("-P")[0])
-        if "MANIFEST" in name:
+    for where in sorted(glob.glob(os.path.join(out, "runs", "perturbed-x*-tension-Dx*-P%d" % PERIOD))):
+        name = os.path.basename(where)
+        path = os.path.join(where, name + ".json")
+        if not os.path.exists(path):  # a run still going
             continue
+        factor, amp = name.split("-")[1][1:], float(name.split("-Dx")[1].split("-P")[0])
         base = os.path.join(docs, f"tension-Dx{amp:g}-P{PERIOD}.json")
         slow = os.path.join(docs, f"tension-Dx{amp:g}-P{SLOW}.json")
         if not (os.path.exists(base) and os.path.exists(slow)):
