@@ -105,6 +105,8 @@ def factor_table(outdir, quick=False):
     names = ("packing", "glue", "rel_std", "seed", "drag")
     key = lambda r: tuple(r.get(n, 1) for n in names)  # noqa: E731  (seed: 1 in rows made before the option)
     for k, name in enumerate(names):
+        if name == "seed":  # realizations are a distribution, summarized below, not pairs
+            continue
         for a in rows:
             for b in rows:
                 ka, kb = key(a), key(b)
@@ -117,11 +119,40 @@ def factor_table(outdir, quick=False):
                     others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
                                        for j, (n, v) in enumerate(zip(names, ka)) if j != k)
                     md.append(f"- {name} ({others}): {say(a)} | {say(b)}")
+    md += _realizations(rows, names, key)
     base = os.path.join(outdir, "factors", "quick" if quick else "")
     os.makedirs(base, exist_ok=True)
     _out.write_atomic(os.path.join(base, "factors.json"), json.dumps(rows, indent=1))
     _out.write_atomic(os.path.join(base, "factors.md"), "\n".join(md) + "\n")
     return rows
+
+
+def _spread(values, f=".2f"):
+    v = [x for x in values if x is not None]
+    if not v:
+        return "–"
+    mean = sum(v) / len(v)
+    sd = (sum((x - mean) ** 2 for x in v) / (len(v) - 1)) ** 0.5 if len(v) > 1 else 0.0
+    return f"{', '.join(format(x, f) for x in values if x is not None)}: mean {mean:{f}}, sd {sd:{f}}"
+
+
+def _realizations(rows, names, key):
+    """One line per preparation run with several seeds: its values over the realizations."""
+    groups = {}
+    for r in rows:
+        groups.setdefault(tuple(v for n, v in zip(names, key(r)) if n != "seed"), []).append(r)
+    md = []
+    for g, rs in groups.items():
+        if len(rs) < 2:
+            continue
+        rs = sorted(rs, key=lambda r: r.get("seed", 1))
+        others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}" for n, v in zip((n for n in names if n != "seed"), g))
+        md += ["", f"Realizations of one preparation ({others}; seeds {', '.join(str(r.get('seed', 1)) for r in rs)}):",
+               f"- last chain Dx: {_spread([r['last_chain_Dx'] for r in rs])}",
+               f"- first gap Dx (1 d0^2): {_spread([r['first_gap_Dx_by_area'].get('1') for r in rs])}",
+               f"- L0 against 0.115 [%]: {_spread([100 * (r['L0'] / 0.115 - 1) for r in rs])}",
+               f"- peak tension F/(kp d0): {_spread([abs(r['peak_tension']) for r in rs], '.4f')}"]
+    return md
 
 
 def factor_report(outdir, docsdir):
