@@ -1,15 +1,17 @@
 """The roughness of the fracture faces of a torn tablet, from a snapshot's sphere positions (plain
-Python with numpy; the legacy VTK files the pull writes, ``snapshots.export``):
+Python with numpy; the legacy VTK files the pull writes, ``snapshots.vtk``):
 
-    python3 -m mesocontact.tablet.roughness SNAPSHOT.vtk [--json OUT]
+    python3 -m mesocontact.tablet.roughness SNAPSHOT.vtk [--flat WHOLE.vtk] [--json OUT]
 
 The two halves are the two largest clusters of spheres in contact (centre distance at most the sum
 of the radii); the rest (single spheres and threads' remnants) is counted, not used. Each half's
 face toward the other is a height field over a grid of d0 x d0 columns across the pulling axis x
 (d0 the mean diameter of the snapshot's spheres): the left half's outermost sphere surface
-max(x + R) per column, the right half's min(x - R), over the columns both halves cover. A face's
-roughness is the spread of its heights, in d0: the root mean square about the mean and the range
-between the 5th and 95th percentiles (robust to a single protruding sphere)."""
+max(x + R) per column, the right half's min(x - R), over the columns both halves cover, less the
+outermost column on each side (the sample's free lateral surface). A face's roughness is the
+spread of its heights, in d0: the root mean square about the mean and the range between the 5th
+and 95th percentiles (robust to a single protruding sphere). With --flat, the same for a flat cut
+at the median x of a whole sample: the roughness the spheres alone make."""
 import argparse
 import json
 import os
@@ -109,7 +111,7 @@ def roughness(heights):
     """rms about the mean and the 5-95 % range of a face's heights (in the heights' unit)."""
     h = np.asarray(heights, dtype=float)
     p5, p95 = np.percentile(h, [5, 95])
-    return {"rms": float(np.sqrt(np.mean((h - h.mean()) ** 2))), "range_5_95": float(p95 - p5),
+    return {"rms": float(np.std(h)), "range_5_95": float(p95 - p5),
             "peak_to_valley": float(h.max() - h.min())}
 
 
@@ -128,7 +130,7 @@ def measure(path, flat=None):
     if flat:
         pos, rad = read_vtk_spheres(flat)
         out["flat_cut"] = dict(snapshot=os.path.basename(flat), **_faces_roughness(pos, rad, planar_cut(pos)))
-    out["definition"] = __doc__.split("\n\n", 1)[1].strip().replace("\n", " ")
+    out["definition"] = __doc__.split("\n\n", 2)[2].strip().replace("\n", " ")  # after the usage line
     return out
 
 

@@ -2,6 +2,7 @@
 runs into the docs and back (report, restore), the jobs' log, the plan and the totals."""
 import json
 import os
+import statistics
 import time
 
 from yade import O
@@ -128,12 +129,11 @@ def factor_table(outdir, quick=False):
 
 
 def _spread(values, f=".2f"):
+    """The values, their mean and sample standard deviation (None values left out)."""
     v = [x for x in values if x is not None]
-    if not v:
-        return "–"
-    mean = sum(v) / len(v)
-    sd = (sum((x - mean) ** 2 for x in v) / (len(v) - 1)) ** 0.5 if len(v) > 1 else 0.0
-    return f"{', '.join(format(x, f) for x in values if x is not None)}: mean {mean:{f}}, sd {sd:{f}}"
+    if len(v) < 2:
+        return ", ".join(format(x, f) for x in v) or "–"
+    return f"{', '.join(format(x, f) for x in v)}: mean {statistics.mean(v):{f}}, sd {statistics.stdev(v):{f}}"
 
 
 def _realizations(rows, names, key):
