@@ -199,6 +199,33 @@ def delta_max_p(k1, kp, phiF, a12):
 
 
 @_in_range
+def tensile_range(delta_max, k1, kp, kc, phiF, a12, interpolation="linear"):
+    """How far a contact that reached ``delta_max`` opens from its force-free overlap delta0
+    before its k2 line meets the tensile limit -kc delta (Eqs. 7-9): delta0 - delta_min =
+    delta0 kc/(k2 + kc) [m]; beyond delta_max^p, delta0 = phiF a12 and k2 = kp (Eq. 11). It grows
+    with delta_max up to max_tensile_range: no sintering depth stretches it further."""
+    nonnegative("delta_max", delta_max)
+    nonnegative("kc", kc)
+    dmp = delta_max_p(k1, kp, phiF, a12)
+    if delta_max >= dmp:
+        return phiF * a12 * kc / (kp + kc)
+    k2 = k1 * k2_over_k1(delta_max / dmp, (kp - k1) / k1, interpolation)
+    return (1.0 - k1 / k2) * delta_max * kc / (k2 + kc)
+
+
+@_in_range
+def max_tensile_range(kp, kc, phiF, a12):
+    """The supremum of tensile_range over delta_max: phiF a12 kc/(kp + kc) [m], reached on the
+    limit branch (delta_max >= delta_max^p)."""
+    nonnegative("kc", kc)
+    positive("kp", kp)
+    if not (is_number(phiF) and 0 < phiF <= 1):
+        raise ValueError(f"phiF = {phiF!r} is invalid: must lie in (0, 1]")
+    positive("a12", a12)
+    return phiF * a12 * kc / (kp + kc)
+
+
+@_in_range
 def plastic_limit_velocity(k1, kp, phiF, a12, m_r, fa=0.0):
     """v_p of Eq. 19: 1/2 m_r v_p^2 = 1/2 k1 dmp^2 - fa dmp [m/s]."""
     positive("m_r", m_r)

@@ -251,3 +251,52 @@ class MaxOverlap(unittest.TestCase):
                 E = 0.5 * m_r * v * v
                 d = theory.max_overlap(v, k1, kp, phiF, a12, m_r, fa)
                 self.assertAlmostEqual(work(d) / E, 1.0, delta=1e-6, msg=f"v {v}, fa {fa}")
+
+
+class TensileRange(unittest.TestCase):
+    """theory.tensile_range against the force-free and tensile-limit overlaps found by bisection on
+    the unloading line written here from docs/model.md §3 (the tablet's brittleness, docs/tablet)."""
+
+    k1, kp, kc, phiF, a12 = 0.5, 1.0, 0.2, 0.05, 0.5  # Appendix F's ratios, a12 = d0/2 with d0 = 1
+
+    def by_bisection(self, dm, interpolation):
+        dmp = self.kp / (self.kp - self.k1) * self.phiF * self.a12
+        x = min(dm / dmp, 1.0)
+        k2 = self.k1 + (self.kp - self.k1) * (math.sqrt(x) if interpolation == "sqrt" else x)
+        # the unloading line: through (dm, k1 dm) below dmp, the limit branch kp (d - phiF a12) beyond it
+        if dm >= dmp:
+            line = lambda d: self.kp * (d - self.phiF * self.a12)  # noqa: E731
+        else:
+            line = lambda d: k2 * (d - dm) + self.k1 * dm  # noqa: E731
+
+        def root(g):
+            lo, hi = 0.0, dm
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if g(mid) < 0 else (lo, mid)
+            return 0.5 * (lo + hi)
+        return root(line) - root(lambda d: line(d) + self.kc * d)
+
+    def test_against_bisection(self):
+        for interpolation in ("linear", "sqrt"):
+            for dm in (0.001, 0.0217, 0.04, 0.05, 0.08, 0.3):
+                r = theory.tensile_range(dm, self.k1, self.kp, self.kc, self.phiF, self.a12, interpolation)
+                self.assertAlmostEqual(r, self.by_bisection(dm, interpolation), delta=1e-12,
+                                       msg=f"{interpolation}, delta_max {dm}")
+
+    def test_bounded_by_the_limit_branch(self):
+        # grows with delta_max and saturates at phiF a12 kc/(kp + kc) from delta_max^p = 0.05 on
+        bound = theory.max_tensile_range(self.kp, self.kc, self.phiF, self.a12)
+        self.assertAlmostEqual(bound, 0.05 * 0.5 * 0.2 / 1.2, delta=1e-15)
+        for interpolation in ("linear", "sqrt"):
+            r = [theory.tensile_range(0.001 * j, self.k1, self.kp, self.kc, self.phiF, self.a12, interpolation)
+                 for j in range(1, 101)]
+            self.assertTrue(all(a < b for a, b in zip(r[:49], r[1:50])), interpolation)
+            self.assertTrue(all(abs(x - bound) < 1e-15 for x in r[49:]), interpolation)
+
+    def test_bad_input_names_parameter(self):
+        for args, name in (((-1.0, 1, 2, 0.2, 0.05, 0.5), "delta_max"), ((0.01, 1, 2, -0.2, 0.05, 0.5), "kc")):
+            with self.assertRaisesRegex(ValueError, name):
+                theory.tensile_range(*args)
+        with self.assertRaisesRegex(ValueError, "phiF"):
+            theory.max_tensile_range(1.0, 0.2, 0.0, 0.5)
