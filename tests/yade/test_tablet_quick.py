@@ -278,27 +278,6 @@ check(len(sn) == 3 and all(os.path.exists(os.path.join(campaign.root(out, quick=
       f"fig19: compression to Dx = 1, snapshots at {[round(-x['Dx'], 2) for x in sn]}, widths {[round(w, 2) for w in widths]} d0, "
       f"force {[round(x['F'], 3) for x in sn]}")
 
-# The factor study's table from files (made up here, so that each criterion's answer is known):
-# L0 = 0.1155 (+0.43 %), weakest plane 4 d0 from the nearer wall at the peak, gap 1.0, last chain 7.
-fdir = os.path.join(out, "made-up")
-prep = os.path.join(fdir, "factors", "frictionless-loading")
-os.makedirs(os.path.join(prep, "pull-contacts"))
-stage = {"n": 1728, "solid_fraction": 0.6, "coordination": 5.0, "rattlers": 3, "side": [0.1155, 0.115, 0.115]}
-json.dump({"built": {"packing": "frictionless", "glue": "loading"}, "sintered": stage, "released": stage,
-           "unconfined": {"stats": stage}}, open(stages.path("unconfined", prep) + ".json", "w"))
-prof = {"x": [0.125 + 0.25 * k for k in range(46)], "count": [100] * 46, "length_d0": 11.55}
-prof["count"][16] = 50  # 4.125 d0 from the left face
-prof["mean"] = sum(prof["count"]) / 46
-json.dump({"drag": "contacts", "L0": 0.1155, "max_tension": -0.05, "max_tension_Dx": 0.2,
-           "planes_at_start": dict(prof), "planes_at_peak": dict(prof, Dx=0.0), "first_gap_Dx_by_area": {"0.5": 0.8, "1": 1.0, "2": 1.2},
-           "last_contact_Dx": 7.0, "mean_force_after_last_contact": 0.0, "wall_clock_s": 1.0},
-          open(os.path.join(prep, "pull-contacts", "pull-contacts.json"), "w"))
-frow = campaign.factor_table(fdir)[0]
-fmd = open(os.path.join(fdir, "factors", "factors.md")).read()
-check(frow["weakest_at_peak"] == {"count": 50, "from_left_d0": 4.125, "from_right_d0": 11.55 - 4.125}
-      and "frictionless, loading, radii std 0.05, seed 1, contacts: L0 ✓, bulk rupture ✓, first gap ✓, last chain ✓ (L0 +0.43 %)" in fmd,
-      "factor table: the row of made-up files against the criteria")
-
 # 7. The preparation's options (the factor study): frictionless packing, all six walls glued.
 #    The stage cache tells the preparations apart; the full law acts after the packing.
 fout = campaign.factor_dir(out, "frictionless", "all")

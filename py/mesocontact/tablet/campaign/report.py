@@ -23,13 +23,27 @@ def _stage_numbers(s, L=None):
             "Lx_d0": (L if L is not None else s["side"][0]) / _tablet.D0}
 
 
+# Where the crack runs: the weakest plane at the paper's panel (b), Dx = 0.81, before the first
+# visible gap of any pull (0.6-1.7 d0) but after the peak, when the contacts across the crack have
+# begun to go; at the peak itself no crack exists and the weakest plane is the wall layers' order.
+CRACK_MARKS = ("0.2", "0.81")
+
+
+def _weakest(prof, L0):
+    """The weakest plane of a crossing profile, by today's rule (None if the pull did not record it)."""
+    if prof is None:
+        return None
+    prof.setdefault("length_d0", L0 / _tablet.D0 + (prof.get("Dx") or 0.0))
+    prof["weakest"] = _uni.weakest_plane(prof)
+    return prof["weakest"]
+
+
 def _factor_row(st, p):
     """One row of the factor study from a preparation's description ``st`` and a pull's ``p``."""
     start = st["unconfined"]["stats"]
-    for key in ("planes_at_start", "planes_at_peak"):  # the weakest plane from the counts, by today's rule
-        prof = p[key]
-        prof.setdefault("length_d0", p["L0"] / _tablet.D0 + (prof.get("Dx") or 0.0))
-        prof["weakest"] = _uni.weakest_plane(prof)
+    for key in ("planes_at_start", "planes_at_peak"):
+        _weakest(p[key], p["L0"])
+    marks = p.get("planes_at_marks") or {}
     p0 = p["planes_at_start"]
     length = p0["length_d0"]
     near = [c for x, c in zip(p0["x"], p0["count"]) if 0.5 <= x <= 1.5 or length - 1.5 <= x <= length - 0.5]
@@ -43,7 +57,9 @@ def _factor_row(st, p):
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
             "weakest_at_start": p["planes_at_start"]["weakest"], "mean_at_start": p["planes_at_start"]["mean"],
             "weakest_at_peak": p["planes_at_peak"]["weakest"], "mean_at_peak": p["planes_at_peak"]["mean"],
-            "planes_at_peak_Dx": p["planes_at_peak"]["Dx"], "first_gap_Dx_by_area": p["first_gap_Dx_by_area"],
+            "planes_at_peak_Dx": p["planes_at_peak"]["Dx"],
+            "weakest_at_marks": {m: _weakest(marks.get(m), p["L0"]) for m in CRACK_MARKS},
+            "mean_at_marks": {m: marks[m]["mean"] if m in marks else None for m in CRACK_MARKS}, "first_gap_Dx_by_area": p["first_gap_Dx_by_area"],
             "last_chain_Dx": p["last_contact_Dx"], "mean_force_after_last_chain": p["mean_force_after_last_contact"],
             "steps": p.get("steps"), "wall_clock_s": p["wall_clock_s"]}
 
@@ -73,36 +89,41 @@ def factor_table(outdir, quick=False):
           "after sintering / after release / at the test start (L0 between the loading walls; ν and C of the "
           "stage's statistics). Weakest plane: the plane x = const with the fewest contacts in overlap across "
           "it, at least 0.5 d0 from the walls' faces, planes 0.25 d0 apart; n (the mean over the planes); its "
-          "distances from the left and right loading walls. First gap at three area thresholds; last chain: "
+          "distances from the left and right loading walls; at Dx = 0, at the peak tension and at Dx = 0.2 and 0.81 "
+          "(the paper's panel (b): where the crack runs). First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
           "| packing | glue | radii std | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
           "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
-          "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 16]
+          "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | at Dx=0.2 | at Dx=0.81 | "
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 18]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
-        w0, wp = r["weakest_at_start"], r["weakest_at_peak"]
         g = r["first_gap_Dx_by_area"]
         md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
                   f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
                   f"{fmt(r['peak_tension'], '.4g')} at {fmt(r['peak_Dx'], '.3f')} | "
-                  f"{w0['count']} ({r['mean_at_start']:.0f}), {w0['from_left_d0']:.2f} / {w0['from_right_d0']:.2f} | "
-                  f"{wp['count']} ({r['mean_at_peak']:.0f}), {wp['from_left_d0']:.2f} / {wp['from_right_d0']:.2f} | "
+                  f"{_plane(r['weakest_at_start'], r['mean_at_start'])} | {_plane(r['weakest_at_peak'], r['mean_at_peak'])} | "
+                  + " | ".join(_plane(r["weakest_at_marks"][m], r["mean_at_marks"][m]) for m in CRACK_MARKS) + " | "
                   + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float)) + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
                   f"{fmt(r['mean_force_after_last_chain'], '.2g')} |")
-    md += ["", "Against the criteria of the tested sample (L0 = 0.115 within 1 %; weakest plane at the peak at "
-           "least 3 d0 from both loading walls; first gap 0.6–1.4; last chain 6–10):", ""]
+    md += ["", "Against the criteria of the tested sample (L0 = 0.115 within 1 %; bulk rupture: weakest plane at the peak at "
+           "least 3 d0 from both loading walls; crack in the bulk: the same at Dx = 0.81; first gap 0.6–1.4; "
+           "last chain 6–10):", ""]
     for r in rows:
-        w = r["weakest_at_peak"]
-        checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": min(w["from_left_d0"], w["from_right_d0"]) >= 3,
+        crack = _from_wall(r["weakest_at_marks"][CRACK_MARKS[-1]])
+        checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": _from_wall(r["weakest_at_peak"]) >= 3,
+                  "crack in the bulk": crack is not None and crack >= 3,
                   "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
-        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, seed {r.get('seed', 1)}, {r['drag']}: " + ", ".join(f"{k} {'✓' if v else '✗'}" for k, v in checks.items())
+        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, seed {r.get('seed', 1)}, {r['drag']}: "
+                  + ", ".join(f"{k} {'✓' if v else ('–' if k == 'crack in the bulk' and crack is None else '✗')}"
+                              for k, v in checks.items())
                   + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
     md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
-           "weakest plane at the peak, its distance from the nearer loading wall [d0]; first gap; last chain.", ""]
+           "weakest plane at the peak and at Dx = 0.81, its distance from the nearer loading wall [d0]; first gap; "
+           "last chain.", ""]
     names = ("packing", "glue", "rel_std", "seed", "drag")
     key = lambda r: tuple(r.get(n, 1) for n in names)  # noqa: E731  (seed: 1 in rows made before the option)
     for k, name in enumerate(names):
@@ -113,9 +134,9 @@ def factor_table(outdir, quick=False):
                 ka, kb = key(a), key(b)
                 if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(len(names)) if j != k):
                     def say(r):
-                        w = r["weakest_at_peak"]
                         return (f"{r.get(name, 1)}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
-                                f"{min(w['from_left_d0'], w['from_right_d0']):.2f} from a wall, first gap "
+                                f"{_from_wall(r['weakest_at_peak']):.2f} from a wall (at Dx = 0.81: "
+                                f"{fmt(_from_wall(r['weakest_at_marks'][CRACK_MARKS[-1]]), '.2f')}), first gap "
                                 f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
                     others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
                                        for j, (n, v) in enumerate(zip(names, ka)) if j != k)
@@ -126,6 +147,18 @@ def factor_table(outdir, quick=False):
     _out.write_atomic(os.path.join(base, "factors.json"), json.dumps(rows, indent=1))
     _out.write_atomic(os.path.join(base, "factors.md"), "\n".join(md) + "\n")
     return rows
+
+
+def _from_wall(w):
+    """A weakest plane's distance from the nearer loading wall [d0] (None if not recorded)."""
+    return None if w is None else min(w["from_left_d0"], w["from_right_d0"])
+
+
+def _plane(w, mean):
+    """A weakest plane in the table: its count (the mean over the planes), distances from L / R."""
+    if w is None:
+        return "–"
+    return f"{w['count']} ({mean:.0f}), {w['from_left_d0']:.2f} / {w['from_right_d0']:.2f}"
 
 
 def _spread(values, f=".2f"):
@@ -151,6 +184,8 @@ def _realizations(rows, names, key):
                f"- last chain Dx: {_spread([r['last_chain_Dx'] for r in rs])}",
                f"- first gap Dx (1 d0^2): {_spread([r['first_gap_Dx_by_area'].get('1') for r in rs])}",
                f"- L0 against 0.115 [%]: {_spread([100 * (r['L0'] / 0.115 - 1) for r in rs])}",
+               f"- weakest plane at Dx = 0.81 from the nearer wall [d0]: "
+               f"{_spread([_from_wall(r['weakest_at_marks'][CRACK_MARKS[-1]]) for r in rs], '.1f')}",
                f"- peak tension F/(kp d0): {_spread([abs(r['peak_tension']) for r in rs], '.4f')}"]
     return md
 
