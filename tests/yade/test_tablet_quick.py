@@ -289,6 +289,13 @@ check(all(b.material.label == "particles" for b in spheres), "frictionless packi
 sphere_contacts = [I for I in O.interactions if I.id1 in tablet.sphere_ids() and I.id2 in tablet.sphere_ids()]
 check(sphere_contacts and all(abs(I.phys.muS - 1.0) < 1e-12 and abs(I.phys.kc - 0.2 * tablet.KP) < 1e-12 for I in sphere_contacts),
       f"frictionless packing: {len(sphere_contacts)} contacts adopted the full law (mu = 1, kc = 0.2 kp)")
+# A deeper sintering (d0 p_s/kp = 0.05): sintered at that stress, released to the paper's p_r.
+sout = campaign.factor_dir(out, "full", "loading", sinter=0.05)
+sinfo = campaign.prepare(sout, quick=True, progress=False, sinter=0.05)
+check(sout.endswith("full-loading-sinter0.05") and sinfo["built"]["sinter"] == 0.05
+      and abs(sinfo["sintered"]["goal"] / (0.05 * tablet.KP / tablet.D0) - 1) < 1e-12
+      and abs(sinfo["released"]["goal"] / (1e-3 * 0.02 * tablet.KP / tablet.D0) - 1) < 1e-12,
+      f"deeper sintering: goals {sinfo['sintered']['goal']:.4g} then {sinfo['released']['goal']:.4g} (stress units), in {os.path.basename(sout)}")
 try:
     campaign.prepare(fout, quick=True, progress=False)
     check(False, "a directory holding another preparation is refused")
@@ -299,5 +306,11 @@ try:
     check(False, "bad packing rejected")
 except ValueError as e:
     check(str(e).startswith("packing"), f"bad packing rejected: {e}")
+for bad in (0.0, -0.02, float("nan")):
+    try:
+        tablet.prepare(os.path.join(out, "x.yade.gz"), n=8, sinter=bad)
+        check(False, f"bad sinter {bad} rejected")
+    except ValueError as e:
+        check(str(e).startswith("sinter"), f"bad sinter rejected: {e}")
 
 finish()

@@ -36,7 +36,8 @@ D0 = 0.01          # mean primary-particle diameter [mm]
 DENSITY = 2.0      # 2000 kg/m^3 in mg/mm^3
 KP = 5.0           # limit stiffness [mg/us^2 = 1e6 N/m]
 GAMMA0 = 5e-5      # normal viscous damping [mg/us = kg/s]
-SINTER_STRESS = 0.02 * KP / D0   # d0 p_s/kp = 0.02
+SINTER = 0.02                    # d0 p_s/kp, the paper's sintering stress
+SINTER_STRESS = SINTER * KP / D0
 RELEASE_RATIO = 1e-3             # p_r/p_s
 COMPACTION_SPEED = 2.0           # largest wall speed while compacting the gas [mm/us], ~c/10
 SINTER_SPEED = 0.05              # largest wall speed while sintering and releasing [mm/us]
@@ -410,7 +411,7 @@ def _compact(goal, speed, progress, chunk=500, max_steps=200000):
 
 def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, seed=1, tol_stress=0.01,
             tol_ke=1e-4, compaction_speed=COMPACTION_SPEED, release_steps=RELEASE_STEPS, progress=True,
-            packing="full", glue="loading"):
+            packing="full", glue="loading", sinter=SINTER):
     """Makes the released tablet with the full law (adhesion, friction, rolling, torsion) from
     the start: a gas of the particles is compacted by the six walls (at up to
     ``compaction_speed`` [mm/us], without background drag) until they carry d0 p_s/kp = 0.02,
@@ -424,15 +425,20 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     (the particles' normal law otherwise) and lets it come to rest at PACKING_RATIO p_s with the
     drag (a dense random packing), then switches the full law on for sintering, each contact
     keeping its history; ``glue='all'`` makes all six walls adhesive after sintering, ``'sinter'``
-    before it (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined)."""
+    before it (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined).
+    ``sinter``: the sintering stress d0 p_s/kp (the paper's 0.02); the packing's and the release's
+    stresses stay those of the paper, so that only the sintering depth changes."""
+    if not (isinstance(sinter, (int, float)) and math.isfinite(sinter) and sinter > 0):
+        raise ValueError(f"sinter = {sinter!r} is invalid: the sintering stress d0 p_s/kp must be a positive number")
+    p_s = sinter * KP / D0
     if packing not in PACKINGS:
         raise ValueError(f"packing = {packing!r} is invalid: one of {PACKINGS}")
     if glue not in GLUES:
         raise ValueError(f"glue = {glue!r} is invalid: one of {GLUES}")
     t0 = time.time()
     info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp)}
-    info["built"].update(packing=packing, glue=glue)
-    O.engines = engines(_controller(SINTER_STRESS, SINTER_SPEED), reference="lab")
+    info["built"].update(packing=packing, glue=glue, **({"sinter": sinter} if sinter != SINTER else {}))
+    O.engines = engines(_controller(p_s, SINTER_SPEED), reference="lab")
     if packing == "frictionless":  # packed to rest at PACKING_RATIO p_s, then the full law and p_s
         O.materials.append(_w.MesoMat(**particle_material(material, kc=0.0, frictionAngle=0.0, muR=0.0, muO=0.0,
                                                           label="packing")))
@@ -441,12 +447,12 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
         info["compacted"] = _compact(PACKING_RATIO * SINTER_STRESS, compaction_speed, progress)
         info["packed"] = _relax(PACKING_RATIO * SINTER_STRESS, tol_stress, tol_ke, "packing", progress)
         _switch_particles("particles")
-        _set_goal(SINTER_STRESS)
+        _set_goal(p_s)
     else:
-        info["compacted"] = _compact(SINTER_STRESS, compaction_speed, progress)
+        info["compacted"] = _compact(p_s, compaction_speed, progress)
     if glue == "sinter":  # sintered against six adhesive walls
         make_adhesive_walls([wall_ids()[w] for w in WALLS])
-    info["sintered"] = _relax(SINTER_STRESS, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
+    info["sintered"] = _relax(p_s, tol_stress, tol_ke, "sintering", progress, max_steps=1000000)
     # The loading walls are glued to the sample where it was sintered against them: released
     # against the smooth mould first, only the few particles still touching at p_r (12 and 16
     # of about 144 per face) held it, and the pull tore it off a wall.

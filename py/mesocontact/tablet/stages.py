@@ -44,11 +44,11 @@ def _locked(outdir):
             fcntl.flock(lock, fcntl.LOCK_UN)
 
 
-def _config(quick, material, kc_over_kp, n, packing="full", glue="loading", rel_std=0.05, seed=1):
+def _config(quick, material, kc_over_kp, n, packing="full", glue="loading", rel_std=0.05, seed=1, sinter=None):
     n = n or (QUICK_N if quick else 1728)
     kc = _tablet.particle_material(material)["kc"] / _tablet.KP if kc_over_kp is None else float(kc_over_kp)
     return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue, "rel_std": float(rel_std),
-            "seed": int(seed)}
+            "seed": int(seed), "sinter": float(_tablet.SINTER if sinter is None else sinter)}
 
 
 class _Unreadable(Exception):
@@ -62,10 +62,11 @@ def _load(p, config):
         built = info["built"]
         have = {"n": int(built["n"]), "material": built["material"], "kc_over_kp": float(built["kc_over_kp"]),
                 "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),  # older files: the first protocol
-                "rel_std": float(built.get("rel_std", 0.05)), "seed": int(built.get("seed", 1))}
+                "rel_std": float(built.get("rel_std", 0.05)), "seed": int(built.get("seed", 1)),
+                "sinter": float(built.get("sinter", _tablet.SINTER))}
     except (OSError, ValueError, KeyError, TypeError, AttributeError) as e:  # a number as text, a list, ...
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
-    if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std") else have[k] != config[k] for k in config):
+    if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std", "sinter") else have[k] != config[k] for k in config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
     try:
         O.load(p)
@@ -98,12 +99,12 @@ def _try_load(p, config, progress):
 
 
 def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=None, progress=True,
-           packing="full", glue="loading", rel_std=0.05, seed=1):
+           packing="full", glue="loading", rel_std=0.05, seed=1, sinter=None):
     """Loads ``stage`` ('released' or 'unconfined') of the tablet in ``outdir`` into O, making
     it first if it is missing; returns its description. quick: the 216-particle tablet;
     packing, glue, rel_std, seed: the preparation's options (tablet.prepare; seed: the gas's
-    random positions and radii, another realization of the same protocol)."""
-    config = _config(quick, material, kc_over_kp, n, packing, glue, rel_std, seed)
+    random positions and radii, another realization of the same protocol), sinter (d0 p_s/kp)."""
+    config = _config(quick, material, kc_over_kp, n, packing, glue, rel_std, seed, sinter)
     p = path(stage, outdir, quick)
     with _locked(outdir):
         info = _try_load(p, config, progress)
@@ -113,8 +114,9 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
             return _tablet.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
-                                   progress=progress, packing=packing, glue=glue, rel_std=rel_std, seed=seed)
-    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue, rel_std, seed)
+                                   progress=progress, packing=packing, glue=glue, rel_std=rel_std, seed=seed,
+                                   sinter=config["sinter"])
+    info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue, rel_std, seed, sinter)
     with _locked(outdir):
         made = _try_load(p, config, progress)  # made meanwhile by another job
         if made is not None:

@@ -60,6 +60,8 @@ def parse_args(figure, argv):
                    help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
     p.add_argument("--seed", type=int, default=1,
                    help="factors: the random seed of the gas (positions and radii): another realization of the preparation")
+    p.add_argument("--sinter", type=float, default=_tablet.SINTER,
+                   help="factors: the sintering stress d0 p_s/kp (the paper's 0.02)")
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
     p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
@@ -139,7 +141,7 @@ def _main(figure, a, amps, slow, periods):
             out = factor_report(a.out, a.report)
         else:
             if not a.table:
-                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed)
+                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed, sinter=a.sinter)
             out = factor_table(a.out, a.quick)
     else:
         raise ValueError(f"figure = {figure!r} is invalid")

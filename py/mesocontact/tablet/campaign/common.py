@@ -39,7 +39,7 @@ FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
 # Cycle periods in elastic crossing times (uniaxial.crossing_time): the rate study runs all
 # three; the figures run FAST (thin) and SLOW (thick), where the peaks agree within 5 %.
 RATE_PERIODS = (30.0, 120.0, 480.0)
-# The periods of the figures (thin, thick), from the rate checks (docs/tablet/README.md, section 4):
+# The periods of the figures (thin, thick), from the rate checks (docs/tablet/first-protocol.md, section 4):
 # compression agrees within 0.6 % between 120 and 480 t_w in every cycle; tension does not (the
 # re-loading cycles 6.5 % apart at Dx = 0.2) but agrees within 1.95 % between 480 and 1920 t_w
 # at every amplitude (0.025 to 0.3).

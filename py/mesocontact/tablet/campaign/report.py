@@ -52,6 +52,7 @@ def _factor_row(st, p):
             "bulk_mean_at_start": sum(bulk) / len(bulk) if bulk else None,
             "packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
             "rel_std": st["built"].get("rel_std", 0.05), "seed": st["built"].get("seed", 1),
+            "sinter": st["built"].get("sinter", _tablet.SINTER),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
@@ -92,14 +93,14 @@ def factor_table(outdir, quick=False):
           "distances from the left and right loading walls; at Dx = 0, at the peak tension and at Dx = 0.2 and 0.81 "
           "(the paper's panel (b): where the crack runs). First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
-          "| packing | glue | radii std | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
+          "| packing | glue | radii std | d0 p_s/kp | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
           "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
           "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | at Dx=0.2 | at Dx=0.81 | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 18]
+          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 19]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
         g = r["first_gap_Dx_by_area"]
-        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
+        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r['sinter']:g} | {r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
                   f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
@@ -117,14 +118,15 @@ def factor_table(outdir, quick=False):
                   "crack in the bulk": crack is not None and crack >= 3,
                   "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
-        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}, seed {r.get('seed', 1)}, {r['drag']}: "
+        sinter = f", d0 p_s/kp {r['sinter']:g}" if r["sinter"] != _tablet.SINTER else ""
+        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}{sinter}, seed {r.get('seed', 1)}, {r['drag']}: "
                   + ", ".join(f"{k} {'✓' if v else ('–' if k == 'crack in the bulk' and crack is None else '✗')}"
                               for k, v in checks.items())
                   + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
     md += ["", "What each factor does (pairs of runs that differ in it alone): L0/d0 at the test start; the "
            "weakest plane at the peak and at Dx = 0.81, its distance from the nearer loading wall [d0]; first gap; "
            "last chain.", ""]
-    names = ("packing", "glue", "rel_std", "seed", "drag")
+    names = ("packing", "glue", "rel_std", "sinter", "seed", "drag")
     key = lambda r: tuple(r.get(n, 1) for n in names)  # noqa: E731  (seed: 1 in rows made before the option)
     for k, name in enumerate(names):
         if name == "seed":  # realizations are a distribution, summarized below, not pairs

@@ -474,23 +474,25 @@ FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", 
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
 
-def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1):
+def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1, sinter=_tablet.SINTER):
     """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
     return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else "")
-                        + (f"-seed{seed}" if seed != 1 else ""))
+                        + (f"-sinter{sinter:g}" if sinter != _tablet.SINTER else "") + (f"-seed{seed}" if seed != 1 else ""))
 
 
-def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1):
+def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1, sinter=_tablet.SINTER):
     """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
     factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
     last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes).
-    ``seed``: another realization of the same preparation (the gas's positions and radii)."""
-    out = factor_dir(outdir, packing, glue, rel_std, seed)
+    ``seed``: another realization of the same preparation (the gas's positions and radii);
+    ``sinter``: the sintering stress d0 p_s/kp."""
+    out = factor_dir(outdir, packing, glue, rel_std, seed, sinter)
     done = os.path.join(root(out, quick), f"pull-{drag}")
     if _out.complete(done):  # made by an earlier job: read back, not repeated
         with open(os.path.join(done, f"pull-{drag}.json")) as f:
             return json.load(f)
-    protocol = dict({"packing": packing, "glue": glue, "rel_std": rel_std}, **({"seed": seed} if seed != 1 else {}))
+    protocol = dict({"packing": packing, "glue": glue, "rel_std": rel_std}, **({"seed": seed} if seed != 1 else {}),
+                    **({"sinter": sinter} if sinter != _tablet.SINTER else {}))
     return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol=protocol,
                 drag=drag, stop_after_last=1.0, until=12.0)
 
