@@ -5,9 +5,11 @@
 # 1.125 d0 (seed 2); first gap 1.0 and 1.2, last chain 7 and 9.
 import json
 import os
+import shutil
 import tempfile
 
 from mesocontact.tablet import campaign, stages
+import harness
 from harness import check, finish
 
 fdir = tempfile.mkdtemp(prefix="factor-table-")
@@ -51,4 +53,12 @@ for line in ("- last chain Dx: 7.00, 9.00: mean 8.00, sd 1.41", "- first gap Dx 
              "- L0 against 0.115 [%]: 0.43, 0.43: mean 0.43, sd 0.00"):
     check(line in md, f"factor table: realizations summary {line!r}")
 check("seeds 1, 2" in md, "factor table: the realizations are grouped (seeds 1, 2)")
+
+# The committed table (docs/tablet/factors/factors.md) is what the script writes from the committed files.
+docs = os.path.join(os.path.dirname(os.path.abspath(harness.__file__)), "..", "..", "docs", "tablet", "factors")
+copy = tempfile.mkdtemp(prefix="factor-docs-")
+shutil.copytree(docs, os.path.join(copy, "factors"))
+campaign.factor_table(copy)
+check(open(os.path.join(copy, "factors", "factors.md")).read() == open(os.path.join(docs, "factors.md")).read(),
+      "docs/tablet/factors/factors.md is generated: scripts/tablet_factors.py --out docs/tablet --table")
 finish()
