@@ -26,6 +26,7 @@ class TabletDocs(unittest.TestCase):
     def test_summary_is_generated(self):
         self.assertEqual(summary.summary(CHOSEN), _read("chosen", "summary.md"),
                          "chosen/summary.md differs from what python3 -m mesocontact.tablet.summary writes")
+        self.assertEqual(summary.summary(DOCS), _read("summary.md"), "the first protocol's summary.md")
 
     def test_statements_are_generated(self):
         self.assertEqual(statements.markdown(statements.statements(CHOSEN), "docs/tablet/chosen"),

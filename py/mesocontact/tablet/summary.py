@@ -60,13 +60,17 @@ def _pull(d, out):
     p = _st._load(d, "fig17.json")
     if not p:
         return
-    g = p["first_gap_Dx_by_area"]
+    g = p.get("first_gap_Dx_by_area") or {"1": p.get("first_gap_Dx")}  # older pulls: one threshold
     out += ["## The pull (Fig. 17, fig17.json)", "",
             f"- Peak tension {-p['max_tension']:.4f} kp d0 at Dx = {p['max_tension_Dx']:.3f}.",
             f"- First visible gap at Dx = {_f(g.get('0.5'), '.2f')}, {_f(g.get('1'), '.2f')}, {_f(g.get('2'), '.2f')} "
             f"for 0.5, 1 and 2 d0²; see-through at {_f(p.get('see_through_Dx'), '.2f')}.",
-            f"- Last chain at Dx = {_f(p['last_contact_Dx'], '.2f')}; mean force after it {_f(p['mean_force_after_last_contact'], '.2g')} "
-            "kp d0.", "",
+            f"- Last chain at Dx = {_f(p['last_contact_Dx'], '.2f')}; mean force after it "
+            f"{_f(p.get('mean_force_after_last_contact'), '.2g')} kp d0.", ""]
+    if "planes_at_start" not in p:  # older pulls did not count the crossing contacts
+        out.append("")
+        return
+    out += [
             "Weakest plane (fewest contacts in overlap across x = const, ≥ 0.5 d0 from the walls):", "",
             "| when | Dx | contacts | mean over planes | from left [d0] | from right [d0] | all contacts | F/(kp d0) |",
             "|---|---|---|---|---|---|---|---|", _plane("start", p["planes_at_start"]), _plane("peak", p["planes_at_peak"])]
@@ -159,6 +163,22 @@ def _others(d, out):
         out.append("")
 
 
+def _kc(d, out):
+    p = os.path.join(d, "kc-study.csv")
+    if not os.path.exists(p):
+        return
+    with open(p) as f:
+        head, *rows = [ln.split(",") for ln in f.read().split("\n") if ln]
+    col = {k: i for i, k in enumerate(head)}
+    out += ["## How kc shows (kc-study.csv: the same preparation with other particles)", "",
+            "| set | kc/kp | stage | solid fraction | C | rattlers | box [d0] |", "|---|---|---|---|---|---|---|"]
+    for r in sorted(rows, key=lambda r: (float(r[col["kc_over_kp"]]), r[col["stage"]] != "sintered")):
+        box = " × ".join(f"{float(r[col[k]]) / D0:.2f}" for k in ("Lx", "Ly", "Lz"))
+        out.append(f"| {r[col['material']]} | {float(r[col['kc_over_kp']]):g} | {r[col['stage']]} | "
+                   f"{float(r[col['solid_fraction']]):.4f} | {float(r[col['coordination']]):.2f} | {r[col['rattlers']]} | {box} |")
+    out.append("")
+
+
 def _realizations(d, out):
     st = _st._load(d, "unconfined.yade.gz.json")
     rows = _st._load(os.path.join(d, "..", "factors"), "factors.json") or []
@@ -201,6 +221,7 @@ def summary(d):
     _cyclic(runs, out)
     _fig19(d, out)
     _others(d, out)
+    _kc(d, out)
     _realizations(d, out)
     _cost(d, out)
     return "\n".join(out).rstrip() + "\n"
