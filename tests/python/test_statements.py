@@ -60,8 +60,8 @@ class TestStatements(unittest.TestCase):
         # 19: the last chains of the preparation's realizations in the factor study
         with open(os.path.join(DOCS, "factors", "factors.json")) as f:
             rows = json.load(f)
-        v = sorted(r["last_chain_Dx"] for r in rows if (r["packing"], r["glue"], r["rel_std"], r["drag"])
-                   == ("frictionless", "sinter", 0.1, "contacts"))
+        v = sorted(r["last_chain_Dx"] for r in rows if (r["packing"], r["glue"], r["rel_std"], r["sinter"], r["drag"])
+                   == ("frictionless", "sinter", 0.1, 0.02, "contacts"))
         self.assertIn(", ".join(f"{x:.2f}" for x in v), items[19]["why"])
         # every statement not met says why, but 23 (the set grows evenly with the amplitude: no reason found)
         self.assertTrue(all(items[n]["why"] for n, s in items.items() if s["verdict"] == "✗" and n != 23),

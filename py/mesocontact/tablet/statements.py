@@ -308,17 +308,18 @@ def _rate(d):
 
 
 def _loose_peak(d):
-    """The factor study's preparations whose tension peaks late (../factors/factors.json), if present."""
+    """Which preparations of the factor study (../factors/factors.json) peak late, if present."""
     rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
     late = [r for r in rows if r["peak_Dx"] >= 0.1]
-    dense = [r["peak_Dx"] for r in rows if abs(r["L0"] / 0.115 - 1) <= TOL_L0]
+    dense = [r["peak_Dx"] for r in rows if abs(r["L0"] / 0.115 - 1) <= TOL_L0 and r.get("sinter", 0.02) == 0.02]
     if not late or not dense:
         return ""
-    return (f" In the factor study (../factors/factors.md) the {len(dense)} pulls of samples with L0 within "
-            f"{_pct(TOL_L0)} of 0.115 peak at Dx = {min(dense):.3f}–{max(dense):.3f}; only loose preparations peak late: "
-            + "; ".join(f"packing {r['packing']}, glue {r['glue']}: Dx {r['peak_Dx']:.2f}, solid fraction at the test "
-                        f"start {r['test_start']['solid_fraction']:.3f}, L0 {100 * (r['L0'] / 0.115 - 1):+.1f} %"
-                        for r in late) + ".")
+    return (f" In the factor study (../factors/factors.md), at the paper's sintering stress the {len(dense)} pulls of "
+            f"samples with L0 within {_pct(TOL_L0)} of 0.115 peak at Dx = {min(dense):.3f}–{max(dense):.3f}; the pulls that "
+            "peak at Dx >= 0.1 are: "
+            + "; ".join(f"packing {r['packing']}, glue {r['glue']}, d0 p_s/kp {r.get('sinter', 0.02):g}: Dx "
+                        f"{r['peak_Dx']:.3f}, solid fraction at the test start {r['test_start']['solid_fraction']:.3f}, "
+                        f"L0 {100 * (r['L0'] / 0.115 - 1):+.1f} %" for r in late) + ".")
 
 
 def _realizations(d, st):
@@ -327,8 +328,8 @@ def _realizations(d, st):
     if not st:
         return ""
     b = st["built"]
-    same = [r for r in rows if (r["packing"], r["glue"], r["rel_std"], r["drag"]) ==
-            (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05), "contacts")
+    same = [r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", 0.02), r["drag"]) ==
+            (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05), b.get("sinter", 0.02), "contacts")
             and r["last_chain_Dx"] is not None]
     if len(same) < 2:
         return ""
