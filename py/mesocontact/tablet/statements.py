@@ -13,6 +13,7 @@ from the starting force).
 import glob
 import json
 import os
+import statistics
 import sys
 
 from . import measures
@@ -20,6 +21,7 @@ from .. import theory
 
 PHI_F = 0.05
 TOL_L0 = 0.01  # the tested sample's length against the paper's 0.115: 1 %
+SINTER = 0.02  # the paper's sintering stress d0 p_s/kp (sample.SINTER, which needs YADE)
 
 
 def _load(d, name):
@@ -56,8 +58,29 @@ def _slowest(runs, mode, amp):
     return runs[keys[0]] if keys else None
 
 
-def _pct(x):
-    return f"{100 * x:.2g} %"
+def _pct(x, f=".2g"):
+    return "–" if x is None else f"{100 * x:{f}} %"
+
+
+def crack_plane(pull):
+    """The crack plane at Dx = 0.2 (the weakest plane there) and the contacts that crossed the same
+    plane at Dx = 0 (the nearest profile plane): (weakest, count before), or None if not recorded."""
+    at, p0 = (pull.get("planes_at_marks") or {}).get("0.2"), pull.get("planes_at_start")
+    if not (at and p0):
+        return None
+    w = at["weakest"]
+    return w, min(zip(p0["x"], p0["count"]), key=lambda xc: abs(xc[0] - w["from_left_d0"]))[1]
+
+
+def realizations(d, st):
+    """The factor study's rows (../factors/factors.json) of this sample's preparation, one per seed."""
+    rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
+    if not st:
+        return []
+    b = st["built"]
+    return sorted((r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", SINTER), r["drag"]) ==
+                   (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05), b.get("sinter", SINTER),
+                    "contacts")), key=lambda r: r["seed"])
 
 
 def statements(d):
@@ -140,9 +163,7 @@ def statements(d):
         at = (pull.get("planes_at_marks") or {}).get("0.2")
         p0 = pull.get("planes_at_start")
         if at and p0:
-            w = at["weakest"]
-            # the same plane at Dx = 0: the one nearest to the crack's distance from the left wall
-            before = p0["count"][min(range(len(p0["x"])), key=lambda k: abs(p0["x"][k] - w["from_left_d0"]))]
+            w, before = crack_plane(pull)
             kept = w["count"] / before
             add("at 0.2 d0 the sample has mostly, but not completely lost mechanical contact",
                 f"across the crack plane ({w['from_left_d0']:.1f} / {w['from_right_d0']:.1f} d0 from the walls) "
@@ -311,31 +332,23 @@ def _loose_peak(d):
     """Which preparations of the factor study (../factors/factors.json) peak late, if present."""
     rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
     late = [r for r in rows if r["peak_Dx"] >= 0.1]
-    dense = [r["peak_Dx"] for r in rows if abs(r["L0"] / 0.115 - 1) <= TOL_L0 and r.get("sinter", 0.02) == 0.02]
+    dense = [r["peak_Dx"] for r in rows if abs(r["L0"] / 0.115 - 1) <= TOL_L0 and r.get("sinter", SINTER) == SINTER]
     if not late or not dense:
         return ""
     return (f" In the factor study (../factors/factors.md), at the paper's sintering stress the {len(dense)} pulls of "
             f"samples with L0 within {_pct(TOL_L0)} of 0.115 peak at Dx = {min(dense):.3f}–{max(dense):.3f}; the pulls that "
             "peak at Dx >= 0.1 are: "
-            + "; ".join(f"packing {r['packing']}, glue {r['glue']}, d0 p_s/kp {r.get('sinter', 0.02):g}: Dx "
+            + "; ".join(f"packing {r['packing']}, glue {r['glue']}, d0 p_s/kp {r.get('sinter', SINTER):g}: Dx "
                         f"{r['peak_Dx']:.3f}, solid fraction at the test start {r['test_start']['solid_fraction']:.3f}, "
                         f"L0 {100 * (r['L0'] / 0.115 - 1):+.1f} %" for r in late) + ".")
 
 
 def _realizations(d, st):
     """The last chain over the realizations of this sample's preparation (../factors/factors.json)."""
-    rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
-    if not st:
+    v = sorted(r["last_chain_Dx"] for r in realizations(d, st) if r["last_chain_Dx"] is not None)
+    if len(v) < 2:
         return ""
-    b = st["built"]
-    same = [r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", 0.02), r["drag"]) ==
-            (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05), b.get("sinter", 0.02), "contacts")
-            and r["last_chain_Dx"] is not None]
-    if len(same) < 2:
-        return ""
-    v = sorted(r["last_chain_Dx"] for r in same)
-    m = sum(v) / len(v)
-    sd = (sum((x - m) ** 2 for x in v) / (len(v) - 1)) ** 0.5
+    m, sd = statistics.mean(v), statistics.stdev(v)
     inside = sum(6 <= x <= 10 for x in v)
     return (f"One draw: over {len(v)} realizations of this preparation (../factors/factors.md) the last chain is "
             f"{', '.join(f'{x:.2f}' for x in v)} (mean {m:.2f}, sd {sd:.2f}; {inside} inside 6–10); the paper's 8 is "

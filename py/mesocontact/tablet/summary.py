@@ -16,15 +16,12 @@ import sys
 
 from . import statements as _st
 
-D0 = 0.01  # mm
+_pct = _st._pct
+D0 = 0.01  # the paper's d0 [mm], for kc-study.csv's box sides
 
 
 def _f(x, f=".3g"):
     return "–" if x is None else format(x, f)
-
-
-def _pct(x, f=".2g"):
-    return "–" if x is None else f"{100 * x:{f}} %"
 
 
 def _stages(d, out, runs):
@@ -43,7 +40,7 @@ def _stages(d, out, runs):
             "| stage | x length [d0] | solid fraction ν | C | rattlers |", "|---|---|---|---|---|"]
     for name, s, L in (("sintered", st["sintered"], None), ("released", st["released"], None),
                        ("test start", st["unconfined"]["stats"], L0)):
-        x = (L if L is not None else s["side"][0]) / D0
+        x = (L if L is not None else s["side"][0]) / st["d0"]
         out.append(f"| {name} | {x:.3f} | {s['solid_fraction']:.4f} | {s['coordination']:.2f} | {s['rattlers']} |")
     if L0:
         out += ["", f"L0 = {L0:.5f} mm at the test start, {100 * (L0 / 0.115 - 1):+.2f} % from the paper's 0.115."]
@@ -75,12 +72,11 @@ def _pull(d, out):
             "| when | Dx | contacts | mean over planes | from left [d0] | from right [d0] | all contacts | F/(kp d0) |",
             "|---|---|---|---|---|---|---|---|", _plane("start", p["planes_at_start"]), _plane("peak", p["planes_at_peak"])]
     out += [_plane(f"mark {m}", prof) for m, prof in sorted(p.get("planes_at_marks", {}).items(), key=lambda kv: float(kv[0]))]
-    at, p0 = p.get("planes_at_marks", {}).get("0.2"), p["planes_at_start"]
-    if at:
-        x = at["weakest"]["from_left_d0"]
-        before = min(zip(p0["x"], p0["count"]), key=lambda xc: abs(xc[0] - x))[1]
-        out += ["", f"At Dx = 0.2 the crack plane keeps {at['weakest']['count']} of the {before} contacts that crossed it "
-                f"at Dx = 0 ({_pct(at['weakest']['count'] / before)}), the sample {_pct(at['total'] / p0['total'])} of all "
+    crack = _st.crack_plane(p)
+    if crack:
+        (w, before), at, p0 = crack, p["planes_at_marks"]["0.2"], p["planes_at_start"]
+        out += ["", f"At Dx = 0.2 the crack plane keeps {w['count']} of the {before} contacts that crossed it "
+                f"at Dx = 0 ({_pct(w['count'] / before)}), the sample {_pct(at['total'] / p0['total'])} of all "
                 f"its contacts, and the tension is {_pct(at['F'] / p['max_tension'])} of the peak."]
     aff = _st._load(d, "affine.json")
     if aff:
@@ -180,14 +176,7 @@ def _kc(d, out):
 
 
 def _realizations(d, out):
-    st = _st._load(d, "unconfined.yade.gz.json")
-    rows = _st._load(os.path.join(d, "..", "factors"), "factors.json") or []
-    if not st:
-        return
-    b = st["built"]
-    same = sorted((r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", 0.02), r["drag"])
-                   == (b.get("packing"), b.get("glue"), b.get("rel_std"), b.get("sinter", 0.02), "contacts")),
-                  key=lambda r: r["seed"])
+    same = _st.realizations(d, _st._load(d, "unconfined.yade.gz.json"))
     if len(same) < 2:
         return
     out += [f"## Realizations of this preparation (../factors/factors.json, seeds {', '.join(str(r['seed']) for r in same)})", ""]
