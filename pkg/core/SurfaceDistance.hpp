@@ -2,15 +2,34 @@
 // geometry with a detection distance (pkg/yade/MesoSurfaceGeom.cpp). Header-only; Eigen, no YADE.
 #pragma once
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
 
 namespace meso {
 
+// Nearest point of the segment (a, b) to p; a when the segment is a point.
+inline Eigen::Vector3d nearestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+	const Eigen::Vector3d ab = b - a;
+	const double          l2 = ab.squaredNorm();
+	if (!(l2 > 0)) return a;
+	return a + std::clamp(ab.dot(p - a) / l2, 0.0, 1.0) * ab;
+}
+
 // Nearest point of the triangle (a, b, c) to p, by the Voronoi region of p: a vertex, an edge or the
-// face. Degenerate triangles (collinear vertices) fall into an edge or vertex region and still get
-// the nearest point of that edge or vertex.
+// face. A degenerate triangle (two vertices coincident, or all three on a line to within 1e-10 rad,
+// as in slivers of meshes from STL) is the union of its edges: the nearest point of the nearest edge,
+// since the regions' divisions would be 0/0 there.
 inline Eigen::Vector3d nearestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
 	const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+	if (!(ab.cross(ac).squaredNorm() > 1e-20 * ab.squaredNorm() * ac.squaredNorm())) {
+		const Eigen::Vector3d e[3] = { nearestOnSegment(p, a, b), nearestOnSegment(p, b, c), nearestOnSegment(p, c, a) };
+		int                   best = 0;
+		for (int k = 1; k < 3; ++k)
+			if ((p - e[k]).squaredNorm() < (p - e[best]).squaredNorm()) best = k;
+		return e[best];
+	}
 	const double          d1 = ab.dot(ap), d2 = ac.dot(ap);
 	if (d1 <= 0 && d2 <= 0) return a;
 	const Eigen::Vector3d bp = p - b;

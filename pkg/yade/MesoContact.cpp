@@ -1,5 +1,6 @@
 #include "MesoContact.hpp"
 #include "PyChecks.hpp"
+#include "PyRelease.hpp"
 #include <core/BodyContainer.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
@@ -520,15 +521,23 @@ void Law2_ScGeom_MesoPhys_Meso::addEnergies(const meso::TangentialEnergy& e)
 	scene->energy->add(e.torsion, "mesoTorsion", torsionIx, false);
 }
 
-namespace {
-	// A phys made in Python holds its Python object, whose last reference must go with the GIL held;
-	// the law runs in YADE's engine threads, often with the GIL released (O.run), so a dropped one
-	// is handed to the interpreter, which releases it in its own thread at its next chance.
-	int releaseDropped(void* dropped)
-	{
-		delete static_cast<shared_ptr<IPhys>*>(dropped);
-		return 0;
+using pyrelease::heldByPython;
+using pyrelease::releaseInPython;
+
+bool Law2_ScGeom_MesoPhys_Meso::adopt(shared_ptr<IPhys>& ip, Interaction* I)
+{
+	auto* phys = static_cast<MesoPhys*>(ip.get());
+	if (!phys->pairParams) return dropForeign(ip, I);
+	if (phys->owner && heldByPython(ip)) { // another contact's phys: two contacts must not share one history
+		if (!borrowedWarned.exchange(true))
+			std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2() << " was given the "
+			          << ip->getClassName() << " of another contact (assigned from Python): it is dropped and remade from the bodies' "
+			          << "materials at the next step, so that each contact keeps its own history. (Warned once.)" << std::endl;
+		releaseInPython(ip);
+		return true;
 	}
+	phys->owner = I; // loaded, restored, or made by the Ip2 for this interaction
+	return false;
 }
 
 bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interaction* I)
@@ -540,8 +549,7 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 		          << ip->getClassName() << " not made by Ip2_MesoMat_MesoMat_MesoPhys (e.g. assigned from Python): it is "
 		          << "dropped and remade from the bodies' materials at the next step. To change a live contact's materials, "
 		          << "use Ip2_MesoMat_MesoMat_MesoPhys.adoptMaterials. (Warned once.)" << std::endl;
-	auto* dropped = new shared_ptr<IPhys>(std::move(ip)); // ip is empty now
-	if (Py_AddPendingCall(releaseDropped, dropped) != 0) { } // the interpreter's queue is full: kept, not released unsafely
+	releaseInPython(ip);
 	return true;
 }
 
@@ -660,9 +668,9 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	const int   index = ip->getClassIndex(); // the dispatcher's cached choice outlives a phys replaced from Python
 	if (index != MesoPhys::getClassIndexStatic() && index != MesoTangentialPhys::getClassIndexStatic()) [[unlikely]]
 		return dropForeign(ip, I);
-	auto* phys = static_cast<MesoPhys*>(ip.get());
-	if (!phys->pairParams) [[unlikely]]
-		return dropForeign(ip, I);
+	if (static_cast<MesoPhys*>(ip.get())->owner != I) [[unlikely]]
+		if (adopt(ip, I)) return true;
+	auto* const             phys  = static_cast<MesoPhys*>(ip.get());
 	const auto&             p     = phys->pairParams->params;
 	const Real              delta = geom.penetrationDepth;
 	const Vector3r&         n     = geom.normal; // from 1 to 2
@@ -688,7 +696,11 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		scene->forces.addForce(I->getId1(), force1);
 		scene->forces.addForce(I->getId2(), -force1);
 	}
-	return meso::keepsInteracting(p, delta);
+	if (meso::keepsInteracting(p, delta)) [[likely]]
+		return true;
+	pyrelease::releaseIfHeld(ip); // the contact ends: YADE would release them in this thread
+	pyrelease::releaseIfHeld(ig);
+	return false;
 }
 
 } // namespace yade

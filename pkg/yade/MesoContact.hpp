@@ -171,6 +171,9 @@ public:
 	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	// A loaded contact whose class does not fit its pair's mechanisms would be read as the wrong type.
 	void        postLoad(MesoPhys&);
+	// The interaction whose law step last used this phys (not saved): a phys met on another
+	// interaction was loaded, restored or assigned from Python, and is checked once there.
+	const Interaction* owner = nullptr;
 	REGISTER_CLASS_INDEX(MesoPhys, FrictPhys);
 };
 REGISTER_SERIALIZABLE(MesoPhys);
@@ -248,6 +251,8 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	void              addEnergies(const meso::TangentialEnergy& e);
 	std::atomic<bool> foreignWarned{ false };
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
+	std::atomic<bool> borrowedWarned{ false };
+	bool              adopt(shared_ptr<IPhys>& ip, Interaction* I); // a phys met on this interaction for the first time
 	// The steps of go(), in MesoContact.cpp: the normal force (with its energy when tracked), then
 	// sliding, rolling and torsion from the contact's kinematics.
 	meso::NormalForce normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn);

@@ -3,11 +3,13 @@
 #include "MesoContactStore.hpp"
 #include <core/BodyContainer.hpp>
 #include <core/InteractionContainer.hpp>
+#include <core/InteractionLoop.hpp>
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <lib/serialization/ObjectIO.hpp>
 #include <boost/serialization/shared_ptr.hpp>
 #include <boost/serialization/vector.hpp>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -36,11 +38,47 @@ long MesoContactStore::keep()
 	return static_cast<long>(kept.size());
 }
 
+namespace {
+	// The geometry functors of the scene's interaction loop (null without one).
+	IGeomDispatcher* geometryOf(const Scene& sc)
+	{
+		for (const auto& e : sc.engines)
+			if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get())) return loop->geomDispatcher.get();
+		return nullptr;
+	}
+	// The class of geometry the scene's loop makes for this pair, made once on a scratch interaction
+	// (a restored geometry of another class would be cast to the wrong type by the functor).
+	std::string madeGeometry(IGeomDispatcher& ig2, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2)
+	{
+		try {
+			const shared_ptr<Interaction> probe = ig2.explicitAction(b1, b2, /*force*/ true);
+			return probe->geom ? probe->geom->getClassName() : std::string("none");
+		} catch (const std::exception&) { // no functor for these shapes
+			return "none";
+		}
+	}
+}
+
 long MesoContactStore::restore()
 {
 	Scene* sc       = Omega::instance().getScene().get();
 	long   restored = 0;
 	if (from.lock().get() != sc) kept.clear();
+	// Checked before any is given back: a refused restore changes nothing and keeps the contacts.
+	if (IGeomDispatcher* ig2 = geometryOf(*sc)) {
+		std::map<std::pair<int, int>, std::string> made; // by shape classes: one probe each
+		for (const auto& k : kept) {
+			if (!k.geom || !sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue;
+			const shared_ptr<Body>& b1  = Body::byId(k.id1, sc);
+			const shared_ptr<Body>& b2  = Body::byId(k.id2, sc);
+			const auto              key = std::make_pair(b1->shape->getClassIndex(), b2->shape->getClassIndex());
+			if (!made.count(key)) made[key] = madeGeometry(*ig2, b1, b2);
+			if (made[key] != k.geom->getClassName())
+				throw std::invalid_argument("restore: contact #" + std::to_string(k.id1) + "+#" + std::to_string(k.id2) + " holds a "
+				                            + k.geom->getClassName() + ", but this scene's InteractionLoop makes a " + made[key]
+				                            + " for that pair: the contacts come from a scene with other Ig2 functors; nothing was restored");
+		}
+	}
 	for (const auto& k : kept) {
 		if (!sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue; // a body not on this rank (or no such id)
 		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);

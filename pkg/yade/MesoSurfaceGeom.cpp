@@ -1,8 +1,13 @@
 #include "MesoSurfaceGeom.hpp"
 #include "../core/SurfaceDistance.hpp"
+#include "PyRelease.hpp"
 
 #include <core/Interaction.hpp>
 #include <core/Scene.hpp>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
 
 namespace yade {
 
@@ -24,6 +29,30 @@ namespace {
 	}
 } // namespace
 
+void MesoDetectionCheck::check(const char* functor, Real& factor)
+{
+	if (factor >= 1 && std::isfinite(factor)) {
+		valid = factor;
+		return;
+	}
+	std::ostringstream msg;
+	msg.precision(17);
+	msg << functor << ".interactionDetectionFactor = " << factor
+	    << " is invalid: must be a finite number >= 1 (1: contacts only in overlap; below 1 a sphere passes through the surface)";
+	factor = valid;
+	throw std::invalid_argument(msg.str());
+}
+
+namespace {
+	// A geometry this functor can update: of its own class (a ScGeom6D where it makes one). Another
+	// class (restored or assigned from Python) is replaced by a new one, not cast to the wrong type.
+	bool fits(const shared_ptr<IGeom>& geom, bool sixD)
+	{
+		const int ix = geom->getClassIndex();
+		return ix == ScGeom6D::getClassIndexStatic() || (!sixD && ix == ScGeom::getClassIndexStatic());
+	}
+}
+
 bool Ig2_Facet_Sphere_MesoScGeom::geometry(
         const Facet& facet, Real radius, const State& s1, const State& s2, const Vector3r& shift2, bool force, const shared_ptr<Interaction>& c, bool sixD)
 {
@@ -40,9 +69,10 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	if (dist > 1e-12 * radius) branch /= dist;
 	else { // the centre on the facet: the facet's own normal, toward the side the sphere came from
 		branch = (v[1] - v[0]).cross(v[2] - v[1]).normalized();
-		if (c->geom && YADE_PTR_CAST<ScGeom>(c->geom)->normal.dot(toGlobal * branch) < 0) branch = -branch;
+		if (c->geom && fits(c->geom, false) && YADE_PTR_CAST<ScGeom>(c->geom)->normal.dot(toGlobal * branch) < 0) branch = -branch;
 	}
-	const bool isNew = !c->geom;
+	const bool isNew = !c->geom || !fits(c->geom, sixD);
+	if (c->geom && isNew) pyrelease::releaseIfHeld(c->geom);
 	if (isNew) c->geom = sixD ? shared_ptr<ScGeom>(new ScGeom6D()) : shared_ptr<ScGeom>(new ScGeom());
 	ScGeom& g = *YADE_PTR_CAST<ScGeom>(c->geom);
 	const Vector3r normal = toGlobal * branch;
@@ -73,12 +103,19 @@ bool Ig2_Wall_Sphere_MesoScGeom::go(
 	const Wall& wall   = static_cast<const Wall&>(*cm1);
 	const Real  radius = static_cast<const Sphere&>(*cm2).radius;
 	const int   ax     = wall.axis;
+	if (ax < 0 || ax > 2) [[unlikely]] { // YADE accepts any integer; no exception may leave its OpenMP loop
+		if (!axisWarned.exchange(true))
+			std::cerr << "WARNING Ig2_Wall_Sphere_MesoScGeom: Wall.axis = " << ax << " is invalid: must be 0, 1 or 2 (x, y, z); the wall "
+			          << "makes no contacts. (Warned once.)" << std::endl;
+		return false;
+	}
 	const Real  dist   = s2.pos[ax] + shift2[ax] - s1.pos[ax]; // signed, centre to the wall's plane
 	const Real  overlap = radius - math::abs(dist);
 	if (!c->isReal() && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
 	Vector3r normal = Vector3r::Zero();
 	normal[ax]      = wall.sense == 0 ? (dist > 0 ? 1. : -1.) : (wall.sense > 0 ? 1. : -1.);
-	const bool isNew = !c->geom;
+	const bool isNew = !c->geom || !fits(c->geom, false);
+	if (c->geom && isNew) pyrelease::releaseIfHeld(c->geom);
 	if (isNew) c->geom = shared_ptr<ScGeom>(new ScGeom());
 	// As YADE's: the contact point is the centre projected onto the wall, and radius1 is the sphere's
 	// (the law itself takes a12 = 2a at walls).

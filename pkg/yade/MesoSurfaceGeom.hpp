@@ -8,6 +8,7 @@
 #include <pkg/common/Sphere.hpp>
 #include <pkg/common/Wall.hpp>
 #include <pkg/dem/ScGeom.hpp>
+#include <atomic>
 
 namespace yade {
 
@@ -33,10 +34,20 @@ namespace yade {
 
 #define MESO_DETECTION_DOC                                                                                                             \
 	"A new interaction is made when the gap between the sphere and the surface is below (interactionDetectionFactor - 1) times "       \
-	"the sphere's radius (as Ig2_Box_Sphere_ScGeom does); 1 makes contacts only in overlap, as YADE's functor does. Pair with "        \
-	":yref:`Bo1_Sphere_Aabb.aabbEnlargeFactor` of the same value; mesocontact.scene.set_detection() sets both."
+	"the sphere's radius (as Ig2_Box_Sphere_ScGeom does); 1 makes contacts only in overlap, as YADE's functor does; a finite number "   \
+	">= 1 (checked on assignment). Pair with :yref:`Bo1_Sphere_Aabb.aabbEnlargeFactor` of the same value; "                             \
+	"mesocontact.scene.set_detection() sets both."
+
+// The detection factor as last accepted; an assignment outside [1, inf) is undone and refused
+// (a factor below 1 lets a sphere pass through the surface).
+struct MesoDetectionCheck {
+	Real valid = 1;
+	void check(const char* functor, Real& factor);
+};
 
 class Ig2_Facet_Sphere_MesoScGeom : public IGeomFunctor {
+	MesoDetectionCheck detection;
+
 protected:
 	// The geometry of a sphere against a facet, made (isNew) or updated; false when the pair is not
 	// in range and not yet an interaction. sixD: a new geometry is a ScGeom6D.
@@ -45,13 +56,14 @@ protected:
 
 public:
 	MESO_SURFACE_GO
+	void postLoad(Ig2_Facet_Sphere_MesoScGeom&) { detection.check("Ig2_Facet_Sphere_MesoScGeom", interactionDetectionFactor); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Facet_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Facet` and a :yref:`Sphere` (yade-meso): YADE's "
 		":yref:`Ig2_Facet_Sphere_ScGeom` (shrinkFactor 0, not hertzian) with a detection distance, for the pull-in of reversible "
 		"adhesion. The normal points from the facet's nearest point to the sphere's centre; the overlap is the radius minus "
 		"that distance (negative across a gap); radius1 = 2 radius, radius2 = radius.",
-		((Real, interactionDetectionFactor, 1, , MESO_DETECTION_DOC))
+		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC))
 	);
 	// clang-format on
 	FUNCTOR2D(Facet, Sphere);
@@ -73,13 +85,17 @@ public:
 REGISTER_SERIALIZABLE(Ig2_Facet_Sphere_MesoScGeom6D);
 
 class Ig2_Wall_Sphere_MesoScGeom : public IGeomFunctor {
+	MesoDetectionCheck detection;
+	std::atomic<bool>  axisWarned { false };
+
 public:
 	MESO_SURFACE_GO
+	void postLoad(Ig2_Wall_Sphere_MesoScGeom&) { detection.check("Ig2_Wall_Sphere_MesoScGeom", interactionDetectionFactor); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Wall_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Wall` and a :yref:`Sphere` (yade-meso): YADE's "
 		":yref:`Ig2_Wall_Sphere_ScGeom` (not hertzian) with a detection distance, for the pull-in of reversible adhesion.",
-		((Real, interactionDetectionFactor, 1, , MESO_DETECTION_DOC))
+		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC))
 		((bool, noRatch, true, , "Avoid granular ratcheting (as :yref:`Ig2_Wall_Sphere_ScGeom.noRatch`)."))
 	);
 	// clang-format on

@@ -58,6 +58,9 @@ def set_detection(margin=1.2):
     from yade import wrapper as w
     if not (is_number(margin) and margin >= 1):
         raise ValueError(f"margin = {margin!r} is invalid: must be a number >= 1")
+    for b in O.bodies:  # YADE takes any integer; its own Bo1_Wall_Aabb aborts on another
+        if b is not None and isinstance(b.shape, w.Wall) and b.shape.axis not in (0, 1, 2):
+            raise ValueError(f"set_detection: body #{b.id}'s Wall.axis = {b.shape.axis} is invalid: must be 0, 1 or 2 (x, y, z)")
     gap = adhesion_range()
     radii = [b.shape.radius for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere)]
     if gap <= 0:
@@ -65,21 +68,20 @@ def set_detection(margin=1.2):
     if not radii:
         raise ValueError("set_detection: O.bodies holds no sphere (add the particles first)")
     factor = 1.0 + margin * gap / min(radii)
-    found = False
-    for e in O.engines:
-        if isinstance(e, w.Collider) and hasattr(e, "boundDispatcher"):
-            for f in e.boundDispatcher.functors:
-                if isinstance(f, w.Bo1_Sphere_Aabb):
-                    f.aabbEnlargeFactor, found = factor, True
-        if isinstance(e, w.InteractionLoop):
-            functors = [_with_detection(f) for f in e.geomDispatcher.functors]
-            for f in functors:
-                if hasattr(f, "interactionDetectionFactor"):
-                    f.interactionDetectionFactor = factor
-            if any(a is not b for a, b in zip(functors, e.geomDispatcher.functors)):
-                e.geomDispatcher.functors = functors
-    if not found:
+    bounds = [f for e in O.engines if isinstance(e, w.Collider) and hasattr(e, "boundDispatcher")
+              for f in e.boundDispatcher.functors if isinstance(f, w.Bo1_Sphere_Aabb)]
+    if not bounds:
         raise ValueError("set_detection: no Bo1_Sphere_Aabb in O.engines' collider (define O.engines first)")
+    # every replacement made (and refused) before anything changes
+    loops = [(e, [_with_detection(f) for f in e.geomDispatcher.functors]) for e in O.engines if isinstance(e, w.InteractionLoop)]
+    for f in bounds:
+        f.aabbEnlargeFactor = factor
+    for e, functors in loops:
+        for f in functors:
+            if hasattr(f, "interactionDetectionFactor"):
+                f.interactionDetectionFactor = factor
+        if any(a is not b for a, b in zip(functors, e.geomDispatcher.functors)):
+            e.geomDispatcher.functors = functors
     return factor
 
 

@@ -59,3 +59,27 @@ TEST(NearestOnTriangle, EachRegion)
 	EXPECT_TRUE(meso::nearestOnTriangle(V(-2, 0.5, 1), a, b, c).isApprox(V(0, 0.5, 0)));       // edge ac
 	EXPECT_TRUE(meso::nearestOnTriangle(V(1, 1, -1), a, b, c).isApprox(V(0.5, 0.5, 0)));       // edge bc
 }
+
+// Slivers of meshes from STL: two vertices coincident, or all three on a line. The nearest point is
+// that of the segment they span, found by brute force over the segment.
+TEST(NearestOnTriangle, DegenerateTrianglesAreTheirEdges)
+{
+	auto segmentDistance = [](const V& p, const V& a, const V& b) {
+		double best = 1e300;
+		for (int i = 0; i <= 100000; ++i) best = std::min(best, (p - (a + (i / 100000.0) * (b - a))).norm());
+		return best;
+	};
+	const V a(0, 0, 0), b(1, 0, 0), mid(0.5, 0, 0);
+	const V points[] = { V(0.3, 0.4, 0.2), V(-0.5, 0.1, 0), V(1.7, -0.2, 0.3), V(0.5, 0, 1) };
+	for (const V& p : points) {
+		for (const auto& [v0, v1, v2] : { std::make_tuple(a, a, b), std::make_tuple(a, b, b), std::make_tuple(b, a, a), std::make_tuple(a, mid, b),
+		                                  std::make_tuple(mid, b, a) }) {
+			const V q = meso::nearestOnTriangle(p, v0, v1, v2);
+			ASSERT_TRUE(q.allFinite());
+			EXPECT_NEAR(q.y(), 0, 1e-15);
+			EXPECT_NEAR(q.z(), 0, 1e-15);
+			EXPECT_NEAR((p - q).norm(), segmentDistance(p, a, b), 1e-5);
+		}
+		EXPECT_TRUE(meso::nearestOnTriangle(p, a, a, a).isApprox(a)); // a point
+	}
+}

@@ -59,9 +59,9 @@ def parse_args(figure, argv):
     p.add_argument("--rel-std", type=float, default=0.05,
                    help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
     p.add_argument("--seed", type=int, default=1,
-                   help="factors: the random seed of the gas (positions and radii): another realization of the preparation")
+                   help="factors, fig16, fig18: the random seed of the gas (positions and radii): another realization of the preparation")
     p.add_argument("--sinter", type=float, default=_tablet.SINTER,
-                   help="factors: the sintering stress d0 p_s/kp (the paper's 0.02)")
+                   help="factors, fig16, fig18: the sintering stress d0 p_s/kp (the paper's 0.02)")
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
     p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
@@ -92,6 +92,8 @@ def parse_args(figure, argv):
     a.runs = tuple(a.runs.split(",")) if a.runs else None
     if a.runs and not set(a.runs) <= set(TIMESTEP_RUNS):
         p.error(f"--runs {','.join(a.runs)}: each must be one of {', '.join(TIMESTEP_RUNS)}")
+    if not (math.isfinite(a.sinter) and 0 < a.sinter <= 1):
+        p.error(f"--sinter {a.sinter} is invalid: must lie in (0, 1], a sintering stress d0 p_s/kp")
     periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
     if a.until is not None:
@@ -131,7 +133,7 @@ def _main(figure, a, amps, slow, periods):
         out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods, run_missing=not a.no_run)
     elif figure in ("fig16", "fig18"):
         out = cyclic("tension" if figure == "fig16" else "compression", a.out, amps, a.quick, periods,
-                     slow_amplitudes=slow)
+                     slow_amplitudes=slow, protocol=_preparation(a))
     elif figure == "fig19":
         out = large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0)
     elif figure == "fig17":
@@ -149,6 +151,12 @@ def _main(figure, a, amps, slow, periods):
         return
     print(json.dumps(out, indent=1, default=str)[:4000])
     print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
+
+
+def _preparation(a):
+    """The options of --sinter and --seed that differ from the campaign's preparation (recorded
+    in each run's JSON only then, so that the campaign's own runs stay as they were)."""
+    return dict(**({"sinter": a.sinter} if a.sinter != _tablet.SINTER else {}), **({"seed": a.seed} if a.seed != 1 else {}))
 
 
 def _numbers(parser, option, text, low, high, what):

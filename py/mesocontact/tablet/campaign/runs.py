@@ -37,26 +37,28 @@ def _test(progress):
 
 
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", dt_factor=None,
-               energy=False, cycles=None):
+               energy=False, cycles=None, protocol=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
     campaign's PROTOCOL is read back, not repeated. ``dt_factor`` scales tablet.contact_step (default
     DT_FACTORS[mode]); ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance)
-    to the JSON; ``cycles`` overrides the campaign's cycle count. Returns (description, rows)."""
+    to the JSON; ``cycles`` overrides the campaign's cycle count; ``protocol``: preparation options
+    that differ from PROTOCOL (tablet.prepare's sinter, seed, ...). Returns (description, rows)."""
+    proto = dict(PROTOCOL, **(protocol or {}))
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
     if _out.complete(where):
         with open(os.path.join(where, name + ".json")) as f:
             info = json.load(f)
-        if _protocol_of(info) == PROTOCOL:
+        if _protocol_of(info) == proto:
             return info, read_csv(os.path.join(where, name + ".csv"))
         if progress:
             print(f"{name}: the run in {where} was made from another preparation ({_protocol_of(info)}): made again",
                   flush=True)
     n_cycles = cycles or (QUICK if quick else FULL)["cycles"]
     t0 = time.time()
-    prepare(outdir, quick, progress and is_master())
+    prepare(outdir, quick, progress and is_master(), **(protocol or {}))
     dt_factor = DT_FACTORS[mode] if dt_factor is None else dt_factor
     O.dt *= dt_factor
     bundle = _out.Bundle(where) if is_master() else None
@@ -79,7 +81,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
             "mpi_ranks": _mpy().numThreads if _mpy() else 1, "dt_factor": dt_factor, "final_F": rows[-1][2],
-            "protocol": dict(PROTOCOL)}
+            "protocol": proto}
     if energy:
         info["energy_balance"] = test.energy_balance()
     if bundle is None:
@@ -93,10 +95,12 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     return info, rows
 
 
-def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None):
+def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None,
+           protocol=None):
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
     times, default PERIODS[mode]; thin lines the first, thick the others; the slower periods
-    only for ``slow_amplitudes`` when given); writes the figure's bundle (fig16 or fig18)."""
+    only for ``slow_amplitudes`` when given; ``protocol`` as in run_cycles); writes the figure's
+    bundle (fig16 or fig18)."""
     _uni.check_mode(mode)
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
     periods = tuple(periods or PERIODS[mode])
@@ -105,7 +109,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
         for k, period in enumerate(periods):
             if k > 0 and slow_amplitudes is not None and amplitude not in slow_amplitudes:
                 continue
-            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress)
+            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, protocol=protocol)
             runs[info["name"]] = info
             data[info["name"]] = rows
     fig = "fig16" if mode == "tension" else "fig18"
