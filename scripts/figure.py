@@ -9,7 +9,7 @@ import argparse
 import sys
 
 from mesocontact import batch
-from mesocontact.figures import atlas
+from mesostudies.figures import atlas
 
 p = argparse.ArgumentParser(prog="yade -n -x scripts/figure.py",
                             description="Figures of the papers: YADE pair collisions over the closed form (CSV + PNG).")

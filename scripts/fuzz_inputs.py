@@ -21,7 +21,7 @@ from yade import O, utils
 from yade import wrapper as w
 
 from mesocontact import outputs, params, theory
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/fuzz_inputs.py")
 ap.add_argument("--n", type=int, default=200, help="inputs per category")

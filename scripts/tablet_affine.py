@@ -10,7 +10,8 @@ import sys
 import numpy as np
 from yade import O
 
-from mesocontact import outputs, tablet
+from mesocontact import outputs
+from mesostudies.tablet import sample as tablet
 
 if len(sys.argv) != 3:
     sys.exit("usage: yade -j1 -n -x scripts/tablet_affine.py STATE.yade.gz OUT.json")

@@ -11,7 +11,7 @@ import sys
 import time
 
 from mesocontact import batch
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0])
 

@@ -8,7 +8,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "py"))
-from mesocontact.tablet import branchplot  # noqa: E402
+from mesostudies.tablet import branchplot  # noqa: E402
 
 
 def main(argv):

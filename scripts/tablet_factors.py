@@ -6,6 +6,6 @@
 #   yade -j1 -n -x scripts/tablet_factors.py [--packing full|frictionless] [--glue loading|all] [--drag contacts|lab] [--out DIR] [--quick] [--table]
 import sys
 
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 campaign.main("factors", sys.argv[1:])

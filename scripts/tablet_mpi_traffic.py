@@ -2,7 +2,7 @@
 # estimate, docs/mpi.md):
 #   mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py [--quick] [--out DIR] [--steps S]
 # Loads the unconfined start in DIR (made if missing), splits it as the campaign does
-# (mesocontact.mpi.split_tablet: walls on the master, N-1 slabs along x), runs S steps with the
+# (mesocontact.mpi.split_slabs: walls on the master, N-1 slabs along x), runs S steps with the
 # walls at rest and writes DIR/mpi-traffic-N.json: per worker the particles it owns, its real
 # contacts, the contacts with a body of another worker (both copies counted once per side),
 # the bodies whose states it sends to each other worker per step and the bytes of those
@@ -18,8 +18,9 @@ import time
 
 from yade import O, mpy
 from yade import wrapper as w
-from mesocontact import mpi, tablet
-from mesocontact.tablet import stages, uniaxial
+from mesocontact import mpi
+from mesostudies.tablet import sample as tablet
+from mesostudies.tablet import stages, uniaxial
 
 p = argparse.ArgumentParser(prog="mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py")
 p.add_argument("--quick", action="store_true", help="the 216-particle tablet")
@@ -36,7 +37,7 @@ def measure():
         O.run(a.steps, True)
         print(f"serial: {(time.time() - t0) / a.steps * 1e3:.3f} ms per step over {a.steps} steps", flush=True)
         os._exit(0)
-    mpi.split_tablet(mpy)
+    mpi.split_slabs(mpy)
     mpy.mpirun(1)  # the first parallel step makes the contacts real on every side
     me = mpy.rank
     info = {"rank": me}

@@ -7,7 +7,7 @@ import os
 import sys
 
 from mesocontact import outputs
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 p = argparse.ArgumentParser(prog="tablet_plan.py")
 p.add_argument("table", nargs="?", default="batch/tablet-campaign.table")

@@ -13,7 +13,7 @@ from yade import O, timing
 from yade import wrapper as w
 
 from mesocontact import outputs
-from mesocontact.tablet import campaign, uniaxial
+from mesostudies.tablet import campaign, uniaxial
 
 p = argparse.ArgumentParser(prog="tablet_profile.py")
 p.add_argument("--out", default="results/tablet", help="the campaign directory (its cached unconfined start)")

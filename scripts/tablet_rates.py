@@ -2,6 +2,6 @@
 #   yade -n -x scripts/tablet_rates.py [--quick] [--out DIR] [--periods 30,120,480] [--amplitudes 0.2]
 import sys
 
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 campaign.main("rates", sys.argv[1:])

@@ -3,7 +3,7 @@
 import sys
 
 from mesocontact import batch
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 

@@ -62,7 +62,7 @@ def main(argv):
         return 0
     if not 0.5 < a.factor < 2:
         p.error(f"--factor {a.factor} is invalid: a perturbation of the step, between 0.5 and 2")
-    from mesocontact.tablet.campaign import DT_FACTORS, run_cycles
+    from mesostudies.tablet.campaign import DT_FACTORS, run_cycles
     info, _ = run_cycles(a.out, "tension", a.amplitude, PERIOD, prefix=f"perturbed-x{a.factor:.10g}-",
                          dt_factor=DT_FACTORS["tension"] * a.factor)
     print("peaks", info["peaks"])

@@ -2,6 +2,6 @@
 #   yade -n -x scripts/tablet_timestep.py [--quick] [--out DIR]
 import sys
 
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 campaign.main("timestep", sys.argv[1:])

@@ -7,7 +7,7 @@ import os
 import sys
 
 from mesocontact import outputs
-from mesocontact.tablet import campaign
+from mesostudies.tablet import campaign
 
 p = argparse.ArgumentParser(prog="tablet_totals.py")
 p.add_argument("--out", default="results/tablet")

@@ -17,19 +17,9 @@ Scenes and drivers (inside ``yade``):
 - ``mpi``: the law under ``yade.mpy`` with contact history kept;
 - ``batch``: scripts that also run as ``yade-batch`` jobs.
 
-The agglomerate tablet of Appendix F (a subpackage, inside ``yade`` except where said):
-- ``tablet``: ``sample`` (the sample and its materials; its names are ``tablet``'s too),
-  ``stages`` (its cached preparation states), ``uniaxial`` (unconfined tension and compression),
-  ``snapshots`` (pictures and where it tears), ``roughness`` (the fracture faces, plain Python),
-  ``campaign`` (a subpackage split by job:
-  ``common``, ``runs``, ``plots``, ``report``, ``cli``: Figs. 16-19, the time-step and factor
-  studies, the docs report, plan and totals), ``measures``, ``statements``, ``branchplot`` (the
-  paper's statements as numbers, contact branches: plain Python, from the campaign's files).
-  The old paths (``mesocontact.campaign``, ``mesocontact.statements`` ...) give the same modules.
-
-Figures (a subpackage, inside ``yade``):
-- ``figures``: ``common`` (what they share), ``long`` (long paper Figs. 5-8), ``appendix`` (Figs.
-  9-15), ``short`` (short paper Figs. 5-6), ``atlas`` (every figure behind one command).
+The papers' reproductions (the pair-figure atlas, the agglomerate tablet of Appendix F) are
+studies built on this package, in the package ``mesostudies`` of the source tree's ``studies/``;
+nothing here imports them.
 
 The C++ classes (``MesoMat``, ``MesoPhys``, ``MesoTangentialPhys``, ``Ip2_MesoMat_MesoMat_MesoPhys``,
 ``Law2_ScGeom_MesoPhys_Meso``, ``MesoBackgroundDamping``, ``MesoContactStore`` and the geometry
@@ -37,8 +27,3 @@ functors ``Ig2_Facet_Sphere_MesoScGeom[6D]``, ``Ig2_Wall_Sphere_MesoScGeom``) co
 and appear in ``yade`` like built-in ones.
 """
 __version__ = "0.1"
-
-from . import _moved
-
-_moved.install(__name__)
-del _moved

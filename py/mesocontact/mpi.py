@@ -141,23 +141,23 @@ def follow_master_bodies(mpy):
 
 
 def slab_cuts(workers):
-    """The x positions between ``workers`` slabs of equal particle counts of the loaded tablet,
-    where split_tablet cuts it."""
-    from . import tablet
-    xs = sorted(O.bodies[i].state.pos[0] for i in tablet.sphere_ids())
+    """The x positions between ``workers`` slabs of equal sphere counts of the scene, where
+    split_slabs cuts it."""
+    xs = sorted(b.state.pos[0] for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere))
     return [xs[len(xs) * k // workers] for k in range(1, workers)]
 
 
-def split_tablet(mpy, keep=True):
-    """Splits the loaded tablet over the ranks of ``mpy``: the master holds the walls, each worker
-    a slab along x with an equal share of the particles (the loading axis: a slab's boundary
-    crosses the fewest contacts that the pull stretches). Keeps every contact's state
-    (keep_contacts; keep=False only to show what is lost without it) and lets the workers move
-    their copies of the walls (follow_master_bodies). Run it on every rank, after loading the
-    scene and before mpy.mpirun. Returns the wall ids this rank follows."""
+def split_slabs(mpy, keep=True):
+    """Splits the loaded scene (spheres between boxes, such as a sample between loading walls) over
+    the ranks of ``mpy``: the master holds the boxes, each worker a slab along x with an equal share
+    of the spheres (for a test loaded along x, a slab's boundary crosses the fewest contacts that
+    the loading stretches). Keeps every contact's state (keep_contacts; keep=False only to show
+    what is lost without it) and lets the workers move their copies of the boxes
+    (follow_master_bodies). Run it on every rank, after loading the scene and before mpy.mpirun.
+    Returns the box ids this rank follows."""
     workers = mpy.numThreads - 1
     if workers < 1:
-        raise ValueError(f"ranks = {workers + 1}: the tablet under yade.mpy needs a master and at least one worker")
+        raise ValueError(f"ranks = {workers + 1}: split_slabs needs a master and at least one worker")
     if keep:
         keep_contacts(mpy)
     check_labels()

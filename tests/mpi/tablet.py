@@ -23,8 +23,9 @@ import time
 
 from yade import O
 from yade.wrapper import Sphere
-from mesocontact import mpi, tablet
-from mesocontact.tablet import stages, uniaxial
+from mesocontact import mpi
+from mesostudies.tablet import sample as tablet
+from mesostudies.tablet import stages, uniaxial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from contact_state import compare, contacts  # noqa: E402
@@ -55,7 +56,7 @@ def start():
 
 def swing_filter(workers):
     """A reallocation filter for mpy (``REALLOCATE_FILTER``): the cuts between the workers' slabs
-    (those of mpi.split_tablet, at x = c_k) swing by two radii, c_k + 2 r sin(2 pi step / 1000 +
+    (those of mpi.split_slabs, at x = c_k) swing by two radii, c_k + 2 r sin(2 pi step / 1000 +
     k - 1), and each reallocation moves the particles that are on another worker's side of them
     now, so that bodies change workers back and forth during the cycle."""
     cuts = mpi.slab_cuts(workers)
@@ -83,7 +84,7 @@ elif mode == "mpi":
         unwrapped = mpy.reallocateBodiesToSubdomains
         if realloc:
             mpy.REALLOCATE_FREQUENCY, mpy.REALLOCATE_FILTER = 1, swing_filter(mpy.numThreads - 1)
-        followed = mpi.split_tablet(mpy, keep=realloc or not lose)
+        followed = mpi.split_slabs(mpy, keep=realloc or not lose)
         if realloc and lose:  # the split's contacts kept, the moved bodies' contacts not sent along
             mpy.reallocateBodiesToSubdomains = unwrapped
         kept = None if lose and not realloc else mpi.keep_contacts(mpy)  # the counters (already wrapped)

@@ -1,4 +1,4 @@
-"""mesocontact.tablet.branchplot and scripts/tablet_branches.py on made-up branch files whose means are
+"""mesostudies.tablet.branchplot and scripts/tablet_branches.py on made-up branch files whose means are
 known: the plotted rows' means, the cycle cut, and the errors for bad files."""
 import os
 import subprocess
@@ -6,7 +6,7 @@ import sys
 import tempfile
 import unittest
 
-from mesocontact.tablet import branchplot
+from mesostudies.tablet import branchplot
 from mesocontact.scene_names import BRANCHES
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")

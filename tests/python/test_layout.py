@@ -1,58 +1,77 @@
-"""The package's layers as a newcomer meets them (plain Python, no YADE): the tablet's modules in
-their subpackage, the old import paths giving the same module objects, ``python3 -m`` on an old
-path, and the sample's names reached through ``mesocontact.tablet`` refusing clearly without YADE."""
+"""The library and the studies apart (plain Python, no YADE): no module of ``mesocontact`` imports
+``mesostudies`` (read from the sources, and seen in sys.modules after importing every plain-Python
+module), the old paths of the moved modules are gone, nothing hooks the import system, and a
+study's module still runs with ``python3 -m`` from the source tree."""
+import ast
 import importlib
 import json
 import os
+import pathlib
 import subprocess
 import sys
 import tempfile
 import unittest
 
-import mesocontact
-from mesocontact import tablet
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+LIBRARY = ROOT / "py" / "mesocontact"
+DOCS = ROOT / "docs" / "tablet" / "chosen"
+# the library's modules that need no YADE (the rest import yade at the top)
+PLAIN = ("theory", "params", "checks", "outputs", "scene_names", "calibrate")
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DOCS = os.path.join(ROOT, "docs", "tablet", "chosen")
+
+def imported_names(path):
+    """Every module a source file imports (absolute names; relative ones resolved in the library)."""
+    names = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            names.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            names.add(node.module or "" if node.level == 0 else "mesocontact." + (node.module or ""))
+    return names
 
 
 class Layout(unittest.TestCase):
-    def test_old_paths_give_the_moved_modules(self):
-        for name in ("measures", "statements", "branchplot"):
-            old = importlib.import_module("mesocontact." + name)
-            new = importlib.import_module("mesocontact.tablet." + name)
-            self.assertIs(old, new, name)
-            self.assertIs(getattr(mesocontact, name), new, name)
-            self.assertEqual(old.__name__, "mesocontact.tablet." + name)
-        from mesocontact import measures  # noqa: F401 - the from-import form too
-        self.assertIs(measures, tablet.measures)
+    def test_the_library_imports_no_study(self):
+        found = {str(f.relative_to(ROOT)): sorted(n for n in imported_names(f) if n.split(".")[0] == "mesostudies")
+                 for f in LIBRARY.rglob("*.py")}
+        self.assertEqual({f: n for f, n in found.items() if n}, {})
+        self.assertGreater(len(found), 15)
+        before = set(sys.modules)
+        for name in PLAIN:
+            importlib.import_module("mesocontact." + name)
+        self.assertEqual([m for m in set(sys.modules) - before if m.startswith("mesostudies")], [])
 
-    def test_unknown_names_are_not_aliased(self):
-        with self.assertRaises(ImportError):
-            importlib.import_module("mesocontact.campaigns")
-        self.assertFalse(hasattr(tablet, "no_such_name"))
+    def test_no_old_paths_and_no_import_hooks(self):
+        for old in ("mesocontact.tablet", "mesocontact.figures", "mesocontact.campaign", "mesocontact.statements"):
+            with self.assertRaises(ImportError, msg=old):
+                importlib.import_module(old)
+        import mesocontact  # noqa: F401
+        self.assertEqual([f for f in sys.meta_path if type(f).__module__.startswith(("mesocontact", "mesostudies"))], [])
 
-    def test_sample_names_need_yade_and_say_so(self):
-        if importlib.util.find_spec("yade") is not None:
-            self.skipTest("YADE importable here: the sample loads")
-        with self.assertRaisesRegex(AttributeError, "tablet.prepare: .*needs YADE"):
-            tablet.prepare  # noqa: B018
+    def test_each_package_exports_what_it_names(self):
+        for name in ("mesostudies.tablet.campaign",):
+            spec = importlib.util.find_spec(name)
+            tree = ast.parse(pathlib.Path(spec.origin).read_text())
+            exported = next(ast.literal_eval(n.value) for n in tree.body
+                            if isinstance(n, ast.Assign) and getattr(n.targets[0], "id", "") == "__all__")
+            self.assertEqual([e for e in exported if e.startswith("_")], [], name)
+            bound = {a.asname or a.name for n in tree.body if isinstance(n, ast.ImportFrom) for a in n.names}
+            self.assertEqual(sorted(set(exported) - bound), [], name)
+            self.assertEqual(sorted(bound - set(exported)), [], name)
 
-    def test_old_path_runs_as_a_script(self):
+    def test_a_study_runs_as_a_script(self):
         with tempfile.TemporaryDirectory() as top:
             d = os.path.join(top, "chosen")  # beside ../factors, which the statements' reasons read
             os.mkdir(d)
-            os.symlink(os.path.join(DOCS, "..", "factors"), os.path.join(top, "factors"))
+            os.symlink(DOCS.parent / "factors", os.path.join(top, "factors"))
             for f in os.listdir(DOCS):
                 if f.endswith((".json", ".csv")) and not f.endswith("-branches.csv") and f != "statements.json":
-                    os.symlink(os.path.join(DOCS, f), os.path.join(d, f))
-            env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "py"))
-            for module in ("mesocontact.statements", "mesocontact.tablet.statements"):
-                r = subprocess.run([sys.executable, "-m", module, d], env=env, capture_output=True, text=True)
-                self.assertEqual(r.returncode, 0, r.stderr)
-                with open(os.path.join(d, "statements.json")) as f, open(os.path.join(DOCS, "statements.json")) as g:
-                    self.assertEqual(json.load(f), json.load(g), module)
-                os.remove(os.path.join(d, "statements.json"))
+                    os.symlink(DOCS / f, os.path.join(d, f))
+            env = dict(os.environ, PYTHONPATH=f"{ROOT / 'py'}:{ROOT / 'studies'}")
+            r = subprocess.run([sys.executable, "-m", "mesostudies.tablet.statements", d], env=env, capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(d, "statements.json")) as f, open(DOCS / "statements.json") as g:
+                self.assertEqual(json.load(f), json.load(g))
 
 
 if __name__ == "__main__":

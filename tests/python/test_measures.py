@@ -1,8 +1,8 @@
-"""The cycle measures of mesocontact.tablet.measures on cycles whose answers are known in closed form."""
+"""The cycle measures of mesostudies.tablet.measures on cycles whose answers are known in closed form."""
 import math
 import unittest
 
-from mesocontact.tablet import measures
+from mesostudies.tablet import measures
 
 
 def ellipse(n, amp, k, b, cycles=1):

@@ -1,4 +1,4 @@
-"""mesocontact.tablet.roughness on lattices whose faces are known: flat halves have no roughness,
+"""mesostudies.tablet.roughness on lattices whose faces are known: flat halves have no roughness,
 a step of one layer over half the face gives rms 1/2 and a 5-95 % range of 1, a block in one
 piece is refused, and a VTK snapshot is read back as written."""
 import os
@@ -7,7 +7,7 @@ import unittest
 
 import numpy as np
 
-from mesocontact.tablet import roughness
+from mesostudies.tablet import roughness
 
 R = 0.5  # unit spacing, spheres touching: d0 = 1
 

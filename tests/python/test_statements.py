@@ -1,10 +1,10 @@
-"""mesocontact.tablet.statements on the committed campaign of docs/tablet: one row per statement of
+"""mesostudies.tablet.statements on the committed campaign of docs/tablet: one row per statement of
 Appendix F, numbers read from the files (checked here against the files directly)."""
 import json
 import os
 import unittest
 
-from mesocontact.tablet import statements
+from mesostudies.tablet import statements
 
 DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
 

@@ -4,7 +4,7 @@ import os
 import re
 import unittest
 
-from mesocontact.tablet import statements, summary
+from mesostudies.tablet import statements, summary
 
 DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
 CHOSEN = os.path.join(DOCS, "chosen")
@@ -25,13 +25,13 @@ def missing_numbers(text, generated):
 class TabletDocs(unittest.TestCase):
     def test_summary_is_generated(self):
         self.assertEqual(summary.summary(CHOSEN), _read("chosen", "summary.md"),
-                         "chosen/summary.md differs from what python3 -m mesocontact.tablet.summary writes")
+                         "chosen/summary.md differs from what python3 -m mesostudies.tablet.summary writes")
         self.assertEqual(summary.summary(DOCS), _read("summary.md"), "the first protocol's summary.md")
 
     def test_statements_are_generated(self):
         self.assertEqual(statements.markdown(statements.statements(CHOSEN), "docs/tablet/chosen"),
                          _read("chosen", "statements.md"),
-                         "chosen/statements.md differs from what python3 -m mesocontact.tablet.statements writes")
+                         "chosen/statements.md differs from what python3 -m mesostudies.tablet.statements writes")
 
     def generated(self):
         return "".join(_read(*p) for p in (("chosen", "summary.md"), ("chosen", "statements.md"),

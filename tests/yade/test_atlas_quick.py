@@ -9,7 +9,7 @@ import json
 import os
 import tempfile
 
-from mesocontact.figures import atlas
+from mesostudies.figures import atlas
 from harness import check, finish
 
 out = tempfile.mkdtemp(prefix="atlas-")

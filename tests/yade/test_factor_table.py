@@ -8,7 +8,7 @@ import os
 import shutil
 import tempfile
 
-from mesocontact.tablet import campaign, stages
+from mesostudies.tablet import campaign, stages
 import harness
 from harness import check, finish
 

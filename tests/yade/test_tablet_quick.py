@@ -13,8 +13,9 @@ import tempfile
 import numpy as np
 from yade import O, utils
 from yade import wrapper as w
-from mesocontact import outputs, tablet
-from mesocontact.tablet import campaign, snapshots, uniaxial
+from mesocontact import outputs
+from mesostudies.tablet import sample as tablet
+from mesostudies.tablet import campaign, snapshots, uniaxial
 from harness import check, finish
 
 
@@ -83,7 +84,7 @@ out = tempfile.mkdtemp(prefix="tablet-quick-")
 info = campaign.prepare(out, quick=True)
 # Stage files that cannot be used are made again, not loaded: a truncated state, a truncated
 # description, a state without its description.
-from mesocontact.tablet import stages  # noqa: E402
+from mesostudies.tablet import stages  # noqa: E402
 
 p_unc = stages.path("unconfined", out, quick=True)
 for damage in ("truncated state", "truncated JSON", "kc_over_kp as text", "no JSON"):
@@ -210,7 +211,7 @@ except ValueError as e:
 
 # Every run records the preparation it was made from; a file without it is of the first protocol.
 protos = [info["protocol"] for m in summaries for info in summaries[m]["runs"].values()]
-check(all(p == campaign.PROTOCOL for p in protos) and campaign._protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
+check(all(p == campaign.PROTOCOL for p in protos) and campaign.protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
       f"runs record their preparation {protos[0]}")
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no

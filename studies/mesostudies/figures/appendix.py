@@ -5,8 +5,8 @@ import math
 import os
 import time
 
-from .. import loop as _loop
-from .. import pair, theory
+from mesocontact import loop as _loop
+from mesocontact import pair, theory
 from .common import (
     DENSITY, PAPER, RADIUS, fig_note, pair_reduced_mass, plt, print_progress, save_figure,
     write_csv,

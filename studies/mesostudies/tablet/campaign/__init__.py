@@ -13,22 +13,21 @@ Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.c
 
 The package, by job: ``common`` (constants, run places, the MPI mode), ``runs`` (every test the
 figures need), ``plots`` (their pictures), ``report`` (tables, the docs copy, plan and totals) and
-``cli`` (the scripts' options). Every name is also reachable here, as before the split.
+``cli`` (the scripts' options). What the scripts and tests use is reachable here; the rest from
+its module.
 """
-from .common import (  # noqa: F401
-    COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FIRST_PROTOCOL, FULL, GAP_AREA, PERIODS,
-    PROTOCOL, PULL_SPEED, QUICK, RATE_PERIODS, SLOW, TENSION_AMPLITUDES, _csv_text, _protocol_of,
-    cycle_peaks, is_master, mpy, prepare, read_csv, root, run_dir, run_name, use_mpi,)
-from .plots import (  # noqa: F401
-    AMPLITUDE_COLOURS, PAPER_LARGEST, _arrow, plot_compression, plot_pull, plot_rates,
-    plot_cycles,)
-from .runs import (  # noqa: F401
-    FACTOR_VARIANTS, FIG19_DX, PERTURBED, PERTURBED_MORE, TIMESTEP_FACTORS, TIMESTEP_PULL_UNTIL,
-    TIMESTEP_RUNS, TIMESTEP_TOLERANCE, _spread_widths, _test, cyclic, drag_share, factor_dir,
-    factor_run, large_compression, pull, rates, run_cycles, timestep_markdown, timestep_run,
+from .common import (
+    DT_FACTORS, FIG17_DX, FIRST_PROTOCOL, PERIODS, PROTOCOL, PULL_SPEED, cycle_peaks, is_master, mpy,
+    prepare, protocol_of, read_csv, root, run_dir, run_name, use_mpi,)
+from .runs import (
+    cyclic, drag_share, factor_dir, factor_run, large_compression, pull, rates, run_cycles,
     timestep_study, timestep_table,)
-from .report import (  # noqa: F401
-    JOBS_LOG, _factor_row, _job_steps, _stage_numbers, factor_report, factor_table, log_job,
-    peaks_table, plan, report, restore, totals,)
-from .cli import (  # noqa: F401
-    FIGURES, MPI_FIGURES, _main, _numbers, main, parse_args,)
+from .report import factor_report, factor_table, log_job, peaks_table, plan, report, restore, totals
+from .cli import FIGURES, main, parse_args
+
+__all__ = [
+    "DT_FACTORS", "FIG17_DX", "FIRST_PROTOCOL", "PERIODS", "PROTOCOL", "PULL_SPEED", "cycle_peaks", "is_master", "mpy",
+    "prepare", "protocol_of", "read_csv", "root", "run_dir", "run_name", "use_mpi", "cyclic", "drag_share", "factor_dir",
+    "factor_run", "large_compression", "pull", "rates", "run_cycles", "timestep_study", "timestep_table", "factor_report",
+    "factor_table", "log_job", "peaks_table", "plan", "report", "restore", "totals", "FIGURES", "main", "parse_args",
+]

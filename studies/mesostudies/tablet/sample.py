@@ -6,8 +6,8 @@ from the start, are compacted from a gas by six walls (YADE boxes, so that rolli
 act on the walls' ScGeom6D too) driven by YADE's ``TriaxialStressController``, pressure-sintered
 at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3, and saved:
 
-    from mesocontact import tablet
-    info = tablet.prepare("released.yade.gz")    # or stages.ensure("released", DIR): reuse
+    from mesostudies.tablet import sample
+    info = sample.prepare("released.yade.gz")    # or stages.ensure("released", DIR): reuse
     print(info["released"]["solid_fraction"])
 
 While the tablet is compacted and sintered the walls are a smooth, non-adhesive mould
@@ -26,11 +26,11 @@ try:
     from yade import utils as _utils
     from yade import wrapper as _w
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.tablet.sample needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesostudies.tablet.sample needs YADE: run it inside `yade`") from _exc
 
-from .. import outputs as _outputs
-from .. import params as _params
-from .. import scene as _scene
+from mesocontact import outputs as _outputs
+from mesocontact import params as _params
+from mesocontact import scene as _scene
 
 D0 = 0.01          # mean primary-particle diameter [mm]
 DENSITY = 2.0      # 2000 kg/m^3 in mg/mm^3

@@ -62,7 +62,8 @@ FIRST_PROTOCOL = {"packing": "full", "glue": "loading", "rel_std": 0.05}  # what
 PROTOCOL = {"packing": "frictionless", "glue": "sinter", "rel_std": 0.1}
 
 
-def _protocol_of(info):
+def protocol_of(info):
+    """The preparation a run's description records (FIRST_PROTOCOL for runs made before records)."""
     return dict(FIRST_PROTOCOL, **(info.get("protocol") or {}))
 
 

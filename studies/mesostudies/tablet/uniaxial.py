@@ -25,11 +25,11 @@ try:
     from yade import Vector3
     from yade import plot as _plot
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.tablet.uniaxial needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesostudies.tablet.uniaxial needs YADE: run it inside `yade`") from _exc
 
-from .. import loop as _loop
-from .. import scene as _scene
-from . import sample as _tablet
+from mesocontact import loop as _loop
+from mesocontact import scene as _scene
+from . import sample
 
 MODES = ("tension", "compression")
 
@@ -45,10 +45,10 @@ def check_mode(mode):
 def crossing_time():
     """Time an elastic wave needs to cross the sample along x: L0/c with c = d0 sqrt(kp/m) of
     the mean particle (a linear chain of springs kp and masses m at spacing d0) [us]."""
-    ids = _tablet.sphere_ids()
+    ids = sample.sphere_ids()
     m = sum(O.bodies[i].state.mass for i in ids) / len(ids)
-    lo, hi = _tablet.inner_box()
-    return (hi[0] - lo[0]) / (_tablet.D0 * math.sqrt(_tablet.KP / m))
+    lo, hi = sample.inner_box()
+    return (hi[0] - lo[0]) / (sample.D0 * math.sqrt(sample.KP / m))
 
 
 def _before_newton(extra):
@@ -73,7 +73,7 @@ class _Servo:
 
     def __call__(self):
         if O.iter % 100 == 0 or not self.k:
-            self.k = {w: max(_wall_stiffness(w), _tablet.KP) for w in (self.left, self.right)}
+            self.k = {w: max(_wall_stiffness(w), sample.KP) for w in (self.left, self.right)}
         for wid, outward in ((self.right, 1.0), (self.left, -1.0)):
             push = outward * O.forces.f(wid)[0]  # > 0: the sample pushes the wall out
             v = self.gain * (push - self.target) / (self.k[wid] * O.dt)
@@ -88,23 +88,23 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
     wall force is within tol_force kp d0 of p_r L_y L_z and the kinetic energy below tol_ke of
     the energy scale; the background drag then acts relative to the contacts, as in the tests.
     Returns the description of this stage."""
-    walls = _tablet.wall_ids()
-    lo, hi = _tablet.inner_box()
+    walls = sample.wall_ids()
+    lo, hi = sample.inner_box()
     area = (hi[1] - lo[1]) * (hi[2] - lo[2])
     for name in ("bottom", "top", "back", "front"):
         if name in walls:
             O.bodies.erase(walls[name])
     O.engines = [e for e in O.engines if not isinstance(e, _w.TriaxialStressController)]
-    target = _tablet.RELEASE_RATIO * _tablet.SINTER_STRESS * area
+    target = sample.RELEASE_RATIO * sample.SINTER_STRESS * area
     _before_newton([_loop.runner(_Servo(walls["left"], walls["right"], target), 1, "servo")])
-    scale = _tablet.KP * _tablet.D0
+    scale = sample.KP * sample.D0
 
     def measure():
         err = max(abs(s * O.forces.f(w)[0] - target) for w, s in ((walls["right"], 1), (walls["left"], -1))) / scale
-        ke = _tablet.kinetic_energy() / _tablet.energy_scale(len(_tablet.sphere_ids()))
+        ke = sample.kinetic_energy() / sample.energy_scale(len(sample.sphere_ids()))
         return err < tol_force and ke < tol_ke, f"|F - p_r A|/(kp d0) = {err:.2e}  E_kin/E_ref = {ke:.2e}", (err, ke)
 
-    steps, (err, ke) = _tablet.run_until_static(measure, "unconfined relaxation", max_steps=max_steps, progress=progress)
+    steps, (err, ke) = sample.run_until_static(measure, "unconfined relaxation", max_steps=max_steps, progress=progress)
     O.engines = [e for e in O.engines if e.label != "servo"]
     for w in (walls["left"], walls["right"]):
         O.bodies[w].state.vel = Vector3(0, 0, 0)
@@ -112,7 +112,7 @@ def make_unconfined(progress=True, tol_force=1e-4, tol_ke=1e-4, max_steps=200000
         if isinstance(e, _w.MesoBackgroundDamping):
             e.reference = "contacts"
     return {"steps": steps, "force_error": err, "kinetic_energy_ratio": ke, "target_force": target,
-            "stats": _tablet.stats()}
+            "stats": sample.stats()}
 
 
 def crossing_profile(spacing=0.25):
@@ -121,10 +121,10 @@ def crossing_profile(spacing=0.25):
     a particle-wall contact those between the centre and the wall's face. Returns {'x': plane
     distances from the left face [d0], 'count': contacts crossing each, 'mean', 'length_d0',
     'total' (all contacts in overlap), 'weakest': weakest_plane()}; the weakest plane is where a pull tears the sample."""
-    walls = _tablet.wall_ids()
-    lo, hi = _tablet.inner_box()
+    walls = sample.wall_ids()
+    lo, hi = sample.inner_box()
     x0, x1 = lo[0], hi[0]
-    n = max(1, int((x1 - x0) / (spacing * _tablet.D0)))
+    n = max(1, int((x1 - x0) / (spacing * sample.D0)))
     xs = [x0 + (k + 0.5) * (x1 - x0) / n for k in range(n)]
     diff, total = [0] * (n + 1), 0
     face = {walls["left"]: x0, walls["right"]: x1}
@@ -144,8 +144,8 @@ def crossing_profile(spacing=0.25):
     for k in range(n):
         run += diff[k]
         count.append(run)
-    prof = {"x": [(x - x0) / _tablet.D0 for x in xs], "count": count, "mean": sum(count) / n,
-            "length_d0": (x1 - x0) / _tablet.D0, "total": total}
+    prof = {"x": [(x - x0) / sample.D0 for x in xs], "count": count, "mean": sum(count) / n,
+            "length_d0": (x1 - x0) / sample.D0, "total": total}
     prof["weakest"] = weakest_plane(prof)
     return prof
 
@@ -181,7 +181,7 @@ class _WallWork:
 def _energy_total():
     """O.energy without YADE's 'kinetic' (which counts the moving walls too) plus the particles'
     kinetic energy [nJ]."""
-    return sum(O.energy[k] for k in O.energy.keys() if k != "kinetic") + _tablet.kinetic_energy()
+    return sum(O.energy[k] for k in O.energy.keys() if k != "kinetic") + sample.kinetic_energy()
 
 
 class Test:
@@ -199,7 +199,7 @@ class Test:
         self.records = records
         self._run = run or (lambda n: O.run(n, True))
         self._share = share or (lambda x: x)
-        walls = _tablet.wall_ids()
+        walls = sample.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
         O.step()  # forces are not saved: one step with the walls at rest restores them
         self.L0 = self.length()
@@ -223,16 +223,16 @@ class Test:
                 "residual_over_gross": (d_e - self._work.work) / self._work.gross if self._work.gross else None}
 
     def length(self):
-        lo, hi = _tablet.inner_box()
+        lo, hi = sample.inner_box()
         return hi[0] - lo[0]
 
     def dx(self):
-        return (self.length() - self.L0) / _tablet.D0
+        return (self.length() - self.L0) / sample.D0
 
     def force(self):
         """Force on the loading walls, > 0 in compression, over kp d0."""
         f = 0.5 * (O.forces.f(self.right)[0] - O.forces.f(self.left)[0])
-        return f / (_tablet.KP * _tablet.D0)
+        return f / (sample.KP * sample.D0)
 
     def _install(self, motion, every, on_record):
         """Replaces the previous motion engines and recorder by these."""
@@ -269,7 +269,7 @@ class Test:
             steps_per_cycle = int(round(period * self.t_cross / O.dt))
         steps_per_cycle = max(8, 8 * (int(steps_per_cycle) // 8))
         every = every or max(1, steps_per_cycle // 400)
-        w = 0.5 * amplitude * _tablet.D0  # each wall moves by w at the peak
+        w = 0.5 * amplitude * sample.D0  # each wall moves by w at the peak
         freq = 1.0 / (steps_per_cycle * O.dt)
         phase = -2 * math.pi * freq * O.time  # the cosine starts now
         motion = [_w.HarmonicMotionEngine(ids=[wid], A=Vector3(a, 0, 0), f=Vector3(freq, 0, 0),
@@ -303,7 +303,7 @@ class Test:
 
     def compress(self, speed, until=3.0, every=100, on_record=None, stop=None):
         """Monotonic compression: each wall moves in at ``speed`` [mm/us] until Dx = -until."""
-        if not 0 < until < 0.9 * self.L0 / _tablet.D0:
+        if not 0 < until < 0.9 * self.L0 / sample.D0:
             raise ValueError(f"until = {until} is invalid: between 0 and 90 % of the sample's length in d0")
         return self._monotonic(-1.0, speed, until, every, on_record, stop)
 
@@ -312,11 +312,11 @@ class Test:
     def _monotonic(self, sign, speed, until, every, on_record, stop):
         if not speed > 0:
             raise ValueError(f"speed = {speed} is invalid: must be > 0 [mm/us]")
-        need = until * _tablet.D0 / (2 * speed * O.dt)  # both walls move
+        need = until * sample.D0 / (2 * speed * O.dt)  # both walls move
         if not need <= self.MAX_STEPS:
             raise ValueError(f"speed = {speed:g} is invalid: the walls would need {need:.3g} steps to reach "
                              f"Dx = {sign * until:g} (at most {self.MAX_STEPS:.0e}; speed >= "
-                             f"{until * _tablet.D0 / (2 * self.MAX_STEPS * O.dt):.3g} mm/us)")
+                             f"{until * sample.D0 / (2 * self.MAX_STEPS * O.dt):.3g} mm/us)")
         motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(sign * s, 0, 0), velocity=speed,
                                        label=f"pull_{wid}")
                   for wid, s in ((self.right, 1.0), (self.left, -1.0))]

@@ -14,13 +14,13 @@ try:
     from yade import O
     from yade import export as _export
 except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesocontact.tablet.snapshots needs YADE: run it inside `yade`") from _exc
+    raise ImportError("mesostudies.tablet.snapshots needs YADE: run it inside `yade`") from _exc
 
-from . import sample as _tablet
+from . import sample
 
 
 def _spheres():
-    ids = _tablet.sphere_ids()
+    ids = sample.sphere_ids()
     pos = np.array([list(O.bodies[i].state.pos) for i in ids])
     rad = np.array([O.bodies[i].shape.radius for i in ids])
     return ids, pos, rad
@@ -40,11 +40,11 @@ def window(margin=1.0, stretch=0.0):
     d0 wider on each side in x (room for a pull): one window for every panel of a series."""
     _, pos, rad = _spheres()
     x0, x1 = (pos[:, 0] - rad).min(), (pos[:, 0] + rad).max()
-    for i in _tablet.wall_ids().values():
+    for i in sample.wall_ids().values():
         b = O.bodies[i]
         x0, x1 = min(x0, b.state.pos[0] - b.shape.extents[0]), max(x1, b.state.pos[0] + b.shape.extents[0])
-    m = margin * _tablet.D0
-    return (x0 - m - stretch * _tablet.D0, x1 + m + stretch * _tablet.D0,
+    m = margin * sample.D0
+    return (x0 - m - stretch * sample.D0, x1 + m + stretch * sample.D0,
             (pos[:, 2] - rad).min() - m, (pos[:, 2] + rad).max() + m)
 
 
@@ -87,7 +87,7 @@ def png(path, title="", win=None, pixel=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    pixel = pixel or _tablet.D0 / 16
+    pixel = pixel or sample.D0 / 16
     win = win or window()
     _, pos, rad = _spheres()
     ybuf, owner, normal = depth_buffer(win, pixel)
@@ -100,7 +100,7 @@ def png(path, title="", win=None, pixel=None):
     x0, x1, z0, z1 = win
     xs = x0 + (np.arange(img.shape[1]) + 0.5) * pixel
     zs = z0 + (np.arange(img.shape[0]) + 0.5) * pixel
-    for i in _tablet.wall_ids().values():  # the walls: grey, behind nothing
+    for i in sample.wall_ids().values():  # the walls: grey, behind nothing
         b = O.bodies[i]
         c, e = b.state.pos, b.shape.extents
         inx = (xs >= c[0] - e[0]) & (xs <= c[0] + e[0])
@@ -125,18 +125,18 @@ def visible_gap(depth_behind=3.0, band=0.6, pixel=None):
     between the inner faces of the x walls (one d0 in from each). The front face is the median
     surface depth seen in that window. A sample seen whole gives 0; the paper's "first
     visible gap" is the first Dx where this reaches one d0^2."""
-    pixel = pixel or _tablet.D0 / 10
+    pixel = pixel or sample.D0 / 10
     _, pos, rad = _spheres()
-    lo, hi = _tablet.inner_box()
+    lo, hi = sample.inner_box()
     zc, zh = pos[:, 2].mean(), 0.5 * band * ((pos[:, 2] + rad).max() - (pos[:, 2] - rad).min())
-    x0 = (lo[0] if lo[0] is not None else (pos[:, 0] - rad).min()) + _tablet.D0
-    x1 = (hi[0] if hi[0] is not None else (pos[:, 0] + rad).max()) - _tablet.D0
+    x0 = (lo[0] if lo[0] is not None else (pos[:, 0] - rad).min()) + sample.D0
+    x1 = (hi[0] if hi[0] is not None else (pos[:, 0] + rad).max()) - sample.D0
     if x1 <= x0:
         return 0.0
     ybuf, _, _ = depth_buffer((x0, x1, zc - zh, zc + zh), pixel)
     front = np.median(ybuf[np.isfinite(ybuf)]) if np.isfinite(ybuf).any() else 0.0
-    deep = ybuf >= front + depth_behind * _tablet.D0
-    return _largest_region(deep) * pixel * pixel / _tablet.D0 ** 2
+    deep = ybuf >= front + depth_behind * sample.D0
+    return _largest_region(deep) * pixel * pixel / sample.D0 ** 2
 
 
 def _largest_region(mask):
@@ -163,7 +163,7 @@ def _largest_region(mask):
 def vtk(base, label):
     """Writes ``base-spheres-<label>.vtk`` (label: a non-negative integer)."""
     exporter = _export.VTKExporter(base)
-    y0 = min(O.bodies[i].state.pos[1] for i in _tablet.sphere_ids())
+    y0 = min(O.bodies[i].state.pos[1] for i in sample.sphere_ids())
     exporter.exportSpheres(what=dict(depth=f"b.state.pos[1] - {y0!r}", velocity="b.state.vel"), numLabel=int(label),
                            comment=f"meso-particle tablet, iter {O.iter}")
 
@@ -171,7 +171,7 @@ def vtk(base, label):
 def see_through_holes(pixel=None):
     """Area [d0^2] of the holes in the projection of the spheres along y: empty pixels that are
     not connected (4-neighbours) to the border of the picture. 0 while the sample is opaque."""
-    pixel = pixel or _tablet.D0 / 10
+    pixel = pixel or sample.D0 / 10
     _, pos, rad = _spheres()
     x0, z0 = pos[:, 0].min() - rad.max() - 2 * pixel, pos[:, 2].min() - rad.max() - 2 * pixel
     nx = int((pos[:, 0].max() + rad.max() + 2 * pixel - x0) / pixel) + 1
@@ -199,7 +199,7 @@ def see_through_holes(pixel=None):
             break
         outside = grown
     holes = ~full & ~outside
-    return holes.sum() * pixel * pixel / (_tablet.D0 ** 2)
+    return holes.sum() * pixel * pixel / (sample.D0 ** 2)
 
 
 def walls_connected(left, right):

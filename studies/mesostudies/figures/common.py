@@ -10,7 +10,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .. import outputs, params  # noqa: E402
+from mesocontact import outputs, params  # noqa: E402
 
 # Fig. 5-8 parameters (docs/model.md §9): k1 = 1e2, kp = 5e2, kc = 1e2 N/m, radius 1.1 mm, 2000 kg/m3.
 PAPER = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1)

@@ -4,14 +4,14 @@
     yade -n -x scripts/figure.py --all [--no-tablet] [--quick]
 
 Pair figures (long 5-15, short 5-6) run YADE collisions over the closed form; long 16-19 are
-the tablet of Appendix F (``mesocontact.tablet.campaign``, hours, runs cached in --tablet-out). Every
+the tablet of Appendix F (``mesostudies.tablet.campaign``, hours, runs cached in --tablet-out). Every
 figure writes CSV + PNG into DIR and its summary into DIR/atlas.json."""
 import fcntl
 import json
 import os
 import time
 
-from .. import outputs
+from mesocontact import outputs
 from . import appendix as fa, long as figures, short as fs
 
 LONG_PAIR = (5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)

@@ -6,10 +6,10 @@ import tempfile
 import time
 
 
-from ... import mpi as _mpi
-from ... import outputs as _out
+from mesocontact import mpi as _mpi
+from mesocontact import outputs as _out
 from .. import stages as _stages
-from .. import sample as _tablet
+from .. import sample
 from .common import (
     FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
 )
@@ -48,19 +48,19 @@ def parse_args(figure, argv):
     p.add_argument("--factors", default=None,
                    help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and the perturbed 1.000001, 1.000002, 0.999999)")
     p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
-    p.add_argument("--material", default="appendixF", choices=sorted(_tablet.MATERIALS),
+    p.add_argument("--material", default="appendixF", choices=sorted(sample.MATERIALS),
                    help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
     p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
     p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
-    p.add_argument("--packing", default="full", choices=_tablet.PACKINGS,
+    p.add_argument("--packing", default="full", choices=sample.PACKINGS,
                    help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")
-    p.add_argument("--glue", default="loading", choices=_tablet.GLUES,
+    p.add_argument("--glue", default="loading", choices=sample.GLUES,
                    help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
     p.add_argument("--rel-std", type=float, default=0.05,
                    help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
     p.add_argument("--seed", type=int, default=1,
                    help="factors, fig16, fig18: the random seed of the gas (positions and radii): another realization of the preparation")
-    p.add_argument("--sinter", type=float, default=_tablet.SINTER,
+    p.add_argument("--sinter", type=float, default=sample.SINTER,
                    help="factors, fig16, fig18: the sintering stress d0 p_s/kp (the paper's 0.02)")
     p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
                    help="factors: the background drag's reference in the pull")
@@ -156,7 +156,7 @@ def _main(figure, a, amps, slow, periods):
 def _preparation(a):
     """The options of --sinter and --seed that differ from the campaign's preparation (recorded
     in each run's JSON only then, so that the campaign's own runs stay as they were)."""
-    return dict(**({"sinter": a.sinter} if a.sinter != _tablet.SINTER else {}), **({"seed": a.seed} if a.seed != 1 else {}))
+    return dict(**({"sinter": a.sinter} if a.sinter != sample.SINTER else {}), **({"seed": a.seed} if a.seed != 1 else {}))
 
 
 def _numbers(parser, option, text, low, high, what):

@@ -20,7 +20,7 @@ from contextlib import contextmanager
 
 from yade import O
 
-from . import sample as _tablet
+from . import sample
 from . import uniaxial as _uni
 
 STAGES = ("released", "unconfined")
@@ -46,9 +46,9 @@ def _locked(outdir):
 
 def _config(quick, material, kc_over_kp, n, packing="full", glue="loading", rel_std=0.05, seed=1, sinter=None):
     n = n or (QUICK_N if quick else 1728)
-    kc = _tablet.particle_material(material)["kc"] / _tablet.KP if kc_over_kp is None else float(kc_over_kp)
+    kc = sample.particle_material(material)["kc"] / sample.KP if kc_over_kp is None else float(kc_over_kp)
     return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue, "rel_std": float(rel_std),
-            "seed": int(seed), "sinter": float(_tablet.SINTER if sinter is None else sinter)}
+            "seed": int(seed), "sinter": float(sample.SINTER if sinter is None else sinter)}
 
 
 class _Unreadable(Exception):
@@ -63,7 +63,7 @@ def _load(p, config):
         have = {"n": int(built["n"]), "material": built["material"], "kc_over_kp": float(built["kc_over_kp"]),
                 "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),  # older files: the first protocol
                 "rel_std": float(built.get("rel_std", 0.05)), "seed": int(built.get("seed", 1)),
-                "sinter": float(built.get("sinter", _tablet.SINTER))}
+                "sinter": float(built.get("sinter", sample.SINTER))}
     except (OSError, ValueError, KeyError, TypeError, AttributeError) as e:  # a number as text, a list, ...
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
     if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std", "sinter") else have[k] != config[k] for k in config):
@@ -72,9 +72,9 @@ def _load(p, config):
         O.load(p)
     except (RuntimeError, MemoryError, ValueError, TypeError) as e:  # MemoryError: an earlier version of the plugin's classes; ValueError: a value the classes refuse
         raise _Unreadable(f"{p}: {type(e).__name__}: {e}")
-    n = len(_tablet.sphere_ids())
-    if n != config["n"] or not {"left", "right"} <= set(_tablet.wall_ids()):
-        raise _Unreadable(f"{p}: not the tablet its JSON describes ({n} spheres, walls {sorted(_tablet.wall_ids())})")
+    n = len(sample.sphere_ids())
+    if n != config["n"] or not {"left", "right"} <= set(sample.wall_ids()):
+        raise _Unreadable(f"{p}: not the tablet its JSON describes ({n} spheres, walls {sorted(sample.wall_ids())})")
     return info
 
 
@@ -113,7 +113,7 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
         if stage == "released":
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
-            return _tablet.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
+            return sample.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
                                    progress=progress, packing=packing, glue=glue, rel_std=rel_std, seed=seed,
                                    sinter=config["sinter"])
     info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue, rel_std, seed, sinter)
@@ -124,5 +124,5 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
         if progress:
             print(f"making the unconfined start {p}", flush=True)
         info = dict(info, unconfined=_uni.make_unconfined(progress=progress))
-        _tablet.save_atomic(p, info)
+        sample.save_atomic(p, info)
         return info

@@ -6,7 +6,7 @@ import math
 import os
 import time
 
-from .. import pair, params, theory
+from mesocontact import pair, params, theory
 from .common import (
     DENSITY, PAPER, PARAM_NOTE, RADIUS, fig_note, pair_reduced_mass, plt, print_progress,
     save_figure, write_csv,

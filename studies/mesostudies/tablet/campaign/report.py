@@ -7,10 +7,10 @@ import time
 
 from yade import O
 
-from ... import outputs as _out
+from mesocontact import outputs as _out
 from .. import snapshots as _snap
 from .. import stages as _stages
-from .. import sample as _tablet
+from .. import sample
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS,
@@ -20,7 +20,7 @@ from .common import (
 
 def _stage_numbers(s, L=None):
     return {"solid_fraction": s["solid_fraction"], "coordination": s["coordination"], "rattlers": s["rattlers"],
-            "Lx_d0": (L if L is not None else s["side"][0]) / _tablet.D0}
+            "Lx_d0": (L if L is not None else s["side"][0]) / sample.D0}
 
 
 # Where the crack runs: the weakest plane at the paper's panel (b), Dx = 0.81, before the first
@@ -33,7 +33,7 @@ def _weakest(prof, L0):
     """The weakest plane of a crossing profile, by today's rule (None if the pull did not record it)."""
     if prof is None:
         return None
-    prof.setdefault("length_d0", L0 / _tablet.D0 + (prof.get("Dx") or 0.0))
+    prof.setdefault("length_d0", L0 / sample.D0 + (prof.get("Dx") or 0.0))
     prof["weakest"] = _uni.weakest_plane(prof)
     return prof["weakest"]
 
@@ -52,7 +52,7 @@ def _factor_row(st, p):
             "bulk_mean_at_start": sum(bulk) / len(bulk) if bulk else None,
             "packing": st["built"].get("packing", "full"), "glue": st["built"].get("glue", "loading"),
             "rel_std": st["built"].get("rel_std", 0.05), "seed": st["built"].get("seed", 1),
-            "sinter": st["built"].get("sinter", _tablet.SINTER),
+            "sinter": st["built"].get("sinter", sample.SINTER),
             "drag": p["drag"], "sintered": _stage_numbers(st["sintered"]), "released": _stage_numbers(st["released"]),
             "test_start": _stage_numbers(start, p["L0"]), "L0": p["L0"],
             "peak_tension": -p["max_tension"], "peak_Dx": p["max_tension_Dx"],
@@ -118,7 +118,7 @@ def factor_table(outdir, quick=False):
                   "crack in the bulk": crack is not None and crack >= 3,
                   "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
-        sinter = f", d0 p_s/kp {r['sinter']:g}" if r["sinter"] != _tablet.SINTER else ""
+        sinter = f", d0 p_s/kp {r['sinter']:g}" if r["sinter"] != sample.SINTER else ""
         md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}{sinter}, seed {r.get('seed', 1)}, {r['drag']}: "
                   + ", ".join(f"{k} {'✓' if v else ('–' if k == 'crack in the bulk' and crack is None else '✗')}"
                               for k, v in checks.items())
@@ -136,7 +136,7 @@ def factor_table(outdir, quick=False):
                 ka, kb = key(a), key(b)
                 if ka[k] < kb[k] and all(ka[j] == kb[j] for j in range(len(names)) if j != k):
                     def say(r):
-                        return (f"{r.get(name, 1)}: L0 {r['L0'] / _tablet.D0:.3f}, weakest plane "
+                        return (f"{r.get(name, 1)}: L0 {r['L0'] / sample.D0:.3f}, weakest plane "
                                 f"{_from_wall(r['weakest_at_peak']):.2f} from a wall (at Dx = 0.81: "
                                 f"{fmt(_from_wall(r['weakest_at_marks'][CRACK_MARKS[-1]]), '.2f')}), first gap "
                                 f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
@@ -306,11 +306,11 @@ def report(outdir, docsdir):
             s = info[stage]
             rows.append([info["built"]["material"], info["built"]["kc_over_kp"], stage, s["solid_fraction"], s["coordination"],
                          s["coordination_with_walls"], s["rattlers"], s["kinetic_energy_ratio"]]
-                        + [s["wall_stress"][w] for w in _tablet.WALLS] + s["side"])
+                        + [s["wall_stress"][w] for w in sample.WALLS] + s["side"])
     if rows:
         _out.write_atomic(os.path.join(docsdir, "kc-study.csv"),
                           "material,kc_over_kp,stage,solid_fraction,coordination,coordination_with_walls,rattlers,"
-                          "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in _tablet.WALLS) + ",Lx,Ly,Lz\n"
+                          "kinetic_energy_ratio," + ",".join(f"stress_{w}" for w in sample.WALLS) + ",Lx,Ly,Lz\n"
                           + "".join(",".join(str(x) for x in r) + "\n" for r in rows))
     return rows
 
@@ -332,10 +332,10 @@ def _job_steps(figure, cells, t_cross, dt0):
         return sum(FULL["cycles"] * cycle(p, mode) for _ in amps for p in numbers("periods", PERIODS[mode]))
     if figure == "fig19":
         until, speed = numbers("until", (3.0,))[0], numbers("speed", (PULL_SPEED,))[0]
-        return int(until * _tablet.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
+        return int(until * sample.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
     if figure == "fig17":
         until, speed = numbers("until", (9.0,))[0], numbers("speed", (PULL_SPEED,))[0]
-        return int(until * _tablet.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
+        return int(until * sample.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
     if figure == "drag":
         return 3 * int(round(FAST * t_cross / dt0))  # drag_share runs at the campaign's base step
     if figure == "rates":

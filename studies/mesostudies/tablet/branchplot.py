@@ -5,7 +5,7 @@
 """
 import csv
 
-from ..scene_names import BRANCHES
+from mesocontact.scene_names import BRANCHES
 
 # Colours by meaning: loading k1 and the limit kp warm, un-/re-loading k2 blue, the tensile limit
 # -kc and non-contact adhesion green, contacts just made or apart grey.

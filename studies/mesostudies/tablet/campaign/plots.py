@@ -1,6 +1,6 @@
 """The tablet campaign's pictures: Figs. 16 and 18 (cycles), the rate study, Fig. 17's pull and
 Fig. 19's compression (matplotlib, from the runs' rows)."""
-from ... import outputs as _out
+from mesocontact import outputs as _out
 from .. import uniaxial as _uni
 
 

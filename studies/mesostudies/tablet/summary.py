@@ -1,7 +1,7 @@
 """Every number the tablet's documentation quotes about a campaign, computed from its committed
 files (plain Python, like ``statements``):
 
-    python3 -m mesocontact.tablet.summary docs/tablet/chosen     # writes summary.md there
+    python3 -m mesostudies.tablet.summary docs/tablet/chosen     # writes summary.md there
 
 The sample at three stages, the pull (peak, weakest planes, first gap, last chain), the cyclic
 runs (each cycle's peak, loop and permanent set, the rates against each other), Fig. 19, the drag
@@ -95,7 +95,7 @@ def _cyclic(runs, out):
     out += ["## The cyclic runs (Figs. 16 and 18)", "",
             "Per run: each cycle's peak F/(kp d0), its change from the first cycle, the loop area against the "
             "elastic energy of the force swing, and the permanent set against the amplitude "
-            "(mesocontact.tablet.measures).", "",
+            "(mesostudies.tablet.measures).", "",
             "| run | peaks | change from cycle 1 | loops | sets |", "|---|---|---|---|---|"]
     for (mode, a, per), (j, cm) in sorted(runs.items()):
         pk = [c["peak"] for c in cm]
@@ -203,7 +203,7 @@ def _cost(d, out):
 def summary(d):
     runs = _st._runs(d)
     out = [f"# The campaign in numbers ({os.path.join(*os.path.normpath(os.path.abspath(d)).split(os.sep)[-2:])})", "",
-           "Written by `python3 -m mesocontact.tablet.summary DIR` from the files named in each section; "
+           "Written by `python3 -m mesostudies.tablet.summary DIR` from the files named in each section; "
            "Dx in d0, forces F/(kp d0).", ""]
     _stages(d, out, runs)
     _pull(d, out)
@@ -218,7 +218,7 @@ def summary(d):
 
 def main(argv):
     if len(argv) != 1 or not os.path.isdir(argv[0]):
-        sys.exit("usage: python3 -m mesocontact.tablet.summary DOCS_DIR (a campaign's docs directory)")
+        sys.exit("usage: python3 -m mesostudies.tablet.summary DOCS_DIR (a campaign's docs directory)")
     text = summary(argv[0])
     with open(os.path.join(argv[0], "summary.md"), "w") as f:
         f.write(text)

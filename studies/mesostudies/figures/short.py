@@ -4,7 +4,7 @@ stiffness is kc there: kca = kc). YADE pair collisions over the closed form, ins
 import os
 import time
 
-from .. import theory
+from mesocontact import theory
 from .appendix import collide_pair, log_grid, plot_live
 from .common import (
     DENSITY, PAPER, RADIUS, fig_note, pair_reduced_mass, plt, print_progress, save_figure,

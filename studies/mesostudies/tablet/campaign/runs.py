@@ -9,15 +9,15 @@ import time
 from yade import O
 from yade import wrapper as _w
 
-from ... import mpi as _mpi
-from ... import outputs as _out
-from ... import scene as _scene
+from mesocontact import mpi as _mpi
+from mesocontact import outputs as _out
+from mesocontact import scene as _scene
 from .. import snapshots as _snap
-from .. import sample as _tablet
+from .. import sample
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FULL, GAP_AREA, PERIODS, PROTOCOL,
-    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, _protocol_of, cycle_peaks,
+    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, protocol_of, cycle_peaks,
     is_master, mpy as _mpy, prepare, read_csv, root, run_dir, run_name,
 )
 from .plots import plot_compression, plot_cycles, plot_pull, plot_rates
@@ -32,7 +32,7 @@ def _test(progress):
     test = _uni.Test(progress=progress, run=lambda n: _mpy().mpirun(n), records=_mpy().rank == 0,
                      share=lambda x: _mpy().comm.bcast(x, root=0))
     f0 = test.force()
-    _mpi.split_tablet(_mpy())
+    _mpi.split_slabs(_mpy())
     return test, f0
 
 
@@ -51,10 +51,10 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     if _out.complete(where):
         with open(os.path.join(where, name + ".json")) as f:
             info = json.load(f)
-        if _protocol_of(info) == proto:
+        if protocol_of(info) == proto:
             return info, read_csv(os.path.join(where, name + ".csv"))
         if progress:
-            print(f"{name}: the run in {where} was made from another preparation ({_protocol_of(info)}): made again",
+            print(f"{name}: the run in {where} was made from another preparation ({protocol_of(info)}): made again",
                   flush=True)
     n_cycles = cycles or (QUICK if quick else FULL)["cycles"]
     t0 = time.time()
@@ -440,10 +440,10 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
             _snap.png(os.path.join(bundle.tmp, label + ".png"),
                       f"({chr(97 + k)}) compression, Dx = {-row[1]:.2f}, F/(kp d0) = {row[2]:+.3g}", win=win)
             _snap.vtk(os.path.join(bundle.tmp, tag), k)
-            s = _tablet.stats()
+            s = sample.stats()
             wy, wz = _spread_widths()
             snaps.append({"mark": marks.pop(0), "Dx": row[1], "F": row[2], "png": label + ".png",
-                          "width_y_d0": wy / _tablet.D0, "width_z_d0": wz / _tablet.D0,
+                          "width_y_d0": wy / sample.D0, "width_z_d0": wz / sample.D0,
                           "coordination": s["coordination"], "rattlers": s["rattlers"]})
 
     t0 = time.time()
@@ -457,7 +457,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
     summary = {"speed": speed, "until": until, "L0": test.L0, "quick": quick, "snapshots": snaps, "dt": O.dt,
                "protocol": dict(PROTOCOL),
                "max_force": max(r[2] for r in rows), "final_force": rows[-1][2], "steps": O.iter - rows[0][0],
-               "wall_clock_s": time.time() - t0, "strain_at_end": until * _tablet.D0 / test.L0}
+               "wall_clock_s": time.time() - t0, "strain_at_end": until * sample.D0 / test.L0}
     with bundle:
         bundle.write_text(tag + ".csv", _csv_text(rows))
         bundle.write_json(tag + ".json", summary)
@@ -470,21 +470,21 @@ def _spread_widths():
     (exact for centres spread evenly over a slab; a few particles squeezed out barely move it,
     where they would set the extent)."""
     import statistics
-    ids = _tablet.sphere_ids()
-    return tuple(math.sqrt(12) * statistics.pstdev(O.bodies[i].state.pos[k] for i in ids) + _tablet.D0 for k in (1, 2))
+    ids = sample.sphere_ids()
+    return tuple(math.sqrt(12) * statistics.pstdev(O.bodies[i].state.pos[k] for i in ids) + sample.D0 for k in (1, 2))
 
 
 FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", "contacts"), ("full", "all", "contacts"),
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
 
-def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1, sinter=_tablet.SINTER):
+def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1, sinter=sample.SINTER):
     """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
     return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else "")
-                        + (f"-sinter{sinter:g}" if sinter != _tablet.SINTER else "") + (f"-seed{seed}" if seed != 1 else ""))
+                        + (f"-sinter{sinter:g}" if sinter != sample.SINTER else "") + (f"-seed{seed}" if seed != 1 else ""))
 
 
-def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1, sinter=_tablet.SINTER):
+def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1, sinter=sample.SINTER):
     """One run of the tablet's factor study: the preparation (packing, glue) made or reused in
     factor_dir(), then the Fig. 17 pull with the drag relative to ``drag``, ended 1 Dx past the
     last chain's break (bundle pull-<drag>; a complete one is read back, so the study resumes).
@@ -496,7 +496,7 @@ def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=
         with open(os.path.join(done, f"pull-{drag}.json")) as f:
             return json.load(f)
     protocol = dict({"packing": packing, "glue": glue, "rel_std": rel_std}, **({"seed": seed} if seed != 1 else {}),
-                    **({"sinter": sinter} if sinter != _tablet.SINTER else {}))
+                    **({"sinter": sinter} if sinter != sample.SINTER else {}))
     return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol=protocol,
                 drag=drag, stop_after_last=1.0, until=12.0)
 

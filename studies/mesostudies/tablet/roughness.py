@@ -1,7 +1,7 @@
 """The roughness of the fracture faces of a torn tablet, from a snapshot's sphere positions (plain
 Python with numpy; the legacy VTK files the pull writes, ``snapshots.vtk``):
 
-    python3 -m mesocontact.tablet.roughness SNAPSHOT.vtk [--flat WHOLE.vtk] [--json OUT]
+    python3 -m mesostudies.tablet.roughness SNAPSHOT.vtk [--flat WHOLE.vtk] [--json OUT]
 
 The two halves are the two largest clusters of spheres in contact (centre distance at most the sum
 of the radii); the rest (single spheres and threads' remnants) is counted, not used. Each half's
@@ -135,7 +135,7 @@ def measure(path, flat=None):
 
 
 def main(argv):
-    p = argparse.ArgumentParser(prog="python3 -m mesocontact.tablet.roughness")
+    p = argparse.ArgumentParser(prog="python3 -m mesostudies.tablet.roughness")
     p.add_argument("snapshot", help="a legacy VTK sphere snapshot of the torn tablet")
     p.add_argument("--flat", help="a snapshot of the whole tablet (Dx = 0): also the roughness of a flat cut through it")
     p.add_argument("--json", help="write the result here")

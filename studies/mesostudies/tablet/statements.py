@@ -2,12 +2,12 @@
 committed files (plain Python: the JSON and CSV that ``campaign.report`` copies into a docs
 directory):
 
-    python3 -m mesocontact.tablet.statements docs/tablet      # writes statements.md and statements.json there
+    python3 -m mesostudies.tablet.statements docs/tablet      # writes statements.md and statements.json there
 
 Each statement gets the project's number, the definition it is measured by, and a verdict:
 '✓' met, '◐' met in part or only approximately (the reason given), '✗' not met, '–' not in this
 campaign's files. The thresholds are stated with each statement; the cycle measures are those of
-``mesocontact.tablet.measures`` (loop area against the elastic energy of the force swing, permanent set
+``mesostudies.tablet.measures`` (loop area against the elastic energy of the force swing, permanent set
 from the starting force).
 """
 import glob
@@ -17,7 +17,7 @@ import statistics
 import sys
 
 from . import measures
-from .. import theory
+from mesocontact import theory
 
 PHI_F = 0.05
 TOL_L0 = 0.01  # the tested sample's length against the paper's 0.115: 1 %
@@ -214,12 +214,12 @@ def statements(d):
                 f"fracture faces ({rough['snapshot']}): heights' 5–95 % range {ranges[0]:.1f} and {ranges[1]:.1f} d0 (rms "
                 f"{lr['rms']:.2f}, {rr['rms']:.2f})" + (f"; a flat cut through the sample: {flat_range:.1f} d0" if flat else ""),
                 "each torn half's outermost sphere surface over d0 x d0 columns across the pull "
-                "(mesocontact.tablet.roughness); several particles: range >= 2 d0 on both faces and >= 2 x a flat cut's",
+                "(mesostudies.tablet.roughness); several particles: range >= 2 d0 on both faces and >= 2 x a flat cut's",
                 "✓" if min(ranges) >= 2 and flat and min(ranges) >= 2 * flat_range else
                 ("◐" if min(ranges) >= 1 else "✗"))
         else:
             add("the contact surface has developed a roughness of the size of several primary particles", "–",
-                "not measured (roughness.json absent: python3 -m mesocontact.tablet.roughness)", "–")
+                "not measured (roughness.json absent: python3 -m mesostudies.tablet.roughness)", "–")
         g = pull.get("first_gap_Dx")
         add("the first visible gap is opened at Dx ~ d0", f"Dx = {g:.2f}" if g else "–",
             pull.get("gap_criterion", "") + "; ~ d0: 0.6–1.4", "✓" if g and 0.6 <= g <= 1.4 else "✗")
@@ -357,7 +357,7 @@ def _realizations(d, st):
 
 def markdown(items, source):
     lines = [f"# Appendix F, statement by statement ({source})", "",
-             "Computed by `python3 -m mesocontact.tablet.statements DIR` from the files in this directory; "
+             "Computed by `python3 -m mesostudies.tablet.statements DIR` from the files in this directory; "
              "✓ met, ◐ in part, ✗ not met, – not in these files.", "",
              "| # | the paper | the project | measured as | verdict |", "|---|---|---|---|---|"]
     for s in items:
@@ -372,7 +372,7 @@ def markdown(items, source):
 
 def main(argv):
     if len(argv) != 1 or not os.path.isdir(argv[0]):
-        sys.exit("usage: python3 -m mesocontact.tablet.statements DOCS_DIR (a campaign's docs directory)")
+        sys.exit("usage: python3 -m mesostudies.tablet.statements DOCS_DIR (a campaign's docs directory)")
     items = statements(argv[0])
     with open(os.path.join(argv[0], "statements.json"), "w") as f:
         json.dump(items, f, indent=1, ensure_ascii=False)

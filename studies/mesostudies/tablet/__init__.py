@@ -1,0 +1,12 @@
+"""The agglomerate tablet of Appendix F, by job:
+
+- ``sample``: the particles, walls and materials; the preparation (compaction, sintering, release);
+- ``stages``: the prepared states, made once under a lock and reused;
+- ``uniaxial``: unconfined tension and compression, the pull;
+- ``snapshots``: pictures of the sample and the planes where it tears;
+- ``roughness``: the roughness of the fracture faces, from a snapshot (plain Python, no YADE);
+- ``campaign`` (a subpackage: ``common``, ``runs``, ``plots``, ``report``, ``cli``): Figs. 16-19,
+  the time-step and factor studies, the docs report, plan and totals;
+- ``measures``, ``statements``, ``branchplot``: the paper's statements as numbers and the contact
+  branches, from a campaign's files (plain Python, no YADE).
+"""
