@@ -11,4 +11,5 @@ cmake --build build -j"$(nproc)"
 deb=$(ls build/yade-meso_*_amd64.deb)
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "./$deb"
-yade -n -x scripts/figure.py --all --no-tablet --out results
+# the installed plugin and library; the figures are a study, run from this checkout
+PYTHONPATH=studies yade -n -x scripts/figure.py --all --no-tablet --out results

@@ -5,12 +5,12 @@
 # docs/performance.md), the measured total printed (job time, wall time), then the figures and
 # the data copied into DOCS:
 #   bash scripts/tablet_campaign.sh [--lanes N] [--yade YADE] [--out OUT] [--table TABLE] [--docs DOCS]
-# Defaults: 2 lanes, build/yade-meso, results/tablet, batch/tablet-campaign.table, docs/tablet.
+# Defaults: 2 lanes, build/yade-meso, results/tablet, batch/tablet-campaign.table, campaigns/tablet/chosen.
 # Runs whose bundles are in OUT already are read back, not repeated: a campaign stopped at any
 # point goes on where it stopped when the same command runs again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=batch/tablet-campaign.table DOCS=docs/tablet
+LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=batch/tablet-campaign.table DOCS=campaigns/tablet/chosen
 while [ $# -gt 0 ]; do
   case "$1" in
     --lanes) LANES=$2 ;; --yade) YADE=$2 ;; --out) OUT=$2 ;; --table) TABLE=$2 ;; --docs) DOCS=$2 ;;

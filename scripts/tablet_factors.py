@@ -1,4 +1,4 @@
-# The factor study of the tested tablet (docs/tablet/factors.md): the Fig. 17 pull of one
+# The factor study of the tested tablet (campaigns/tablet/factors.md): the Fig. 17 pull of one
 # preparation (--packing, --glue) with the drag relative to --drag, then the table of every run
 # made so far in <out>/factors/ (factors.md, factors.json); --table only gathers the table.
 # --report DOCS copies the files to DOCS/factors/ and writes the table from them.

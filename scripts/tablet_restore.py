@@ -1,4 +1,4 @@
-# Makes the committed runs of docs/tablet the campaign's run bundles again (see campaign.restore),
+# Makes the committed runs of campaigns/tablet/chosen the campaign's run bundles again (see campaign.restore),
 # so that the figure scripts regather without repeating runs:
 #   yade -n -x scripts/tablet_restore.py DOCS OUT
 import sys

@@ -3,7 +3,7 @@
 # (far below any integration error): the spread of each cycle's peak among these runs is what a
 # perturbation alone does; the committed 480 and 1920 t_w runs give the change with the rate.
 #   yade -j1 -n -x scripts/tablet_sensitivity.py --out results/tablet --amplitude 0.1 --factor 1.000001
-#   python3 scripts/tablet_sensitivity.py --gather results/tablet --docs docs/tablet/chosen   # sensitivity.json there
+#   python3 scripts/tablet_sensitivity.py --gather results/tablet --docs campaigns/tablet/chosen   # sensitivity.json there
 import argparse
 import glob
 import json
@@ -50,7 +50,7 @@ def main(argv):
     p.add_argument("--amplitude", type=float, default=0.1)
     p.add_argument("--factor", type=float, default=1.000001, help="multiplies the campaign's tension time step")
     p.add_argument("--gather", metavar="OUT", help="only gather the perturbed runs of OUT (plain python3)")
-    p.add_argument("--docs", default="docs/tablet/chosen", help="with --gather: the committed runs; sensitivity.json goes there")
+    p.add_argument("--docs", default="campaigns/tablet/chosen", help="with --gather: the committed runs; sensitivity.json goes there")
     a = p.parse_args(argv)
     if a.gather:
         res = gather(a.gather, a.docs)

@@ -115,7 +115,7 @@ def time_step(safety=0.1):
     duration pi/omega. Accuracy needs far less: the default 0.1 gives about 16 steps per period of
     the stiffest element (the leapfrog's energy error per contact scales as (omega dt)^2); the
     pair figures use 2000 per contact for 1e-7 in e. For a cohesive packing under slow cyclic
-    load the tablet's convergence study (docs/tablet/timestep.md) supports 0.1: its cycles at
+    load the tablet's convergence study (campaigns/tablet/timestep.md) supports 0.1: its cycles at
     0.096 and 0.128 of the bound stay within what a 1e-6 perturbation of the step changes; the
     last contact chain of a pull to rupture is resolved only at 0.032."""
     from yade import wrapper as w

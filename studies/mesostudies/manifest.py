@@ -7,10 +7,11 @@ whether they are still those files (plain Python).
 ``CAMPAIGN.json`` records the commit whose code made the runs, the command, the preparation
 (protocol), the date, the machine (processor and cores, never its name) and each file's size and
 SHA-256. ``check`` lists files that are missing, changed, or not in the manifest."""
-import hashlib
 import json
 import os
 import sys
+
+from mesocontact.outputs import sha256 as digest
 
 NAME = "CAMPAIGN.json"
 
@@ -22,14 +23,6 @@ def files_of(folder):
         dirs.sort()
         out += [os.path.relpath(os.path.join(top, n), folder) for n in names]
     return sorted(f for f in out if f != NAME)
-
-
-def digest(path):
-    h = hashlib.sha256()
-    with open(path, "rb") as f:
-        for block in iter(lambda: f.read(1 << 20), b""):
-            h.update(block)
-    return h.hexdigest()
 
 
 def machine():

@@ -14,7 +14,7 @@ import unittest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 LIBRARY = ROOT / "py" / "mesocontact"
-DOCS = ROOT / "docs" / "tablet" / "chosen"
+DOCS = ROOT / "campaigns" / "tablet" / "chosen"
 # the library's modules that need no YADE (the rest import yade at the top)
 PLAIN = ("theory", "params", "checks", "outputs", "scene_names", "calibrate")
 

@@ -1,32 +1,43 @@
-"""mesostudies.tablet.statements on the committed campaign of docs/tablet: one row per statement of
+"""mesostudies.tablet.statements on the committed campaign of campaigns/tablet: one row per statement of
 Appendix F, numbers read from the files (checked here against the files directly)."""
 import json
 import os
+import tempfile
 import unittest
 
 from mesostudies.tablet import statements
 
-DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
+DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "campaigns", "tablet")
 
 
 class TestStatements(unittest.TestCase):
     def test_committed_campaign(self):
-        items = statements.statements(DOCS)
+        chosen = os.path.join(DOCS, "chosen")
+        items = statements.statements(chosen)
         self.assertEqual(len(items), 27)
         self.assertTrue(all(s["verdict"] in ("✓", "◐", "✗", "–") for s in items))
-        with open(os.path.join(DOCS, "tension-Dx0.2-P480.json")) as f:
+        with open(os.path.join(chosen, "tension-Dx0.2-P480.json")) as f:
             L0 = json.load(f)["L0"]
         first = items[0]
         self.assertIn(f"{L0:.5f}", first["project"])
         expect = "✓" if abs(L0 / 0.115 - 1) <= 0.01 else ("◐" if abs(L0 / 0.115 - 1) <= 0.05 else "✗")
         self.assertEqual(first["verdict"], expect)
-        with open(os.path.join(DOCS, "fig17.json")) as f:
+        with open(os.path.join(chosen, "fig17.json")) as f:
             last = json.load(f)["last_contact_Dx"]
         row = next(s for s in items if s["paper"].startswith("the contact is lost only at Dx ~ 8"))
         self.assertEqual(row["project"], f"Dx = {last:.2f}")
         self.assertEqual(row["verdict"], "✓" if 6 <= last <= 10 else "✗")
-        row = next(s for s in items if s["paper"].startswith("the contact surface has developed a roughness"))
-        self.assertEqual(row["verdict"], "–")  # no roughness.json there
+
+    def test_a_statement_without_its_file_is_not_judged(self):
+        with tempfile.TemporaryDirectory() as top:  # the chosen campaign without roughness.json, beside ../factors
+            d = os.path.join(top, "chosen")
+            os.mkdir(d)
+            os.symlink(os.path.abspath(os.path.join(DOCS, "factors")), os.path.join(top, "factors"))
+            for f in os.listdir(os.path.join(DOCS, "chosen")):
+                if f != "roughness.json":
+                    os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
+            row = next(s for s in statements.statements(d) if s["paper"].startswith("the contact surface has developed a roughness"))
+        self.assertEqual(row["verdict"], "–")
 
     def test_roughness_of_the_chosen_campaign(self):
         chosen = os.path.join(DOCS, "chosen")

@@ -1,18 +1,33 @@
-"""docs/tablet: the generated pages are what their scripts write from the committed files, and
-README.md quotes no number that those pages do not hold (every result on it computed by a script)."""
+"""The tablet's pages: the generated ones (campaigns/tablet) are what their scripts write from the
+committed files, docs/tablet/README.md quotes no number that those pages do not hold (every result
+on it computed by a script), and each picture the prose shows (docs/tablet/pictures) is the
+campaign's own file, byte for byte."""
 import os
 import re
 import unittest
 
 from mesostudies.tablet import statements, summary
 
-DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "tablet")
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+DOCS = os.path.join(ROOT, "campaigns", "tablet")
+PROSE = os.path.join(ROOT, "docs", "tablet")
 CHOSEN = os.path.join(DOCS, "chosen")
+# docs/tablet/pictures/<name>: the campaign file it shows
+PICTURES = {**{f"{n}.png": os.path.join("chosen", f"{n}.png")
+               for n in ("fig16", "fig17", "fig17-snapshots", "fig18", "fig19", "fig19-snapshots")},
+            "pull-contacts-sinter0.1.png": os.path.join("factors", "frictionless-sinter-std0.1-sinter0.1", "pull-contacts",
+                                                        "pull-contacts.png"),
+            "timestep-x1-pull.png": os.path.join("timestep", "timestep-x1-pull.png")}
 NUMBER = re.compile(r"\d+(?:\.\d+)?")
 
 
 def _read(*path):
     with open(os.path.join(DOCS, *path), encoding="utf-8") as f:
+        return f.read()
+
+
+def _prose(name):
+    with open(os.path.join(PROSE, name), encoding="utf-8") as f:
         return f.read()
 
 
@@ -26,10 +41,9 @@ class TabletDocs(unittest.TestCase):
     def test_summary_is_generated(self):
         self.assertEqual(summary.summary(CHOSEN), _read("chosen", "summary.md"),
                          "chosen/summary.md differs from what python3 -m mesostudies.tablet.summary writes")
-        self.assertEqual(summary.summary(DOCS), _read("summary.md"), "the first protocol's summary.md")
 
     def test_statements_are_generated(self):
-        self.assertEqual(statements.markdown(statements.statements(CHOSEN), "docs/tablet/chosen"),
+        self.assertEqual(statements.markdown(statements.statements(CHOSEN), "campaigns/tablet/chosen"),
                          _read("chosen", "statements.md"),
                          "chosen/statements.md differs from what python3 -m mesostudies.tablet.statements writes")
 
@@ -38,12 +52,18 @@ class TabletDocs(unittest.TestCase):
                                            ("chosen", "peaks.md"), ("factors", "factors.md")))
 
     def test_readme_quotes_generated_numbers(self):
-        self.assertEqual(missing_numbers(_read("README.md"), self.generated()), [],
+        self.assertEqual(missing_numbers(_prose("README.md"), self.generated()), [],
                          "numbers on docs/tablet/README.md found in no generated page")
+
+    def test_pictures_are_the_campaigns(self):
+        self.assertEqual(sorted(os.listdir(os.path.join(PROSE, "pictures"))), sorted(PICTURES))
+        for name, source in PICTURES.items():
+            with open(os.path.join(PROSE, "pictures", name), "rb") as a, open(os.path.join(DOCS, source), "rb") as b:
+                self.assertEqual(a.read(), b.read(), f"docs/tablet/pictures/{name} is not campaigns/tablet/{source}")
 
     def test_the_check_can_fail(self):
         # a result typed by hand into the page is caught; the same number inside a command is not a result
-        text = _read("README.md")
+        text = _prose("README.md")
         self.assertEqual(missing_numbers(text + "\nthe peak at Dx = 0.0313\n", self.generated()), ["0.0313"])
         self.assertEqual(missing_numbers(text + "\n`--until 0.0313`\n", self.generated()), [])
 

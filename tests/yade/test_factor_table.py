@@ -1,4 +1,4 @@
-# ctest (inside yade): the tablet's factor table (docs/tablet/factors/factors.md) from made-up
+# ctest (inside yade): the tablet's factor table (campaigns/tablet/factors/factors.md) from made-up
 # files, so that every criterion's answer and every summary is known by hand: two realizations
 # (seeds 1 and 2) of one preparation, L0 = 0.1155 (+0.43 %), the weakest plane 4.125 d0 from the
 # left wall at the peak; at Dx = 0.81 the crack plane 5.125 d0 from the left wall (seed 1) or
@@ -54,11 +54,11 @@ for line in ("- last chain Dx: 7.00, 9.00: mean 8.00, sd 1.41", "- first gap Dx 
     check(line in md, f"factor table: realizations summary {line!r}")
 check("seeds 1, 2" in md, "factor table: the realizations are grouped (seeds 1, 2)")
 
-# The committed table (docs/tablet/factors/factors.md) is what the script writes from the committed files.
-docs = os.path.join(os.path.dirname(os.path.abspath(harness.__file__)), "..", "..", "docs", "tablet", "factors")
+# The committed table (campaigns/tablet/factors/factors.md) is what the script writes from the committed files.
+docs = os.path.join(os.path.dirname(os.path.abspath(harness.__file__)), "..", "..", "campaigns", "tablet", "factors")
 copy = tempfile.mkdtemp(prefix="factor-docs-")
 shutil.copytree(docs, os.path.join(copy, "factors"))
 campaign.factor_table(copy)
 check(open(os.path.join(copy, "factors", "factors.md")).read() == open(os.path.join(docs, "factors.md")).read(),
-      "docs/tablet/factors/factors.md is generated: scripts/tablet_factors.py --out docs/tablet --table")
+      "campaigns/tablet/factors/factors.md is generated: scripts/tablet_factors.py --out docs/tablet --table")
 finish()

@@ -263,8 +263,8 @@ check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12 and set(rows[2.0]["chan
       {"tension_peak", "tension_F_at_Dx0", "compression_peak", "compression_F_at_Dx0"},
       f"time-step study: 2 dt against 1 dt {rows[2.0]['change_vs_1dt']}")
 
-# The campaign's time steps are those the committed study accepts (docs/tablet/timestep.json).
-with open(os.path.join(os.path.dirname(os.path.abspath(__import__("harness").__file__)), "..", "..", "docs", "tablet", "timestep.json")) as f:
+# The campaign's time steps are those the committed study accepts (campaigns/tablet/timestep.json).
+with open(os.path.join(os.path.dirname(os.path.abspath(__import__("harness").__file__)), "..", "..", "campaigns", "tablet", "timestep", "timestep.json")) as f:
     accepted = json.load(f)["largest_accepted_factor"]
 check(accepted == campaign.DT_FACTORS, f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
 

@@ -43,7 +43,7 @@ COMPACTION_SPEED = 2.0           # largest wall speed while compacting the gas [
 SINTER_SPEED = 0.05              # largest wall speed while sintering and releasing [mm/us]
 RELEASE_STEPS = 40000            # steps over which the wall stress is lowered from p_s to p_r
 WALLS = ("left", "right", "bottom", "top", "back", "front")  # YADE's aabbWalls order: -x +x -y +y -z +z
-# The preparation's options (the factor study of the tested sample, docs/tablet/factors.md):
+# The preparation's options (the factor study of the tested sample, campaigns/tablet/factors.md):
 PACKINGS = ("full", "frictionless")  # the law while the gas is compacted: the full law, or without friction,
 #                                      rolling, torsion and adhesion (the full law switched on for sintering)
 PACKING_RATIO = 0.1                  # the frictionless packing's stress, over p_s
@@ -92,9 +92,9 @@ def contact_step(r_min):
     """The tablet campaign's base step: t_c/50 of the stiffest, lightest pair (all springs of the
     law resolved), a fraction of a contact's duration. Not the package's time-step rule, which is
     scene.time_step (a fraction of the stability bound each contact is checked against; this
-    step is 0.032 of that bound on the unconfined tablet, docs/tablet/timestep.md); the
+    step is 0.032 of that bound on the unconfined tablet, campaigns/tablet/timestep.md); the
     campaign keeps this one so that its committed runs stay reproducible, and scales it per test
-    (campaign.DT_FACTORS, from the convergence study of docs/tablet/timestep.md)."""
+    (campaign.DT_FACTORS, from the convergence study of campaigns/tablet/timestep.md)."""
     m = particle_material()
     m_min = _params.sphere_mass(r_min, DENSITY)
     return _params.resolved_step(m["kp"], m_min, kt=m["kt"], kr=m["kr"], ko=m["ko"], gamma=m["gammaN"])

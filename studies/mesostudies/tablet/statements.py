@@ -2,7 +2,7 @@
 committed files (plain Python: the JSON and CSV that ``campaign.report`` copies into a docs
 directory):
 
-    python3 -m mesostudies.tablet.statements docs/tablet      # writes statements.md and statements.json there
+    python3 -m mesostudies.tablet.statements campaigns/tablet/chosen# writes statements.md and statements.json there
 
 Each statement gets the project's number, the definition it is measured by, and a verdict:
 '✓' met, '◐' met in part or only approximately (the reason given), '✗' not met, '–' not in this

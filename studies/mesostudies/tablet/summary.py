@@ -1,7 +1,7 @@
 """Every number the tablet's documentation quotes about a campaign, computed from its committed
 files (plain Python, like ``statements``):
 
-    python3 -m mesostudies.tablet.summary docs/tablet/chosen     # writes summary.md there
+    python3 -m mesostudies.tablet.summary campaigns/tablet/chosen     # writes summary.md there
 
 The sample at three stages, the pull (peak, weakest planes, first gap, last chain), the cyclic
 runs (each cycle's peak, loop and permanent set, the rates against each other), Fig. 19, the drag

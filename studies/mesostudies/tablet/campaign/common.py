@@ -39,7 +39,7 @@ FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
 # Cycle periods in elastic crossing times (uniaxial.crossing_time): the rate study runs all
 # three; the figures run FAST (thin) and SLOW (thick), where the peaks agree within 5 %.
 RATE_PERIODS = (30.0, 120.0, 480.0)
-# The periods of the figures (thin, thick), from the rate checks (docs/tablet/first-protocol.md, section 4):
+# The periods of the figures (thin, thick), from the rate checks (docs/tablet/first-protocol.md (commit 410fda8), section 4):
 # compression agrees within 0.6 % between 120 and 480 t_w in every cycle; tension does not (the
 # re-loading cycles 6.5 % apart at Dx = 0.2) but agrees within 1.95 % between 480 and 1920 t_w
 # at every amplitude (0.025 to 0.3).
@@ -48,13 +48,13 @@ PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us]: the peak wall speed o
 FAST, SLOW = PERIODS["compression"]
 GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
 # The campaign's time step per test, as a multiple of tablet.contact_step (t_c/50), from the
-# time-step study (docs/tablet/timestep.md): the largest factor whose outcome stays within 0.5 %
+# time-step study (campaigns/tablet/timestep.md): the largest factor whose outcome stays within 0.5 %
 # of 1 dt, or within the spread of perturbed runs where that is larger.
 DT_FACTORS = {"tension": 3.0, "compression": 4.0, "pull": 1.0}
 
 
 # The preparation the campaign's tests start from (tablet.prepare's packing, glue, rel_std), chosen
-# by the factor study (docs/tablet/factors/factors.md): packed without friction and adhesion, all
+# by the factor study (campaigns/tablet/factors/factors.md): packed without friction and adhesion, all
 # six walls adhesive through sintering, radii spread 0.1 - the only preparation that meets the
 # paper's L0 and first gap (its tear is still next to a wall). Every run records it; a run made
 # from another preparation is made again, not read back.
