@@ -12,4 +12,4 @@ deb=$(ls build/yade-meso_*_amd64.deb)
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --reinstall "./$deb"
 # the installed plugin and library; the figures are a study, run from this checkout
-PYTHONPATH=studies yade -n -x scripts/figure.py --all --no-tablet --out results
+PYTHONPATH=studies yade -n -x studies/scripts/figure.py --all --no-tablet --out results

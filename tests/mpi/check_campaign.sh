@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest mpi.campaign: the tablet scripts with --mpi 3 under mpiexec against the same scripts run
-# serially, from the same unconfined start: tablet_fig16.py --quick for two amplitudes (one
-# process runs both, so the second run splits a reloaded scene) and tablet_fig17.py --quick, the
+# serially, from the same unconfined start: tablet.py fig16 --quick for two amplitudes (one
+# process runs both, so the second run splits a reloaded scene) and tablet.py fig17 --quick, the
 # pull, to Dx = 0.1 (it stops at the first check past it, Dx = 0.13). Their CSV rows must agree:
 # Dx identical, F within 1e-8 of the peak (measured 2.7e-12 for the cycles and 1.0e-11 for the
 # pull: the order of summation; the serial pull with -j2 differs from -j1 by 2.4e-11 there. It
@@ -10,7 +10,7 @@
 set -euo pipefail
 launcher=$1
 here=$(cd "$(dirname "$0")" && pwd)
-scripts="$here/../../scripts"
+scripts="$here/../../studies/scripts"
 dir=$(mktemp -d /tmp/mpi-campaign-XXXXXX)
 trap 'rm -rf "$dir"' EXIT
 quiet="^XMLRPC\|TCP python\|Welcome\|Using python\|Running script"
@@ -26,8 +26,8 @@ both() {
     echo "mpi.campaign: FAILED: $script --mpi 3 did not finish"; exit 1
   fi
 }
-both tablet_fig16.py --quick --amplitudes 0.1,0.2 --periods 30
-both tablet_fig17.py --quick --until 0.1
+both tablet.py fig16 --quick --amplitudes 0.1,0.2 --periods 30
+both tablet.py fig17 --quick --until 0.1
 /usr/bin/python3 - "$dir" <<'PY'
 import json, os, sys
 d = sys.argv[1]

@@ -17,7 +17,7 @@ pyver=$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])')
 check "plugin in YADE's library directory ($libdir)" "grep -qx '.$libdir/libyade_meso.so' <<< \"\$files\""
 check "Python package on /usr/bin/python3's path" "grep -qx './usr/lib/python$pyver/dist-packages/mesocontact/theory.py' <<< \"\$files\""
 check "scripts and examples under /usr/share/yade-meso" "grep -q '^./usr/share/yade-meso/scripts/calibrate.py$' <<< \"\$files\" && grep -q '^./usr/share/yade-meso/examples/deposition.py$' <<< \"\$files\""
-check "no study, campaign or study script: $(grep -c . <<< "$files") entries" "! grep -q 'mesostudies\|campaigns\|/scripts/figure.py\|/scripts/tablet_\|tablet-campaign.table' <<< \"\$files\""
+check "no study, campaign or study script: $(grep -c . <<< "$files") entries" "! grep -q 'mesostudies\|campaigns\|/studies/scripts/figure.py\|/scripts/tablet_\|tablet-campaign.table' <<< \"\$files\""
 check "the README's installed yade-batch files" "grep -q '^./usr/share/yade-meso/examples/pair-batch.table$' <<< \"\$files\" && grep -q '^./usr/share/yade-meso/scripts/pair_batch.py$' <<< \"\$files\""
 check "no __pycache__ and nothing under /usr/local" "! grep -q '__pycache__\|^./usr/local' <<< \"\$files\""
 tmp=$(mktemp -d); dpkg-deb -x "$deb" "$tmp"

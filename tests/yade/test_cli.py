@@ -9,13 +9,16 @@ import time
 import mesocontact  # noqa: E402  (the source tree's package: the scripts lie beside it)
 from harness import failures, finish
 
-scripts = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__)))), "scripts")
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__))))
+# the library's scripts, and the studies' (the tablet's jobs behind tablet.py, the figures)
+where = {name: os.path.join(ROOT, "studies", "scripts") if name.startswith(("tablet", "figure")) else os.path.join(ROOT, "scripts")
+         for name in ("pair_batch.py", "tablet.py", "tablet_report.py", "tablet_restore.py", "figure.py")}
 launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
 
 
 def run(script, *args):
     t0 = time.time()
-    p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(scripts, script), *args], capture_output=True, text=True,
+    p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(where[script], script), *args], capture_output=True, text=True,
                        timeout=120)
     return p.returncode, p.stdout + p.stderr, time.time() - t0
 
@@ -23,24 +26,25 @@ def run(script, *args):
 tmp = tempfile.mkdtemp(prefix="cli-")
 out = os.path.join(tmp, "out")
 cases = [
-    ("tablet_fig16.py", ["--amplitudes", "inf"], "--amplitudes"),
-    ("tablet_fig16.py", ["--amplitudes", "abc"], "--amplitudes"),
-    ("tablet_fig16.py", ["--amplitudes", "-0.1"], "--amplitudes"),
-    ("tablet_fig18.py", ["--quick", "--amplitudes", "10"], "--amplitudes"),  # the quick sample is about 6 d0 long
-    ("tablet_fig16.py", ["--periods", "1e-6"], "--periods"),
-    ("tablet_fig16.py", ["--periods", "nan"], "--periods"),
-    ("tablet_fig17.py", ["--speed", "0"], "--speed"),
-    ("tablet_prepare.py", ["--kc-over-kp", "-1"], "--kc-over-kp"),
-    ("tablet_prepare.py", ["--n", "3"], "--n"),
-    ("tablet_fig16.py", ["--mpi", "1"], "--mpi"),
-    ("tablet_fig16.py", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
-    ("tablet_rates.py", ["--mpi", "3"], "--mpi"),  # only fig16, fig17 and fig18 run under yade.mpy
-    ("tablet_fig19.py", ["--mpi", "3"], "--mpi"),
-    ("tablet_fig17.py", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
-    ("tablet_fig17.py", ["--until", "0"], "--until"),
+    ("fig16", ["--amplitudes", "inf"], "--amplitudes"),
+    ("fig16", ["--amplitudes", "abc"], "--amplitudes"),
+    ("fig16", ["--amplitudes", "-0.1"], "--amplitudes"),
+    ("fig18", ["--quick", "--amplitudes", "10"], "--amplitudes"),  # the quick sample is about 6 d0 long
+    ("fig16", ["--periods", "1e-6"], "--periods"),
+    ("fig16", ["--periods", "nan"], "--periods"),
+    ("fig17", ["--speed", "0"], "--speed"),
+    ("prepare", ["--kc-over-kp", "-1"], "--kc-over-kp"),
+    ("prepare", ["--n", "3"], "--n"),
+    ("fig16", ["--mpi", "1"], "--mpi"),
+    ("fig16", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
+    ("rates", ["--mpi", "3"], "--mpi"),  # only fig16, fig17 and fig18 run under yade.mpy
+    ("fig19", ["--mpi", "3"], "--mpi"),
+    ("fig17", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
+    ("fig17", ["--until", "0"], "--until"),
 ]
-for script, args, option in cases:
-    rc, text, secs = run(script, *args, "--out", out)
+for job, args, option in cases:
+    script = f"tablet.py {job}"
+    rc, text, secs = run("tablet.py", job, *args, "--out", out)
     ok = rc != 0 and option in text and secs < 60 and not os.path.exists(os.path.join(out, "released.yade.gz"))
     last = [line for line in text.splitlines() if option in line][-1:] or text.splitlines()[-1:]
     print(("ok   " if ok else "FAIL ") + f"{script} {' '.join(args)}: rc {rc}, {secs:.0f} s: {last[0] if last else ''}", flush=True)
@@ -49,7 +53,7 @@ for script, args, option in cases:
 # An --out that cannot be written fails at once.
 blocker = os.path.join(tmp, "file")
 open(blocker, "w").close()
-rc, text, secs = run("tablet_fig16.py", "--out", os.path.join(blocker, "sub"))
+rc, text, secs = run("tablet.py", "fig16", "--out", os.path.join(blocker, "sub"))
 ok = rc != 0 and "--out" in text and "not writable" in text
 print(("ok   " if ok else "FAIL ") + f"unwritable --out: rc {rc}, {secs:.0f} s", flush=True)
 if not ok:
@@ -63,7 +67,7 @@ if not ok:
     failures.append("figure.py --help")
 # Every script without argparse honours --help too (pair_batch.py used to run a job), and the two
 # that take positional arguments refuse a wrong count with their usage.
-for script in ("pair_batch.py", "tablet_batch.py", "tablet_report.py", "tablet_restore.py"):
+for script in ("pair_batch.py", "tablet.py", "tablet_report.py", "tablet_restore.py"):
     rc, text, secs = run(script, "--help")
     ok = rc == 0 and "yade" in text and not os.path.exists(os.path.join(tmp, "results")) and secs < 60
     print(("ok   " if ok else "FAIL ") + f"{script} --help: rc {rc}, {secs:.0f} s", flush=True)

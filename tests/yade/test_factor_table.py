@@ -60,5 +60,5 @@ copy = tempfile.mkdtemp(prefix="factor-docs-")
 shutil.copytree(docs, os.path.join(copy, "factors"))
 campaign.factor_table(copy)
 check(open(os.path.join(copy, "factors", "factors.md")).read() == open(os.path.join(docs, "factors.md")).read(),
-      "campaigns/tablet/factors/factors.md is generated: scripts/tablet_factors.py --out docs/tablet --table")
+      "campaigns/tablet/factors/factors.md is generated: studies/scripts/tablet.py factors --out campaigns/tablet --table")
 finish()

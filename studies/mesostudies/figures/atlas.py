@@ -1,7 +1,7 @@
 """The figure atlas: every figure of both papers behind one command (inside ``yade``).
 
-    yade -n -x scripts/figure.py 9 [--paper long|short] [--out DIR] [--quick]
-    yade -n -x scripts/figure.py --all [--no-tablet] [--quick]
+    yade -n -x studies/scripts/figure.py 9 [--paper long|short] [--out DIR] [--quick]
+    yade -n -x studies/scripts/figure.py --all [--no-tablet] [--quick]
 
 Pair figures (long 5-15, short 5-6) run YADE collisions over the closed form; long 16-19 are
 the tablet of Appendix F (``mesostudies.tablet.campaign``, hours, runs cached in --tablet-out). Every

@@ -1,7 +1,7 @@
 """The branches of the law the tablet's contacts are on through a cyclic test, from the
 ``<run>-branches.csv`` a cyclic run writes (campaign.cyclic): plain Python, no YADE.
 
-    python3 scripts/tablet_branches.py campaigns/tablet/chosen/tension-Dx0.025-P480-branches.csv out.png --period 59272
+    python3 studies/scripts/tablet_branches.py campaigns/tablet/chosen/tension-Dx0.025-P480-branches.csv out.png --period 59272
 """
 import csv
 

@@ -20,8 +20,53 @@ from .runs import (
 from .report import factor_report, factor_table
 
 
-FIGURES = ("prepare", "drag", "timestep", "rates", "fig16", "fig17", "fig18", "fig19", "factors")
+# The options of every tablet job, declared once: argparse takes them as they are, and a yade-batch
+# table takes each as a column of its name with underscores (batch_columns). (flag, keywords)
+OPTIONS = (
+    ("--quick", dict(action="store_true", help="216 particles, one cycle (for tests)")),
+    ("--out", dict(default="results/tablet", help="output directory (the cached states are reused from it)")),
+    ("--periods", dict(default=None, help="comma-separated cycle periods in elastic crossing times (the first drawn thin)")),
+    ("--amplitudes", dict(default=None, help="comma-separated amplitudes Dx in d0")),
+    ("--slow-amplitudes", dict(default=None,
+                               help="fig16, fig18: comma-separated amplitudes that also run at the slower periods (default: all)")),
+    ("--no-run", dict(action="store_true", help="rates: only the periods whose runs are complete")),
+    ("--speed", dict(type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")),
+    ("--until", dict(type=float, default=None,
+                     help="fig17: pull until Dx = UNTIL (default 9); fig19: compress until Dx = -UNTIL (default 3) (in d0)")),
+    ("--factors", dict(default=None, help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 "
+                                          "and the perturbed 1.000001, 1.000002, 0.999999)")),
+    ("--runs", dict(default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")),
+    ("--material", dict(default="appendixF", choices=sorted(sample.MATERIALS),
+                        help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")),
+    ("--kc-over-kp", dict(type=float, default=None, help="prepare: overrides the set's kc/kp")),
+    ("--n", dict(type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")),
+    ("--packing", dict(default="full", choices=sample.PACKINGS,
+                       help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")),
+    ("--glue", dict(default="loading", choices=sample.GLUES,
+                    help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")),
+    ("--rel-std", dict(type=float, default=0.05,
+                       help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")),
+    ("--seed", dict(type=int, default=1, help="factors, fig16, fig18: the random seed of the gas (positions and radii): "
+                                              "another realization of the preparation")),
+    ("--sinter", dict(type=float, default=sample.SINTER,
+                      help="factors, fig16, fig18: the sintering stress d0 p_s/kp (the paper's 0.02)")),
+    ("--drag", dict(default="contacts", choices=("contacts", "lab"), help="factors: the background drag's reference in the pull")),
+    ("--table", dict(action="store_true", help="factors: only gather the table of the runs made")),
+    ("--report", dict(default=None, metavar="DOCS",
+                      help="factors: copy the study's files to DOCS/factors/ and write the table there from them")),
+    ("--mpi", dict(type=int, default=None, metavar="N",
+                   help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
+                        " fig17 without crack events and snapshots)")),
+)
+# The periods a job runs when --periods is not given (FAST, SLOW otherwise).
+DEFAULT_PERIODS = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}
 MPI_FIGURES = ("fig16", "fig17", "fig18")
+
+
+def batch_columns():
+    """The yade-batch table's columns for the tablet jobs: every option, named with underscores,
+    absent (None) unless the table gives it (mesocontact.batch.argv)."""
+    return {flag[2:].replace("-", "_"): None for flag, _ in OPTIONS}
 
 
 def parse_args(figure, argv):
@@ -31,46 +76,12 @@ def parse_args(figure, argv):
     import argparse
     if figure not in FIGURES:
         raise ValueError(f"figure = {figure!r} is invalid: one of {FIGURES}")
-    p = argparse.ArgumentParser(prog=f"yade -n -x scripts/tablet_{figure}.py",
-                                description=f"Appendix F, {figure}: writes CSV, JSON, PNG (and VTK) into --out.")
-    p.add_argument("--quick", action="store_true", help="216 particles, one cycle (for tests)")
-    p.add_argument("--out", default="results/tablet", help="output directory (the cached states are reused from it)")
-    default_periods = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}.get(figure, (FAST, SLOW))
-    p.add_argument("--periods", default=",".join(f"{x:g}" for x in default_periods),
-                   help="comma-separated cycle periods in elastic crossing times (the first drawn thin)")
-    p.add_argument("--amplitudes", default=None, help="comma-separated amplitudes Dx in d0")
-    p.add_argument("--slow-amplitudes", default=None,
-                   help="fig16, fig18: comma-separated amplitudes that also run at the slower periods (default: all)")
-    p.add_argument("--no-run", action="store_true", help="rates: only the periods whose runs are complete")
-    p.add_argument("--speed", type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")
-    p.add_argument("--until", type=float, default=None,
-                   help="fig17: pull until Dx = UNTIL (default 9); fig19: compress until Dx = -UNTIL (default 3) (in d0)")
-    p.add_argument("--factors", default=None,
-                   help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 and the perturbed 1.000001, 1.000002, 0.999999)")
-    p.add_argument("--runs", default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")
-    p.add_argument("--material", default="appendixF", choices=sorted(sample.MATERIALS),
-                   help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")
-    p.add_argument("--kc-over-kp", type=float, default=None, help="prepare: overrides the set's kc/kp")
-    p.add_argument("--n", type=int, default=None, help="prepare: number of particles (1728; 216 with --quick)")
-    p.add_argument("--packing", default="full", choices=sample.PACKINGS,
-                   help="factors: the law while the gas is compacted (full; frictionless: without friction and adhesion)")
-    p.add_argument("--glue", default="loading", choices=sample.GLUES,
-                   help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")
-    p.add_argument("--rel-std", type=float, default=0.05,
-                   help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")
-    p.add_argument("--seed", type=int, default=1,
-                   help="factors, fig16, fig18: the random seed of the gas (positions and radii): another realization of the preparation")
-    p.add_argument("--sinter", type=float, default=sample.SINTER,
-                   help="factors, fig16, fig18: the sintering stress d0 p_s/kp (the paper's 0.02)")
-    p.add_argument("--drag", default="contacts", choices=("contacts", "lab"),
-                   help="factors: the background drag's reference in the pull")
-    p.add_argument("--table", action="store_true", help="factors: only gather the table of the runs made")
-    p.add_argument("--report", default=None, metavar="DOCS",
-                   help="factors: copy the study's files to DOCS/factors/ and write the table there from them")
-    p.add_argument("--mpi", type=int, default=None, metavar="N",
-                   help="fig16, fig17, fig18: run under yade.mpy on N ranks (start with `mpiexec -n N yade -j1 -n -x ...`;"
-                        " fig17 without crack events and snapshots)")
+    p = argparse.ArgumentParser(prog=f"yade -n -x studies/scripts/tablet.py {figure}",
+                                description=f"Appendix F, {figure}: {JOBS[figure][1]} Writes CSV, JSON, PNG (and VTK) into --out.")
+    for flag, keywords in OPTIONS:
+        p.add_argument(flag, **keywords)
     a = p.parse_args(argv)
+    a.periods = a.periods or ",".join(f"{x:g}" for x in DEFAULT_PERIODS.get(figure, (FAST, SLOW)))
     if a.mpi is not None and figure not in MPI_FIGURES:
         p.error(f"--mpi {a.mpi}: only {', '.join(MPI_FIGURES)} run under yade.mpy (not {figure})")
     if a.mpi is not None and a.mpi < 2:
@@ -121,36 +132,54 @@ def _main(figure, a, amps, slow, periods):
     if is_master():
         _out.sweep(a.out)
     t0 = time.time()
-    if figure == "prepare":
-        info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
-        out = {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
-    elif figure == "drag":
-        out = drag_share(a.out, a.quick)
-    elif figure == "timestep":
-        out = timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE,
-                             runs=a.runs or TIMESTEP_RUNS)
-    elif figure == "rates":
-        out = rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods, run_missing=not a.no_run)
-    elif figure in ("fig16", "fig18"):
-        out = cyclic("tension" if figure == "fig16" else "compression", a.out, amps, a.quick, periods,
-                     slow_amplitudes=slow, protocol=_preparation(a))
-    elif figure == "fig19":
-        out = large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0)
-    elif figure == "fig17":
-        out = pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0)
-    elif figure == "factors":
-        if a.report:
-            out = factor_report(a.out, a.report)
-        else:
-            if not a.table:
-                factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed, sinter=a.sinter)
-            out = factor_table(a.out, a.quick)
-    else:
-        raise ValueError(f"figure = {figure!r} is invalid")
+    out = JOBS[figure][0](a, amps, slow, periods)
     if not is_master():
         return
     print(json.dumps(out, indent=1, default=str)[:4000])
     print(f"{figure} done in {time.time() - t0:.0f} s; outputs in {os.path.abspath(a.out)}", flush=True)
+
+
+def _prepare(a, amps, slow, periods):
+    info = prepare(a.out, a.quick, material=a.material, kc_over_kp=a.kc_over_kp, n=a.n)
+    return {k: info[k] for k in ("compacted", "sintered", "released", "unconfined") if k in info}
+
+
+def _timestep(a, amps, slow, periods):
+    return timestep_study(a.out, a.quick, factors=a.factors or TIMESTEP_FACTORS + (PERTURBED,) + PERTURBED_MORE,
+                          runs=a.runs or TIMESTEP_RUNS)
+
+
+def _factors(a, amps, slow, periods):
+    if a.report:
+        return factor_report(a.out, a.report)
+    if not a.table:
+        factor_run(a.out, a.packing, a.glue, a.drag, a.quick, rel_std=a.rel_std, seed=a.seed, sinter=a.sinter)
+    return factor_table(a.out, a.quick)
+
+
+# The tablet's jobs: name -> (what runs it with the parsed options, what it does). A new job is a
+# driver (runs.py) and one line here; its options join OPTIONS if it needs new ones.
+JOBS = {
+    "prepare": (_prepare, "the sample, made once and cached in --out."),
+    "drag": (lambda a, amps, slow, periods: drag_share(a.out, a.quick),
+             "the share of the tension peak the background drag supplies."),
+    "timestep": (_timestep, "the time-step convergence study."),
+    "rates": (lambda a, amps, slow, periods: rates(a.out, a.quick, amplitude=(amps or (0.2,))[0], periods=periods,
+                                                    run_missing=not a.no_run),
+              "the cycles of one amplitude at three periods."),
+    "fig16": (lambda a, amps, slow, periods: cyclic("tension", a.out, amps, a.quick, periods, slow_amplitudes=slow,
+                                                     protocol=_preparation(a)),
+              "tension cycles (Fig. 16)."),
+    "fig17": (lambda a, amps, slow, periods: pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0),
+              "the pull to rupture with snapshots (Fig. 17)."),
+    "fig18": (lambda a, amps, slow, periods: cyclic("compression", a.out, amps, a.quick, periods, slow_amplitudes=slow,
+                                                     protocol=_preparation(a)),
+              "compression cycles (Fig. 18)."),
+    "fig19": (lambda a, amps, slow, periods: large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0),
+              "compression to large strain with snapshots (Fig. 19)."),
+    "factors": (_factors, "one pull of the factor study (a preparation), then its table."),
+}
+FIGURES = tuple(JOBS)
 
 
 def _preparation(a):

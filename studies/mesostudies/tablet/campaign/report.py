@@ -84,7 +84,7 @@ def factor_table(outdir, quick=False):
                 rows.append(_factor_row(st, json.load(f)))
     fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
     md = ["# The tested tablet: the factor study", "",
-          "Written by `yade -n -x scripts/tablet_factors.py --out DIR --table` (or `--report DOCS`) from the files under "
+          "Written by `yade -n -x studies/scripts/tablet.py factors --out DIR --table` (or `--report DOCS`) from the files under "
           "`factors/` (each preparation's stage descriptions, each pull's CSV and JSON). One row per pull "
           "(Fig. 17's pull at the campaign's speed, ended 1 Dx after the last chain broke). Sample columns: "
           "after sintering / after release / at the test start (L0 between the loading walls; ν and C of the "

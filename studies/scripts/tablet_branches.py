@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """The fraction of the tablet's contacts on each branch of the law through a cyclic test (plain python3):
-    python3 scripts/tablet_branches.py RUN-branches.csv OUT.png [--cycles N] [--period STEPS] [--title TEXT]
+    python3 studies/scripts/tablet_branches.py RUN-branches.csv OUT.png [--cycles N] [--period STEPS] [--title TEXT]
 RUN-branches.csv: written by every cyclic tablet run next to its CSV; --period: steps per cycle (the
 run's JSON has it as steps_per_cycle); without it the x axis is the step."""
 import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "py"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [os.path.join(HERE, "..", "..", "py"), os.path.join(HERE, "..")]  # the library and the studies
 from mesostudies.tablet import branchplot  # noqa: E402
 
 

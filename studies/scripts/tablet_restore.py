@@ -1,6 +1,6 @@
 # Makes the committed runs of campaigns/tablet/chosen the campaign's run bundles again (see campaign.restore),
 # so that the figure scripts regather without repeating runs:
-#   yade -n -x scripts/tablet_restore.py DOCS OUT
+#   yade -n -x studies/scripts/tablet_restore.py DOCS OUT
 import sys
 
 from mesocontact import batch

@@ -2,7 +2,7 @@
 # step (the unconfined start of the tests), the interactions the InteractionLoop visits (touching
 # and potential), ns per interaction and step, and the collider's verletDist swept in the same
 # process (ratios, not absolute times, are what compare on a shared machine):
-#   yade -j1 -n -x scripts/tablet_profile.py [--out DIR] [--steps N] [--json FILE]
+#   yade -j1 -n -x studies/scripts/tablet_profile.py [--out DIR] [--steps N] [--json FILE]
 import argparse
 import json
 import os

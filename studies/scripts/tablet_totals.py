@@ -1,6 +1,6 @@
 # The measured time of a tablet campaign, from the jobs' records (<out>/jobs.jsonl): each job's
 # time and steps, the single-job hours, the wall time; written to <out>/campaign-time.json.
-#   yade -j1 -n -x scripts/tablet_totals.py [--out DIR] [--since EPOCH_S] [--lanes N] [--wall-seconds S]
+#   yade -j1 -n -x studies/scripts/tablet_totals.py [--out DIR] [--since EPOCH_S] [--lanes N] [--wall-seconds S]
 import argparse
 import json
 import os

@@ -1,6 +1,6 @@
 # The plan of a tablet campaign table before it runs: jobs, steps, hours from a measured ms per step
 # (also written to <out>/campaign-plan.json).
-#   yade -j1 -n -x scripts/tablet_plan.py [TABLE] [--out DIR] [--lanes N]
+#   yade -j1 -n -x studies/scripts/tablet_plan.py [TABLE] [--out DIR] [--lanes N]
 import argparse
 import json
 import os
@@ -10,7 +10,7 @@ from mesocontact import outputs
 from mesostudies.tablet import campaign
 
 p = argparse.ArgumentParser(prog="tablet_plan.py")
-p.add_argument("table", nargs="?", default="batch/tablet-campaign.table")
+p.add_argument("table", nargs="?", default="studies/batch/tablet-campaign.table")
 p.add_argument("--out", default="results/tablet")
 p.add_argument("--lanes", type=int, default=2)
 a = p.parse_args(sys.argv[1:])

@@ -1,5 +1,5 @@
 # Copies a tablet campaign's data and figures into the documentation (see campaign.report):
-#   yade -n -x scripts/tablet_report.py OUT DOCS
+#   yade -n -x studies/scripts/tablet_report.py OUT DOCS
 import sys
 
 from mesocontact import batch

@@ -1,7 +1,7 @@
 # One figure of the papers, or all of them (docs/figures.md): YADE over the closed form, CSV + PNG.
-#   yade -n -x scripts/figure.py N [--paper long|short] [--out DIR] [--quick]
-#   yade -n -x scripts/figure.py --all [--no-tablet] [--out DIR] [--quick]
-#   yade-batch --executable build/yade-meso batch/figures.table scripts/figure.py   (columns: the options)
+#   yade -n -x studies/scripts/figure.py N [--paper long|short] [--out DIR] [--quick]
+#   yade -n -x studies/scripts/figure.py --all [--no-tablet] [--out DIR] [--quick]
+#   yade-batch --executable build/yade-meso studies/batch/figures.table studies/scripts/figure.py   (columns: the options)
 # long: Figs. 5-19 of "A contact model for sticking of adhesive meso-particles" (16-19 are the
 # tablet of Appendix F, hours of computing, runs cached in --tablet-out); short: Figs. 5-6 of "Sticking
 # of adhesive particles in elasto-plastic collisions". --quick: a few points per figure.
@@ -11,7 +11,7 @@ import sys
 from mesocontact import batch
 from mesostudies.figures import atlas
 
-p = argparse.ArgumentParser(prog="yade -n -x scripts/figure.py",
+p = argparse.ArgumentParser(prog="yade -n -x studies/scripts/figure.py",
                             description="Figures of the papers: YADE pair collisions over the closed form (CSV + PNG).")
 p.add_argument("number", nargs="?", type=int, help="figure number in the chosen paper")
 p.add_argument("--paper", choices=("long", "short"), default="long", help="which paper (default: long)")

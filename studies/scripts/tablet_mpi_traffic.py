@@ -1,6 +1,6 @@
 # What the tablet under yade.mpy exchanges per step, measured on this scene (issue #19's scaling
 # estimate, docs/mpi.md):
-#   mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py [--quick] [--out DIR] [--steps S]
+#   mpiexec -n N yade -j1 -n -x studies/scripts/tablet_mpi_traffic.py [--quick] [--out DIR] [--steps S]
 # Loads the unconfined start in DIR (made if missing), splits it as the campaign does
 # (mesocontact.mpi.split_slabs: walls on the master, N-1 slabs along x), runs S steps with the
 # walls at rest and writes DIR/mpi-traffic-N.json: per worker the particles it owns, its real
@@ -22,7 +22,7 @@ from mesocontact import mpi
 from mesostudies.tablet import sample as tablet
 from mesostudies.tablet import stages, uniaxial
 
-p = argparse.ArgumentParser(prog="mpiexec -n N yade -j1 -n -x scripts/tablet_mpi_traffic.py")
+p = argparse.ArgumentParser(prog="mpiexec -n N yade -j1 -n -x studies/scripts/tablet_mpi_traffic.py")
 p.add_argument("--quick", action="store_true", help="the 216-particle tablet")
 p.add_argument("--out", default="results/tablet", help="where the unconfined start is (made if missing)")
 p.add_argument("--steps", type=int, default=1000, help="steps to time")

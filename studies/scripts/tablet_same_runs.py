@@ -1,7 +1,7 @@
 # Whether two copies of the tablet campaign's files hold the same runs: every CSV byte for byte,
 # every JSON equal in every entry except the clocks (a rerun on another day must give the same
 # physics; only its timing may differ). Plain python3:
-#   python3 scripts/tablet_same_runs.py DIR_A DIR_B [--json FILE]
+#   python3 studies/scripts/tablet_same_runs.py DIR_A DIR_B [--json FILE]
 # Exit code 0 when every common file agrees, 1 otherwise.
 import argparse
 import json
@@ -54,7 +54,7 @@ def compare(da, db):
 
 
 def main(argv):
-    p = argparse.ArgumentParser(prog="python3 scripts/tablet_same_runs.py")
+    p = argparse.ArgumentParser(prog="python3 studies/scripts/tablet_same_runs.py")
     p.add_argument("a")
     p.add_argument("b")
     p.add_argument("--json", help="write the comparison here")

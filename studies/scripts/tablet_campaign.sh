@@ -4,13 +4,13 @@
 # single-threaded: on this project's 2-core machines two -j1 jobs beat one -j2 job, see
 # docs/performance.md), the measured total printed (job time, wall time), then the figures and
 # the data copied into DOCS:
-#   bash scripts/tablet_campaign.sh [--lanes N] [--yade YADE] [--out OUT] [--table TABLE] [--docs DOCS]
-# Defaults: 2 lanes, build/yade-meso, results/tablet, batch/tablet-campaign.table, campaigns/tablet/chosen.
+#   bash studies/scripts/tablet_campaign.sh [--lanes N] [--yade YADE] [--out OUT] [--table TABLE] [--docs DOCS]
+# Defaults: 2 lanes, build/yade-meso, results/tablet, studies/batch/tablet-campaign.table, campaigns/tablet/chosen.
 # Runs whose bundles are in OUT already are read back, not repeated: a campaign stopped at any
 # point goes on where it stopped when the same command runs again.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=batch/tablet-campaign.table DOCS=campaigns/tablet/chosen
+cd "$(dirname "$0")/../.."
+LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=studies/batch/tablet-campaign.table DOCS=campaigns/tablet/chosen
 while [ $# -gt 0 ]; do
   case "$1" in
     --lanes) LANES=$2 ;; --yade) YADE=$2 ;; --out) OUT=$2 ;; --table) TABLE=$2 ;; --docs) DOCS=$2 ;;
@@ -22,17 +22,17 @@ case "$LANES" in ''|*[!0-9]*|0) echo "tablet_campaign.sh: --lanes $LANES is inva
 BATCH=${YADE_BATCH_COMMAND:-yade-batch}  # the yade-batch that matches YADE (Debian's: yade-batch)
 mkdir -p "$OUT"
 start=$(date +%s)
-"$YADE" -j1 -n -x scripts/tablet_prepare.py --out "$OUT"
-"$YADE" -j1 -n -x scripts/tablet_plan.py "$TABLE" --out "$OUT" --lanes "$LANES"
+"$YADE" -j1 -n -x studies/scripts/tablet.py prepare --out "$OUT"
+"$YADE" -j1 -n -x studies/scripts/tablet_plan.py "$TABLE" --out "$OUT" --lanes "$LANES"
 # The table with OUT in its column 'out' (added if the table has none), so that every job writes there.
 awk -v out="'$OUT'" 'NF && $1 !~ /^#/ {
   if (!head++) { for (i = 1; i <= NF; i++) if ($i == "out") col = i; print $0 (col ? "" : " out"); next }
   if (col) { $col = out; print } else print $0, out }' "$TABLE" > "$OUT/campaign.table"
 "$BATCH" -j "$LANES" --nice 0 --executable "$YADE" --log "$OUT/log-@.log" \
-  "$OUT/campaign.table" scripts/tablet_batch.py
-"$YADE" -j1 -n -x scripts/tablet_totals.py --out "$OUT" --since "$start" --lanes "$LANES" \
+  "$OUT/campaign.table" studies/scripts/tablet.py
+"$YADE" -j1 -n -x studies/scripts/tablet_totals.py --out "$OUT" --since "$start" --lanes "$LANES" \
   --wall-seconds "$(( $(date +%s) - start ))"
-"$YADE" -j1 -n -x scripts/tablet_fig16.py --out "$OUT"   # the figures, from the runs above
-"$YADE" -j1 -n -x scripts/tablet_fig18.py --out "$OUT"
-"$YADE" -j1 -n -x scripts/tablet_rates.py --out "$OUT" --no-run
-"$YADE" -j1 -n -x scripts/tablet_report.py "$OUT" "$DOCS"
+"$YADE" -j1 -n -x studies/scripts/tablet.py fig16 --out "$OUT"   # the figures, from the runs above
+"$YADE" -j1 -n -x studies/scripts/tablet.py fig18 --out "$OUT"
+"$YADE" -j1 -n -x studies/scripts/tablet.py rates --out "$OUT" --no-run
+"$YADE" -j1 -n -x studies/scripts/tablet_report.py "$OUT" "$DOCS"

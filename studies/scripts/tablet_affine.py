@@ -3,7 +3,7 @@
 # tensile limit delta_min = (k2 - k1)/(k2 + kc) deltaMax (the largest tension of its k2 line) at
 # eps = (delta - delta_min)/(l nx^2) and lets go (delta = 0) at eps = delta/(l nx^2). Printed and
 # written as Dx = eps L0/d0 for the contacts along x (nx^2 > 0.5), with the overlaps' means:
-#   yade -j1 -n -x scripts/tablet_affine.py STATE.yade.gz OUT.json
+#   yade -j1 -n -x studies/scripts/tablet_affine.py STATE.yade.gz OUT.json
 import json
 import sys
 
@@ -14,7 +14,7 @@ from mesocontact import outputs
 from mesostudies.tablet import sample as tablet
 
 if len(sys.argv) != 3:
-    sys.exit("usage: yade -j1 -n -x scripts/tablet_affine.py STATE.yade.gz OUT.json")
+    sys.exit("usage: yade -j1 -n -x studies/scripts/tablet_affine.py STATE.yade.gz OUT.json")
 O.load(sys.argv[1])
 rows = []
 for i in O.interactions:

@@ -2,8 +2,8 @@
 # perturbation? The campaign's tension cycle (480 t_w) run again with its time step changed by 1e-6
 # (far below any integration error): the spread of each cycle's peak among these runs is what a
 # perturbation alone does; the committed 480 and 1920 t_w runs give the change with the rate.
-#   yade -j1 -n -x scripts/tablet_sensitivity.py --out results/tablet --amplitude 0.1 --factor 1.000001
-#   python3 scripts/tablet_sensitivity.py --gather results/tablet --docs campaigns/tablet/chosen   # sensitivity.json there
+#   yade -j1 -n -x studies/scripts/tablet_sensitivity.py --out results/tablet --amplitude 0.1 --factor 1.000001
+#   python3 studies/scripts/tablet_sensitivity.py --gather results/tablet --docs campaigns/tablet/chosen   # sensitivity.json there
 import argparse
 import glob
 import json

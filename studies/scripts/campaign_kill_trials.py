@@ -5,7 +5,7 @@ time), the other finishes; then every file in the directory is checked: each res
 complete (its manifest's SHA-256 sums), each saved stage has its description and loads, and no
 leftover of a stopped job remains once the next job has started (outputs.sweep).
 
-    python3 scripts/campaign_kill_trials.py [YADE] [--trials 10] [--seed 1] [--out FILE.json]
+    python3 studies/scripts/campaign_kill_trials.py [YADE] [--trials 10] [--seed 1] [--out FILE.json]
 
 YADE defaults to the build-tree launcher build/yade-meso. Plain Python (it starts YADE jobs).
 """
@@ -21,15 +21,15 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "py"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "py"))
 from mesocontact import outputs  # noqa: E402  (plain Python)
 
-JOBS = [["tablet_fig16.py", "--quick", "--amplitudes", "0.05,0.2"], ["tablet_fig18.py", "--quick", "--amplitudes", "0.05,0.2"],
-        ["tablet_fig17.py", "--quick", "--speed", "0.0075"], ["tablet_rates.py", "--quick", "--periods", "30,120"]]
+JOBS = [["fig16", "--quick", "--amplitudes", "0.05,0.2"], ["fig18", "--quick", "--amplitudes", "0.05,0.2"],
+        ["fig17", "--quick", "--speed", "0.0075"], ["rates", "--quick", "--periods", "30,120"]]
 
 
 def start(yade, job, out):
-    cmd = [yade, "-j1", "-n", "-x", os.path.join(HERE, job[0]), *job[1:], "--out", out]
+    cmd = [yade, "-j1", "-n", "-x", os.path.join(HERE, "tablet.py"), *job, "--out", out]
     return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
 
 
@@ -58,7 +58,7 @@ def main():
     rng = random.Random(a.seed)
     base = tempfile.mkdtemp(prefix="kill-trials-")
     template = os.path.join(base, "prepared")  # the cached stages, made once (not killed)
-    subprocess.run([a.yade, "-j1", "-n", "-x", os.path.join(HERE, "tablet_prepare.py"), "--quick", "--out", template],
+    subprocess.run([a.yade, "-j1", "-n", "-x", os.path.join(HERE, "tablet.py"), "prepare", "--quick", "--out", template],
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
     trials = []
     for k in range(a.trials):
@@ -93,7 +93,7 @@ def main():
                        "killed_before_end": killed, "other": " ".join(other[:1]), "other_rc": rc2, "bundles": bundles,
                        "problems_before_sweep": before, "problems_after_sweep": after, "wall_s": round(time.time() - t0, 1)})
         print(json.dumps(trials[-1]), flush=True)
-    summary = {"command": "python3 scripts/campaign_kill_trials.py " + " ".join(sys.argv[1:]), "trials": trials,
+    summary = {"command": "python3 studies/scripts/campaign_kill_trials.py " + " ".join(sys.argv[1:]), "trials": trials,
                "killed": sum(t["killed_before_end"] for t in trials),
                "other_job_failed": sum(t["other_rc"] != 0 for t in trials),
                "problems_after_sweep": sum(len(t["problems_after_sweep"]) for t in trials),
