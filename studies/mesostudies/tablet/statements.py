@@ -24,7 +24,8 @@ TOL_L0 = 0.01  # the tested sample's length against the paper's 0.115: 1 %
 SINTER = 0.02  # the paper's sintering stress d0 p_s/kp (sample.SINTER, which needs YADE)
 
 
-def _load(d, name):
+def load_json(d, name):
+    """The JSON file ``name`` of folder ``d``, or None where it is absent."""
     p = os.path.join(d, name)
     if not os.path.exists(p):
         return None
@@ -32,7 +33,8 @@ def _load(d, name):
         return json.load(f)
 
 
-def _csv(path):
+def read_csv(path):
+    """The rows of a campaign CSV (header skipped) as tuples of floats."""
     with open(path) as f:
         return [tuple(float(x) for x in ln.split(",")) for ln in f.read().split("\n")[1:] if ln]
 
@@ -44,10 +46,10 @@ def _runs(d):
         base = os.path.basename(js)
         if base.startswith(("fig", "timestep")):
             continue
-        j = _load(d, base)
+        j = load_json(d, base)
         if not j or "steps_per_cycle" not in j or not os.path.exists(js[:-5] + ".csv"):
             continue
-        rows = _csv(js[:-5] + ".csv")
+        rows = read_csv(js[:-5] + ".csv")
         out[(j["mode"], j["amplitude"], j["period_crossings"])] = (j, measures.cycle_measures(
             rows, j["steps_per_cycle"], j["mode"], j["cycles"]))
     return out
@@ -74,7 +76,7 @@ def crack_plane(pull):
 
 def realizations(d, st):
     """The factor study's rows (../factors/factors.json) of this sample's preparation, one per seed."""
-    rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
+    rows = load_json(os.path.join(d, "..", "factors"), "factors.json") or []
     if not st:
         return []
     b = st["built"]
@@ -85,9 +87,9 @@ def realizations(d, st):
 
 def statements(d):
     """The list of statements of Appendix F with number, definition and verdict (see the module)."""
-    st = _load(d, "unconfined.yade.gz.json") or _load(d, "released.yade.gz.json")
+    st = load_json(d, "unconfined.yade.gz.json") or load_json(d, "released.yade.gz.json")
     runs = _runs(d)
-    pull = _load(d, "fig17.json")
+    pull = load_json(d, "fig17.json")
     out = []
 
     def add(quote, number, definition, verdict, note="", why=""):
@@ -205,7 +207,7 @@ def statements(d):
         marks = [round(s["mark"], 2) for s in pull.get("snapshots", [])]
         add("snapshots at Dx = 0, 0.81, 1.8, 3.1, 4.7, 7.4 and 8.6 (a)–(g)", f"snapshots at {marks}",
             "the pull's snapshot marks", "✓" if marks == [0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6] else "✗")
-        rough = _load(d, "roughness.json")
+        rough = load_json(d, "roughness.json")
         if rough:
             lr, rr, flat = rough["left"], rough["right"], rough.get("flat_cut")
             ranges = (lr["range_5_95"], rr["range_5_95"])
@@ -269,7 +271,7 @@ def statements(d):
         add("thick lines four times slower: small quantitative difference, qualitative agreement (compression)",
             f"largest change of a cycle's peak: {_pct(worst)}", "every cycle's peak, fast against 4 x slower; <= 5 %",
             "✓" if worst <= 0.05 else "✗")
-    f19 = _load(d, "fig19.json") or {}
+    f19 = load_json(d, "fig19.json") or {}
     big = f19.get("until") or max(f19.get("amplitudes") or [0])  # a monotonic compression, or cycles (earlier campaigns)
     add("Fig. 19: the continuous plastic deformation of the sample at large strains",
         f"compression to Dx = {big:g}" if big else "–",
@@ -287,7 +289,7 @@ def _brittleness(d, st, pull, runs):
     kc = st["built"]["kc_over_kp"]
     L0 = sorted({j["L0"] for j, _ in runs.values()})[0] / st["d0"]
     eps = theory.max_tensile_range(1.0, kc, PHI_F, 0.5)  # in units of the centre distance l = 2 a12
-    aff = _load(d, "affine.json")
+    aff = load_json(d, "affine.json")
     return (f"A contact can open at most phiF a12 kc/(kp + kc) from its force-free overlap before its tension falls "
             f"(theory.max_tensile_range, at any sintering depth); stretched affinely, every contact along x gets there "
             f"by the strain {100 * eps:.2f} %, Dx = {eps * L0:.3f} on L0 = {L0:.2f} d0"
@@ -314,7 +316,7 @@ def _cracked(pull, runs):
 
 def _rate(d):
     """Whether the tension runs' rate difference is viscosity or chance (sensitivity.json, if present)."""
-    sens = _load(d, "sensitivity.json")
+    sens = load_json(d, "sensitivity.json")
     if not sens:
         return ""
     parts = []
@@ -330,7 +332,7 @@ def _rate(d):
 
 def _loose_peak(d):
     """Which preparations of the factor study (../factors/factors.json) peak late, if present."""
-    rows = _load(os.path.join(d, "..", "factors"), "factors.json") or []
+    rows = load_json(os.path.join(d, "..", "factors"), "factors.json") or []
     late = [r for r in rows if r["peak_Dx"] >= 0.1]
     dense = [r["peak_Dx"] for r in rows if abs(r["L0"] / 0.115 - 1) <= TOL_L0 and r.get("sinter", SINTER) == SINTER]
     if not late or not dense:

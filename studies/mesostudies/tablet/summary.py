@@ -25,8 +25,8 @@ def _f(x, f=".3g"):
 
 
 def _stages(d, out, runs):
-    st = _st._load(d, "unconfined.yade.gz.json")
-    pull = _st._load(d, "fig17.json")
+    st = _st.load_json(d, "unconfined.yade.gz.json")
+    pull = _st.load_json(d, "fig17.json")
     if not st:
         return
     L0 = sorted({j["L0"] for j, _ in runs.values()})[0] if runs else None
@@ -54,7 +54,7 @@ def _plane(name, prof):
 
 
 def _pull(d, out):
-    p = _st._load(d, "fig17.json")
+    p = _st.load_json(d, "fig17.json")
     if not p:
         return
     g = p.get("first_gap_Dx_by_area") or {"1": p.get("first_gap_Dx")}  # older pulls: one threshold
@@ -78,7 +78,7 @@ def _pull(d, out):
         out += ["", f"At Dx = 0.2 the crack plane keeps {w['count']} of the {before} contacts that crossed it "
                 f"at Dx = 0 ({_pct(w['count'] / before)}), the sample {_pct(at['total'] / p0['total'])} of all "
                 f"its contacts, and the tension is {_pct(at['F'] / p['max_tension'])} of the peak."]
-    aff = _st._load(d, "affine.json")
+    aff = _st.load_json(d, "affine.json")
     if aff:
         t, z = aff["Dx_to_tensile_limit"], aff["Dx_to_detachment"]
         out += ["", f"Affine stretch of the test start's contacts (affine.json): {aff['contacts']} contacts, {aff['along_x']} "
@@ -116,7 +116,7 @@ def _cyclic(runs, out):
 
 
 def _fig19(d, out):
-    f = _st._load(d, "fig19.json")
+    f = _st.load_json(d, "fig19.json")
     if not f or "snapshots" not in f:
         return
     out += ["## Fig. 19 (fig19.json)", "",
@@ -130,7 +130,7 @@ def _fig19(d, out):
 
 
 def _others(d, out):
-    ds = _st._load(d, "drag-share.json")
+    ds = _st.load_json(d, "drag-share.json")
     if ds:
         r = ds["runs"]
         out += ["## Drag share (drag-share.json)", "",
@@ -138,7 +138,7 @@ def _others(d, out):
                 f"(lab-frame drag), {r['contacts']['peak']:.4f} (relative to the contacts), {r['none']['peak']:.4f} (none): "
                 f"the drag carries {_pct(r['lab']['drag_share_of_peak'])} and {_pct(r['contacts']['drag_share_of_peak'])} "
                 "of the peak.", ""]
-    ro = _st._load(d, "roughness.json")
+    ro = _st.load_json(d, "roughness.json")
     if ro:
         fl = ro.get("flat_cut")
         out += ["## Fracture faces (roughness.json)", "",
@@ -147,7 +147,7 @@ def _others(d, out):
                 f"and {ro['right']['range_5_95']:.1f} d0 (rms {ro['left']['rms']:.2f}, {ro['right']['rms']:.2f})"
                 + (f"; a flat cut: {max(fl['left']['range_5_95'], fl['right']['range_5_95']):.1f} d0 (rms "
                    f"{fl['left']['rms']:.2f}, {fl['right']['rms']:.2f})" if fl else "") + ".", ""]
-    se = _st._load(d, "sensitivity.json")
+    se = _st.load_json(d, "sensitivity.json")
     if se:
         out += ["## Rate or chance (sensitivity.json)", "",
                 "| amplitude | rate change per cycle | time step × (1 ± 1e-6) | rate over perturbation, cycles 2–4 |",
@@ -176,7 +176,7 @@ def _kc(d, out):
 
 
 def _realizations(d, out):
-    same = _st.realizations(d, _st._load(d, "unconfined.yade.gz.json"))
+    same = _st.realizations(d, _st.load_json(d, "unconfined.yade.gz.json"))
     if len(same) < 2:
         return
     out += [f"## Realizations of this preparation (../factors/factors.json, seeds {', '.join(str(r['seed']) for r in same)})", ""]
@@ -192,7 +192,7 @@ def _realizations(d, out):
 
 
 def _cost(d, out):
-    c = _st._load(os.path.join(d, "..", "quiet"), "campaign-time.json")
+    c = _st.load_json(os.path.join(d, "..", "quiet"), "campaign-time.json")
     if not c:
         return
     out += ["## Cost (../quiet/campaign-time.json: the same campaign on an idle machine)", "",
