@@ -18,6 +18,7 @@ from .runs import (
     large_compression, pull, rates, timestep_study,
 )
 from .report import factor_report, factor_table
+from ..affine import run as affine_run
 
 
 # The options of every tablet job, declared once: argparse takes them as they are, and a yade-batch
@@ -46,10 +47,10 @@ OPTIONS = (
                     help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")),
     ("--rel-std", dict(type=float, default=0.05,
                        help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")),
-    ("--seed", dict(type=int, default=1, help="factors, fig16, fig18: the random seed of the gas (positions and radii): "
+    ("--seed", dict(type=int, default=1, help="factors, fig16, fig18, affine: the random seed of the gas (positions and radii): "
                                               "another realization of the preparation")),
     ("--sinter", dict(type=float, default=sample.SINTER,
-                      help="factors, fig16, fig18: the sintering stress d0 p_s/kp (the paper's 0.02)")),
+                      help="factors, fig16, fig18, affine: the sintering stress d0 p_s/kp (the paper's 0.02)")),
     ("--drag", dict(default="contacts", choices=("contacts", "lab"), help="factors: the background drag's reference in the pull")),
     ("--table", dict(action="store_true", help="factors: only gather the table of the runs made")),
     ("--report", dict(default=None, metavar="DOCS",
@@ -178,6 +179,8 @@ JOBS = {
     "fig19": (lambda a, amps, slow, periods: large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0),
               "compression to large strain with snapshots (Fig. 19)."),
     "factors": (_factors, "one pull of the factor study (a preparation), then its table."),
+    "affine": (lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
+               "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
 }
 FIGURES = tuple(JOBS)
 
