@@ -11,27 +11,16 @@ import numpy as np
 from yade import O
 
 from mesocontact import outputs
+from mesostudies.tablet import affine
 from mesostudies.tablet import sample as tablet
 
 if len(sys.argv) != 3:
     sys.exit("usage: yade -j1 -n -x studies/scripts/tablet_affine.py STATE.yade.gz OUT.json")
 O.load(sys.argv[1])
-rows = []
-for i in O.interactions:
-    b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
-    if not (i.isReal and hasattr(b1.shape, "radius") and hasattr(b2.shape, "radius")):
-        continue
-    branch = b2.state.pos - b1.state.pos
-    delta = b1.shape.radius + b2.shape.radius - branch.norm()  # the overlap from the positions (saved states keep no geometry)
-    if delta <= 0:
-        continue
-    ph = i.phys
-    rows.append((delta, ph.delta0, (ph.k2 - ph.k1) / (ph.k2 + ph.kc) * ph.deltaMax, ph.deltaMax, branch.norm(),
-                 (branch[0] / branch.norm()) ** 2))
-a = np.array(rows)
-xs = [b.state.pos[0] - b.shape.radius for b in O.bodies if hasattr(b.shape, "radius")]
-xe = [b.state.pos[0] + b.shape.radius for b in O.bodies if hasattr(b.shape, "radius")]
-L0, d0 = max(xe) - min(xs), tablet.D0
+c, L0 = affine.contacts_of_scene()  # delta, delta0, k2, kc, l, nx^2, deltaMax, k1
+# columns as before: overlap, delta0, delta_min = (k2 - k1)/(k2 + kc) deltaMax, deltaMax, l, nx^2
+a = np.column_stack([c[:, 0], c[:, 1], (c[:, 2] - c[:, 7]) / (c[:, 2] + c[:, 3]) * c[:, 6], c[:, 6], c[:, 4], c[:, 5]])
+d0 = tablet.D0
 along = a[a[:, 5] > 0.5]
 to_limit = (along[:, 0] - along[:, 2]) / (along[:, 4] * along[:, 5]) * L0 / d0
 to_zero = along[:, 0] / (along[:, 4] * along[:, 5]) * L0 / d0
