@@ -41,6 +41,7 @@ cases = [
     ("fig19", ["--mpi", "3"], "--mpi"),
     ("fig17", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
     ("fig17", ["--until", "0"], "--until"),
+    ("affine", ["--sinter", "0"], "--sinter"),
 ]
 for job, args, option in cases:
     script = f"tablet.py {job}"

@@ -98,7 +98,6 @@ def item3():
     data = store.exportContacts([0, 1])
     pair(six=True)
     until_touch(1)
-    before = (type(O.interactions[0, 1].geom).__name__, O.interactions[0, 1].phys.deltaMax)
     store.keep()
     O.interactions.clear()
     O.engines[1]()  # the collider makes the candidate pair anew, without geometry

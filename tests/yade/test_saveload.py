@@ -150,7 +150,6 @@ for ext in (".xml", ".xml.gz", ".xml.bz2", ".yade", ".yade.gz", ".yade.bz2"):
         failures.append(f"packing {ext}")
 # Contacts of one material pair share one MesoPairParams: saved once, shared again after loading,
 # and new contacts after a change of the material get new parameters (old ones keep theirs).
-from yade import utils, wrapper as w  # noqa: E402
 
 O.reset()
 shared = w.MesoMat(k1=100.0, kp=500.0, kc=100.0, kt=50.0, frictionAngle=0.3, density=2000)

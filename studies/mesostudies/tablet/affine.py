@@ -66,7 +66,6 @@ def run(outdir, quick=False, protocol=None, progress=True):
     """The affine curve of the unconfined start (campaign.prepare with ``protocol``) up to Dx = 1:
     bundle affine/ with affine.csv (Dx, F/(kp d0)) and affine.json (the peak, the contacts'
     overlaps against the plastic limit, the preparation)."""
-    import json
     import os
 
     from mesocontact import outputs
