@@ -8,7 +8,8 @@
 # - Wall.axis outside 0-2 read pos[3]: the wall functor makes no contact and says so, set_detection
 #   refuses it;
 # - interactionDetectionFactor of the surface functors below 1 or not finite: spheres passed through;
-# - facets with two coincident vertices (slivers) were never detected.
+# - facets with two coincident vertices (slivers) were never detected;
+# - loop.runner took labels that replace O or sphere, and periods that never run or fail unnamed.
 import math
 import sys
 
@@ -210,9 +211,34 @@ def item7():
               "assignment and in the constructor, the old value kept; 1 accepted", f"refused {len(refused)} of 14")
 
 
+# 8. loop.runner: a label that already names something (O, sphere, a builtin) is refused, since YADE
+#    makes labels global names; the period is an integer number of steps >= 1.
+def item8():
+    from mesocontact import loop
+    for label in ("O", "sphere", "__import__", "len"):
+        try:
+            loop.runner(lambda: None, 1, label)
+            check(False, f"loop.runner label {label!r} refused")
+        except ValueError as e:
+            check("already names" in str(e), f"loop.runner label {label!r} refused", str(e)[:100])
+    check(O is not None and callable(utils.sphere), "O and sphere still what they were")
+    for period in (0, -1, 1.5, float("nan"), "2", 10 ** 30, True):
+        try:
+            loop.runner(lambda: None, period, "probeRunner")
+            check(False, f"loop.runner period {period!r} refused")
+        except ValueError as e:
+            check("period" in str(e), f"loop.runner period {period!r} refused, naming the period")
+    calls = []
+    O.reset()
+    O.engines = [loop.runner(lambda: calls.append(O.iter), 2, "probeRunner")]
+    O.engines = [loop.runner(lambda: calls.append(-O.iter), 2, "probeRunner")]  # one of ours, installed again
+    O.run(4, True)  # steps 0-3: the runner acts at step 2, calling what was registered last
+    check(calls == [-2], "a runner installed again under its label calls its new callable", str(calls))
+
+
 # All items, or those named on the command line (item1 ... item7), e.g. to show one before a fix:
 #   yade -n -x tests/yade/test_reliability.py item2
-ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7)}
+ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7, item8)}
 for name in [a for a in sys.argv[1:] if a in ITEMS] or list(ITEMS):
     ITEMS[name]()
 finish()
