@@ -55,6 +55,17 @@ class TabletDocs(unittest.TestCase):
         self.assertEqual(missing_numbers(_prose("README.md"), self.generated()), [],
                          "numbers on docs/tablet/README.md found in no generated page")
 
+    def test_branch_quotes_generated_numbers(self):
+        generated = _read("branch", "experiments.md") + _read("factors", "factors.md")
+        self.assertEqual(missing_numbers(_prose("branch.md"), generated), [],
+                         "numbers on docs/tablet/branch.md found in neither experiments.md nor factors.md")
+
+    def test_experiments_are_generated(self):
+        from mesostudies.tablet import experiments
+        self.assertEqual(experiments.markdown(experiments.e1(DOCS), experiments.e2(DOCS), "campaigns/tablet"),
+                         _read("branch", "experiments.md"),
+                         "branch/experiments.md differs from what python3 -m mesostudies.tablet.experiments writes")
+
     def test_pictures_are_the_campaigns(self):
         self.assertEqual(sorted(os.listdir(os.path.join(PROSE, "pictures"))), sorted(PICTURES))
         for name, source in PICTURES.items():

@@ -281,23 +281,23 @@ def statements(d):
 
 
 def _brittleness(d, st, pull, runs):
-    """Why the tension branch ends early, from the closed form and the files: under an affine
-    stretch every contact along x reaches its tensile limit by the strain phiF kc/(2 (kp + kc))
-    (theory.max_tensile_range over the centre distance, a12 <= l/2), whatever the sintering depth."""
+    """Where the rising tension of a contact ends, from the closed form and the files: under an
+    affine stretch every contact along x reaches its tensile limit by the strain phiF kc/(2 (kp + kc))
+    (theory.max_tensile_range over the centre distance, a12 <= l/2); its tension then falls along
+    -kc delta, over a range that grows with the sintering depth (docs/tablet/branch.md)."""
     if not (st and pull and runs):
         return ""
     kc = st["built"]["kc_over_kp"]
     L0 = sorted({j["L0"] for j, _ in runs.values()})[0] / st["d0"]
     eps = theory.max_tensile_range(1.0, kc, PHI_F, 0.5)  # in units of the centre distance l = 2 a12
     aff = load_json(d, "affine.json")
-    return (f"A contact can open at most phiF a12 kc/(kp + kc) from its force-free overlap before its tension falls "
-            f"(theory.max_tensile_range, at any sintering depth); stretched affinely, every contact along x gets there "
-            f"by the strain {100 * eps:.2f} %, Dx = {eps * L0:.3f} on L0 = {L0:.2f} d0"
+    return (f"A contact can open at most phiF a12 kc/(kp + kc) from its force-free overlap before its tension starts to "
+            f"fall (theory.max_tensile_range), then carries less along -kc delta until it lets go; stretched affinely, every "
+            f"contact along x reaches that limit by the strain {100 * eps:.2f} %, Dx = {eps * L0:.3f} on L0 = {L0:.2f} d0"
             + (f" (this sample's contacts along x: half by Dx = {aff['Dx_to_tensile_limit']['50']:.3f}, affine.json)"
                if aff else "")
-            + f". The pull's tension peaks at Dx = {pull['max_tension_Dx']:.3f}, inside that bound: the sample is as brittle "
-              "as its contacts, and a tension branch reversible to Dx = 0.1-0.2 would need a deformation that is not "
-              "affine (re-arrangement).")
+            + f". The pull's tension peaks at Dx = {pull['max_tension_Dx']:.3f}, inside that bound. Deeper-sintered samples "
+              "peak later, where the affine estimate of their own contacts does (docs/tablet/branch.md, E2).")
 
 
 def _cracked(pull, runs):

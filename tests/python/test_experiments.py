@@ -1,0 +1,51 @@
+"""mesostudies.tablet.experiments (plain Python) on a made-up campaign tree whose numbers are
+worked by hand: E1's spread and cycle-2 ratio, E2's F(0.2)/F_peak, crack plane and row choice."""
+import json
+import os
+import tempfile
+import unittest
+
+from mesostudies.tablet import experiments
+
+
+def _write(path, obj):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(obj if isinstance(obj, str) else json.dumps(obj))
+
+
+class Experiments(unittest.TestCase):
+    def test_made_up_tree(self):
+        with tempfile.TemporaryDirectory() as t:
+            _write(os.path.join(t, "chosen", "tension-Dx0.2-P480.json"),
+                   {"peaks": [-0.06, -0.02, -0.018, -0.016], "amplitude": 0.2, "period_crossings": 480, "L0": 0.116,
+                    "steps_per_cycle": 4})
+            # the first cycle (steps 10-13) turns back at Dx 0.2 with F -0.015; the next cycle reaches 0.2 again
+            _write(os.path.join(t, "chosen", "tension-Dx0.2-P480.csv"),
+                   "iter,Dx,F\n10,0.0,0.0\n11,0.1,-0.06\n12,0.2,-0.015\n13,0.1,0.01\n14,0.2,-0.02\n")
+            _write(os.path.join(t, "chosen", "compression-Dx0.2-P120.json"), {"peaks": [1.0]})  # not tension: left out
+            row = {"packing": "frictionless", "glue": "sinter", "rel_std": 0.1, "drag": "contacts", "L0": 0.115 * 1.01,
+                   "peak_tension": 0.05, "peak_Dx": 0.03, "first_gap_Dx_by_area": {"1": 1.2}, "last_chain_Dx": 6.0,
+                   "weakest_at_marks": {"0.81": {"from_left_d0": 9.0, "from_right_d0": 3.5}}}
+            rows = [dict(row, sinter=0.02, seed=2), dict(row, sinter=0.1, seed=1), dict(row, glue="loading", sinter=0.02, seed=1)]
+            _write(os.path.join(t, "factors", "factors.json"), rows)
+            csv = "iter,Dx,F_over_kp_d0\n1,0.0,0.0\n2,0.1,-0.05\n3,0.19,-0.03\n4,0.21,-0.02\n"
+            for name in ("frictionless-sinter-std0.1-seed2", "frictionless-sinter-std0.1-sinter0.1"):
+                _write(os.path.join(t, "factors", name, "pull-contacts", "pull-contacts.csv"), csv)
+            one, two = experiments.e1(t), experiments.e2(t)
+        self.assertEqual(len(one), 1)
+        # cycles 2-4: mean -0.018, spread (-0.016 - -0.02) / 0.018 = 2/9; cycle 2 / first = 1/3
+        self.assertAlmostEqual(one[0]["later_spread"], 2 / 9, places=12)
+        self.assertAlmostEqual(one[0]["second_over_first"], 1 / 3, places=12)
+        self.assertAlmostEqual(one[0]["turnaround_over_first"], 0.25, places=12)
+        self.assertAlmostEqual(one[0]["later_spread_of_first"], 0.004 / 0.06, places=12)
+        self.assertEqual([(r["sinter"], r["seed"]) for r in two], [(0.02, 2), (0.1, 1)])  # the loading-glue row left out
+        # the first record at or past Dx 0.2 holds -0.02: 0.02 / 0.05
+        self.assertAlmostEqual(two[0]["F02_over_peak"], 0.4, places=12)
+        self.assertEqual(two[0]["crack_from_wall_d0"], 3.5)
+        self.assertAlmostEqual(two[0]["L0_vs_paper"], 0.01, places=12)
+        self.assertIsNone(two[0]["affine_peak_Dx"])
+
+
+if __name__ == "__main__":
+    unittest.main()
