@@ -9,6 +9,7 @@
 #include <lib/serialization/ObjectIO.hpp>
 #include <boost/serialization/shared_ptr.hpp>
 #include <boost/serialization/vector.hpp>
+#include <boost/python/stl_iterator.hpp>
 #include <map>
 #include <set>
 #include <sstream>
@@ -96,11 +97,13 @@ long MesoContactStore::restore()
 // save/load survives the trip to another rank.
 boost::python::object MesoContactStore::exportContacts(const boost::python::object& ids) const
 {
-	if (!PyObject_HasAttrString(ids.ptr(), "__iter__") || PyUnicode_Check(ids.ptr()) || PyBytes_Check(ids.ptr()))
-		pychecks::typeError("ids = " + pychecks::describe(ids) + " is invalid: must be a sequence of body ids");
+	if (!PyObject_HasAttrString(ids.ptr(), "__iter__") || PyUnicode_Check(ids.ptr()) || PyBytes_Check(ids.ptr())
+	    || PyDict_Check(ids.ptr())) // a dict's keys or its values? neither is assumed
+		pychecks::typeError("ids = " + pychecks::describe(ids) + " is invalid: must be a sequence or set of body ids");
 	std::set<Body::id_t> wanted;
-	for (long k = 0, n = boost::python::len(ids); k < n; ++k)
-		wanted.insert(pychecks::id(("ids[" + std::to_string(k) + "]").c_str(), ids[k]));
+	long                 k = 0;
+	for (boost::python::stl_input_iterator<boost::python::object> it(ids), end; it != end; ++it, ++k)
+		wanted.insert(pychecks::id(("ids[" + std::to_string(k) + "]").c_str(), *it));
 	std::vector<shared_ptr<Interaction>> contacts;
 	for (const auto& I : *Omega::instance().getScene()->interactions)
 		if (I->isReal() && (wanted.count(I->getId1()) || wanted.count(I->getId2()))) contacts.push_back(I);
@@ -126,6 +129,8 @@ long MesoContactStore::importContacts(const boost::python::object& data)
 	} catch (const std::exception& e) { // a broken archive may throw anything from boost or the library
 		throw std::invalid_argument(std::string("data: not contacts made by MesoContactStore.exportContacts (") + e.what() + ")");
 	}
+	if (in.peek() != std::char_traits<char>::eof()) // bytes appended to an export: not what exportContacts made
+		throw std::invalid_argument("data: not contacts made by MesoContactStore.exportContacts (trailing bytes after the contacts)");
 	keepFor(Omega::instance().getScene());
 	for (const auto& I : contacts)
 		kept.push_back({ I->getId1(), I->getId2(), I->geom, I->phys });

@@ -120,6 +120,19 @@ def item3():
     O.interactions.clear()
     O.engines[1]()  # the collider makes the candidate pair anew, without geometry
     check(store.restore() == 1 and type(O.interactions[0, 1].geom).__name__ == "ScGeom6D", "ScGeom6D restored onto a ScGeom6D loop")
+    # item 10: ids given as a dict (whose ids: keys or values?) refused; a set taken; bytes with a tail refused
+    O.run(2, True)
+    try:
+        store.exportContacts({0: 1})
+        check(False, "exportContacts({0: 1}) refused")
+    except TypeError as e:
+        check("ids" in str(e), "exportContacts({0: 1}) refused", str(e)[:80])
+    check(store.exportContacts({0, 1}) == store.exportContacts([0, 1]), "exportContacts of a set as of a list")
+    try:
+        store.importContacts(store.exportContacts([0, 1]) + b"tail")
+        check(False, "importContacts with trailing bytes refused")
+    except ValueError as e:
+        check("trailing" in str(e), "importContacts with trailing bytes refused", str(e)[:80])
 
 
 # 4. The surface functors given a geometry of another class (assigned from Python, or restored): a
