@@ -2,7 +2,7 @@
 # The calibration checked on synthetic data (docs/calibration.md): restitution data made from
 # known parameters with 1-3 % noise, fitted back by scripts/calibrate.py (with bootstrap and the
 # YADE check), and the 95 % intervals' coverage over many noise draws:
-#   python3 scripts/calibrate_synthetic.py [--out docs/calibration] [--draws 30] [--yade PATH]
+#   python3 scripts/calibrate_synthetic.py [--out campaigns/calibration] [--draws 30] [--yade PATH]
 # Writes OUT/<set>/{data.csv, truth.json, calibration.json, calibration.png}, OUT/synthetic.json
 # and OUT/synthetic.md (the tables); --sets A,B re-runs those and keeps the others' entries.
 import argparse
@@ -116,7 +116,7 @@ def coverage(spec, draws, rng):
 
 def main(argv):
     p = argparse.ArgumentParser(prog="python3 scripts/calibrate_synthetic.py")
-    p.add_argument("--out", default="docs/calibration")
+    p.add_argument("--out", default="campaigns/calibration")
     p.add_argument("--draws", type=int, default=30, help="noise draws per set for the coverage")
     p.add_argument("--yade", default=None)
     p.add_argument("--sets", default=None, help="comma-separated subset of the sets (default all)")

@@ -6,7 +6,7 @@ directory whose files are written under a hidden temporary name and committed by
 crash) leaves either the previous bundle or the new one under the result's name, never a mix;
 its unfinished work is a hidden ``.<name>.tmp-<pid>-...`` directory, which ``sweep`` removes once
 that process is gone. ``problems`` lists whatever does not satisfy this (for tests and for the
-kill trials of scripts/campaign_kill_trials.py).
+kill trials of studies/scripts/campaign_kill_trials.py).
 """
 import ctypes
 import hashlib

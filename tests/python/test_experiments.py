@@ -27,7 +27,10 @@ class Experiments(unittest.TestCase):
             row = {"packing": "frictionless", "glue": "sinter", "rel_std": 0.1, "drag": "contacts", "L0": 0.115 * 1.01,
                    "peak_tension": 0.05, "peak_Dx": 0.03, "first_gap_Dx_by_area": {"1": 1.2}, "last_chain_Dx": 6.0,
                    "weakest_at_marks": {"0.81": {"from_left_d0": 9.0, "from_right_d0": 3.5}}}
-            rows = [dict(row, sinter=0.02, seed=2), dict(row, sinter=0.1, seed=1), dict(row, glue="loading", sinter=0.02, seed=1)]
+            pull = os.path.join("{}", "pull-contacts", "pull-contacts.json")
+            rows = [dict(row, sinter=0.02, seed=2, pull=pull.format("frictionless-sinter-std0.1-seed2")),
+                    dict(row, sinter=0.1, seed=1, pull=pull.format("frictionless-sinter-std0.1-sinter0.1")),
+                    dict(row, glue="loading", sinter=0.02, seed=1, pull=pull.format("frictionless-loading-std0.1"))]
             _write(os.path.join(t, "factors", "factors.json"), rows)
             csv = "iter,Dx,F_over_kp_d0\n1,0.0,0.0\n2,0.1,-0.05\n3,0.19,-0.03\n4,0.21,-0.02\n"
             for name in ("frictionless-sinter-std0.1-seed2", "frictionless-sinter-std0.1-sinter0.1"):
@@ -45,6 +48,7 @@ class Experiments(unittest.TestCase):
         self.assertEqual(two[0]["crack_from_wall_d0"], 3.5)
         self.assertAlmostEqual(two[0]["L0_vs_paper"], 0.01, places=12)
         self.assertIsNone(two[0]["affine_peak_Dx"])
+        self.assertEqual(two[1]["folder"], "frictionless-sinter-std0.1-sinter0.1")
 
 
 if __name__ == "__main__":

@@ -42,6 +42,7 @@ cases = [
     ("fig17", ["--mpi", "3"], "--mpi"),  # not started by mpiexec -n 3
     ("fig17", ["--until", "0"], "--until"),
     ("affine", ["--sinter", "0"], "--sinter"),
+    ("fig17", ["--sinter", "0.1"], "--sinter"),  # the pull runs on the campaign's sample only: not ignored silently
 ]
 for job, args, option in cases:
     script = f"tablet.py {job}"

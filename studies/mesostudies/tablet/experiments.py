@@ -25,10 +25,6 @@ E1_SAMPLES = (("chosen", 0.02), ("deep", 0.1))
 PAPER_L0 = 0.115  # the paper's sample length [mm]
 
 
-def _load(path):
-    return load_json(os.path.dirname(path), os.path.basename(path))
-
-
 def e1(tree):
     """Rows of E1: one per sample, amplitude and period whose run is in the tree."""
     rows = []
@@ -39,7 +35,7 @@ def e1(tree):
         for name in sorted(os.listdir(d)):
             if not (name.startswith("tension-Dx") and name.endswith(".json")):
                 continue
-            run = _load(os.path.join(d, name))
+            run = load_json(d, name)
             peaks = run["peaks"]
             later = peaks[1:]
             mean = sum(later) / len(later) if later else None
@@ -70,17 +66,17 @@ def _nearer_wall(plane):
 
 def e2(tree):
     """Rows of E2: one per pull of the chosen preparation in factors/, by sintering stress and seed."""
-    table = _load(os.path.join(tree, "factors", "factors.json"))
+    table = load_json(os.path.join(tree, "factors"), "factors.json")
     rows = []
     for r in table:
         if (r["packing"], r["glue"], r["rel_std"], r["drag"]) != ("frictionless", "sinter", 0.1, "contacts"):
             continue
-        name = "frictionless-sinter-std0.1" + (f"-sinter{r['sinter']:g}" if r["sinter"] != 0.02 else "") \
-            + (f"-seed{r['seed']}" if r["seed"] != 1 else "")
-        folder = os.path.join(tree, "factors", name)
-        pull = read_csv(os.path.join(folder, "pull-contacts", "pull-contacts.csv"))
+        js = os.path.join(tree, "factors", r["pull"])  # the row's pull, as factor_table names it
+        folder = os.path.dirname(os.path.dirname(js))
+        name = os.path.relpath(folder, os.path.join(tree, "factors"))
+        pull = read_csv(js[:-5] + ".csv")
         f02 = _force_at(pull, 0.2)
-        aff = os.path.join(folder, "affine", "affine.json")
+        aff = load_json(os.path.join(folder, "affine"), "affine.json")
         gap = r["first_gap_Dx_by_area"]
         rows.append({"sinter": r["sinter"], "seed": r["seed"], "L0_vs_paper": r["L0"] / PAPER_L0 - 1 if r["L0"] else None,
                      "peak_tension": r["peak_tension"], "peak_Dx": r["peak_Dx"],
@@ -88,8 +84,8 @@ def e2(tree):
                      "F02_over_peak": -f02 / r["peak_tension"] if f02 is not None and r["peak_tension"] else None,
                      "first_gap_Dx": gap.get("1") if isinstance(gap, dict) else gap, "last_chain_Dx": r["last_chain_Dx"],
                      "crack_from_wall_d0": _nearer_wall(r["weakest_at_marks"].get("0.81")),
-                     "affine_peak_Dx": _load(aff)["peak_Dx"] if os.path.exists(aff) else None,
-                     "affine_F02_over_peak": _load(aff)["F_at_0.2_over_peak"] if os.path.exists(aff) else None, "folder": name})
+                     "affine_peak_Dx": aff["peak_Dx"] if aff else None,
+                     "affine_F02_over_peak": aff["F_at_0.2_over_peak"] if aff else None, "folder": name})
     return sorted(rows, key=lambda r: (r["sinter"], r["seed"]))
 
 

@@ -96,8 +96,8 @@ def statements(d):
         out.append({"n": len(out) + 1, "paper": quote, "project": number, "definition": definition,
                     "verdict": verdict, "note": note, "why": why})
 
-    brittle = _brittleness(d, st, pull, runs)
-    cracked = _cracked(pull, runs) if brittle else ""
+    limit = _tensile_limit(d, st, pull, runs)
+    cracked = _cracked(pull, runs) if limit else ""
 
     amps = {m: sorted({k[1] for k in runs if k[0] == m}) for m in ("tension", "compression")}
     L0s = sorted({j["L0"] for j, _ in runs.values()})
@@ -235,7 +235,7 @@ def statements(d):
         pdx = pull.get("max_tension_Dx")
         add("the elastic, irreversible tension branch is strongly developed only for Dx ~ d0/5",
             f"peak tension {-pull['max_tension']:.3g} at Dx = {pdx:.2f}", "Dx of the pull's largest tension; ~ 0.2: 0.1–0.4",
-            "✓" if 0.1 <= pdx <= 0.4 else "✗", why=brittle + _loose_peak(d))
+            "✓" if 0.1 <= pdx <= 0.4 else "✗", why=limit + _loose_peak(d))
     # -- compression
     c = {a: _slowest(runs, "compression", a) for a in amps["compression"]}
     if c and all(a in c for a in (0.05, 0.1, 0.2, 0.3)):
@@ -280,7 +280,7 @@ def statements(d):
     return out
 
 
-def _brittleness(d, st, pull, runs):
+def _tensile_limit(d, st, pull, runs):
     """Where the rising tension of a contact ends, from the closed form and the files: under an
     affine stretch every contact along x reaches its tensile limit by the strain phiF kc/(2 (kp + kc))
     (theory.max_tensile_range over the centre distance, a12 <= l/2); its tension then falls along

@@ -62,6 +62,7 @@ OPTIONS = (
 # The periods a job runs when --periods is not given (FAST, SLOW otherwise).
 DEFAULT_PERIODS = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}
 MPI_FIGURES = ("fig16", "fig17", "fig18")
+PREPARATION_FIGURES = ("factors", "fig16", "fig18", "affine")  # the jobs that take --sinter and --seed
 
 
 def batch_columns():
@@ -106,6 +107,8 @@ def parse_args(figure, argv):
         p.error(f"--runs {','.join(a.runs)}: each must be one of {', '.join(TIMESTEP_RUNS)}")
     if not (math.isfinite(a.sinter) and 0 < a.sinter <= 1):
         p.error(f"--sinter {a.sinter} is invalid: must lie in (0, 1], a sintering stress d0 p_s/kp")
+    if _preparation(a) and figure not in PREPARATION_FIGURES:  # the others run on the campaign's sample only
+        p.error(f"--sinter and --seed: only {', '.join(PREPARATION_FIGURES)} take another preparation (not {figure})")
     periods = _numbers(p, "--periods", a.periods, 1, 1e5, "a cycle period in elastic crossing times (about 320 steps each)")
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
     if a.until is not None:

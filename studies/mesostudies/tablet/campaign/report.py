@@ -79,9 +79,9 @@ def factor_table(outdir, quick=False):
             continue
         with open(_stages.path("unconfined", prep_dir, quick) + ".json") as f:
             st = json.load(f)
-        for js in pulls:
+        for js in pulls:  # each row names its pull's JSON (relative to factors/), for readers of factors.json
             with open(js) as f:
-                rows.append(_factor_row(st, json.load(f)))
+                rows.append(dict(_factor_row(st, json.load(f)), pull=os.path.relpath(js, os.path.join(outdir, "factors"))))
     fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
     md = ["# The tested tablet: the factor study", "",
           "Written by `yade -n -x studies/scripts/tablet.py factors --out DIR --table` (or `--report DOCS`) from the files under "
