@@ -50,6 +50,38 @@ class Experiments(unittest.TestCase):
         self.assertIsNone(two[0]["affine_peak_Dx"])
         self.assertEqual(two[1]["folder"], "frictionless-sinter-std0.1-sinter0.1")
 
+    def test_variants_and_profiles(self):
+        with tempfile.TemporaryDirectory() as t:
+            e1 = {"peaks": [-0.06, -0.02], "amplitude": 0.1, "period_crossings": 480, "L0": 0.116, "steps_per_cycle": 4}
+            _write(os.path.join(t, "chosen", "tension-Dx0.1-P480.json"), e1)
+            # the first pull peaks at Dx 0.05 (-0.06), turns back at 0.1 with -0.03
+            _write(os.path.join(t, "chosen", "tension-Dx0.1-P480.csv"),
+                   "iter,Dx,F\n10,0.0,0.0\n11,0.05,-0.06\n12,0.1,-0.03\n13,0.05,0.01\n14,0.1,-0.02\n")
+            # back to the start's force: strokes end at iters 12 (out), 14 (back at Dx 0.04), 16, 18 (Dx 0.05)
+            _write(os.path.join(t, "variants", "tested", "force-return-tension-Dx0.1-P480.json"),
+                   dict(e1, peaks=[-0.05, -0.04], turns=[[12, 0.1, -0.02], [14, 0.04, 0.0], [16, 0.1, -0.03],
+                                                         [18, 0.05, 0.0]]))
+            _write(os.path.join(t, "variants", "tested", "force-return-tension-Dx0.1-P480.csv"),
+                   "iter,Dx,F\n10,0.0,0.0\n11,0.06,-0.05\n12,0.1,-0.02\n13,0.07,-0.01\n14,0.04,0.0\n")
+            records = [{"Dx": 0.0, "measured": {"tensile": 0.0, "open": 0.0}, "affine": {"tensile": 0.0, "open": 0.0}},
+                       {"Dx": 0.03, "measured": {"tensile": 0.02, "open": 0.1}, "affine": {"tensile": 0.3, "open": 0.05}},
+                       {"Dx": 0.06, "measured": {"tensile": 0.01, "open": 0.2}, "affine": {"tensile": 0.4, "open": 0.1}}]
+            _write(os.path.join(t, "profile", "tested", "profile.json"),
+                   {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
+                    "protocol": {"packing": "frictionless"}})
+            _write(os.path.join(t, "profile", "tested", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.19,-0.03\n3,0.2,-0.01\n")
+            one = experiments.e1(t)
+            three, five_six = experiments.e3(t), experiments.e56(t, one)
+        self.assertEqual(one[0]["first_peak_Dx"], 0.05)
+        self.assertAlmostEqual(one[0]["turnaround_over_first"], 0.5, places=12)
+        (v,) = five_six
+        self.assertEqual((v["variant"], v["first_peak_Dx"], v["returns_at_Dx"]), ("force-return", 0.06, [0.04, 0.05]))
+        self.assertAlmostEqual(v["turnaround_over_first"], 0.4, places=12)  # the out stroke ends at -0.02
+        self.assertEqual(v["E1"]["first_peak"], -0.06)
+        (p,) = three
+        self.assertEqual((p["sinter"], p["seed"], p["record_Dx"], p["max_tensile_affine"]), (0.02, 1, 0.03, 0.4))
+        self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -214,6 +214,26 @@ protos = [info["protocol"] for m in summaries for info in summaries[m]["runs"].v
 check(all(p == campaign.PROTOCOL for p in protos) and campaign.protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
       f"runs record their preparation {protos[0]}")
 
+# 4b. Issue #47's variants on the same sample: cycles back to the start's force (E6) with kc/kp = 0.5
+#     given to every contact on the unconfined start (E5).
+P = campaign.PERIODS["tension"][0]
+var = campaign.cyclic("tension", out, (0.1,), quick=True, periods=(P,), progress=False, returns="force", kc_over_kp=0.5)
+name = "kc0.5-force-return-" + campaign.run_name("tension", 0.1, P)
+run = var["runs"][name]
+rows = campaign.read_csv(os.path.join(campaign.run_dir(out, name, quick=True), name + ".csv"))
+(out_it, out_dx, _), (back_it, back_dx, back_f) = run["turns"]
+# The turn is checked every quarter record: the walls move 0.1/800 d0 between checks.
+check(0.1 <= out_dx <= 0.1 * (1 + 1.01 / 800), f"{name}: turned at the amplitude (Dx = {out_dx:.6f})")
+inside = [r for r in rows if out_it < r[0] < back_it]
+check(back_f >= rows[0][2] or back_dx <= 0, f"{name}: the return ended at the start's force {rows[0][2]:.3g} "
+      f"(F = {back_f:.3g}, Dx = {back_dx:.3g})")
+check(inside and all(r[2] < rows[0][2] and r[1] > 0 for r in inside),
+      f"{name}: and not before ({len(inside)} records of the return below the start's force, at Dx > 0)")
+check(run["peaks"] == [min(r[2] for r in rows if r[0] <= back_it)], f"{name}: the cycle's peak {run['peaks']}")
+kcs = {round(I.phys.dict()["kc"] / tablet.KP, 12) for I in O.interactions if I.isReal}
+check(run["tensile_stiffness"]["was"] == 0.2 and kcs == {0.5, 20.0},
+      f"{name}: kc/kp 0.2 -> {sorted(kcs)} (particles, loading walls)")
+
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
 pull = campaign.pull(out, quick=True, speed=3 * campaign.PULL_SPEED, progress=False)  # 3x faster: the protocol, not the figure

@@ -14,6 +14,12 @@ from a campaign tree's committed files):
   visible gap, the last chain, L0 against the paper's, how far from the nearer loading wall the
   crack plane runs at Dx = 0.81 (the weakest plane: at a wall or in the bulk); and, where
   ``affine/`` holds it, the peak Dx of the affine estimate (mesostudies.tablet.affine).
+- E3, non-affinity up to the peak (``profile/<sample>/``, mesostudies.tablet.profile): the pull's
+  peak, F(0.2)/F_peak, where the largest local strain first reaches 2x the affine one, and the
+  start's contacts on the tensile branch and open at the peak, measured against the affine stretch.
+- E5 and E6, test variants on the same states (``variants/<sample>/``): kc/kp 0.5 instead of 0.2
+  (``kc0.5-`` runs), and cycles back to the start's force instead of Dx = 0 (``force-return-``
+  runs), each beside the E1 run of its sample, amplitude and period.
 """
 import json
 import os
@@ -21,7 +27,8 @@ import sys
 
 from .statements import load_json, read_csv
 
-E1_SAMPLES = (("chosen", 0.02), ("deep", 0.1))
+E1_SAMPLES = (("chosen", 0.02), ("mid", 0.05), ("deep", 0.1))
+VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep"}  # variants/<sample> -> its E1 folder
 PAPER_L0 = 0.115  # the paper's sample length [mm]
 
 
@@ -33,26 +40,36 @@ def e1(tree):
         if not os.path.isdir(d):
             continue
         for name in sorted(os.listdir(d)):
-            if not (name.startswith("tension-Dx") and name.endswith(".json")):
-                continue
-            run = load_json(d, name)
-            peaks = run["peaks"]
-            later = peaks[1:]
-            mean = sum(later) / len(later) if later else None
-            turn = _turnaround(read_csv(os.path.join(d, name[:-5] + ".csv")), run["steps_per_cycle"])
-            rows.append({"sample": folder, "sinter": sinter, "amplitude": run["amplitude"], "period": run["period_crossings"],
-                         "first_peak": peaks[0], "later_peaks": later,
-                         "turnaround_over_first": turn / peaks[0] if peaks[0] else None,
-                         "later_spread": (max(later) - min(later)) / abs(mean) if later and mean else None,
-                         "later_spread_of_first": (max(later) - min(later)) / abs(peaks[0]) if later else None,
-                         "second_over_first": later[0] / peaks[0] if later else None, "L0": run["L0"]})
+            if name.startswith("tension-Dx") and name.endswith(".json"):
+                rows.append(dict(_cyclic_row(d, name), sample=folder, sinter=sinter))
     return sorted(rows, key=lambda r: (r["sinter"], r["amplitude"], r["period"]))
 
 
-def _turnaround(rows, steps_per_cycle):
-    """The force where the first cycle turns back (its largest Dx): what the first pull left."""
+def _cyclic_row(d, name):
+    """The measures of one cyclic tension run (JSON ``name`` in ``d`` and its CSV)."""
+    run = load_json(d, name)
+    peaks = run["peaks"]
+    later = peaks[1:]
+    mean = sum(later) / len(later) if later else None
+    rows = read_csv(os.path.join(d, name[:-5] + ".csv"))
+    turns = run.get("turns")  # cycles back to the start's force: where each stroke ended
+    first = [r for r in rows if r[0] <= turns[0][0]] if turns else _first_stroke(rows, run["steps_per_cycle"])
+    turn = first[-1][2] if turns else max(first, key=lambda r: r[1])[2]
+    return {"amplitude": run["amplitude"], "period": run["period_crossings"], "first_peak": peaks[0],
+            "first_peak_Dx": min(first, key=lambda r: r[2])[1], "later_peaks": later,
+            "turnaround_over_first": turn / peaks[0] if peaks[0] else None,
+            "later_spread": (max(later) - min(later)) / abs(mean) if later and mean else None,
+            "later_spread_of_first": (max(later) - min(later)) / abs(peaks[0]) if later else None,
+            "second_over_first": later[0] / peaks[0] if later else None, "L0": run["L0"],
+            "returns_at_Dx": [t[1] for t in turns[1::2]] if turns else None,
+            "kc_over_kp": (run.get("tensile_stiffness") or {}).get("kc_over_kp")}
+
+
+def _first_stroke(rows, steps_per_cycle):
+    """The first cycle's records up to its largest Dx (where it turns back): the first pull."""
     first = [r for r in rows if r[0] - rows[0][0] < steps_per_cycle] or rows
-    return max(first, key=lambda r: r[1])[2]
+    far = max(range(len(first)), key=lambda k: first[k][1])
+    return first[:far + 1]
 
 
 def _force_at(rows, dx):
@@ -89,20 +106,61 @@ def e2(tree):
     return sorted(rows, key=lambda r: (r["sinter"], r["seed"]))
 
 
+def e3(tree):
+    """Rows of E3: one per pull profile in profile/<sample>/."""
+    rows = []
+    base = os.path.join(tree, "profile")
+    for sample in sorted(os.listdir(base)) if os.path.isdir(base) else ():
+        info = load_json(os.path.join(base, sample), "profile.json")
+        if info is None:
+            continue
+        pull = read_csv(os.path.join(base, sample, "profile.csv"))
+        f02 = _force_at(pull, 0.2)
+        at_peak = min(info["records"], key=lambda r: abs(r["Dx"] - info["peak_Dx"]))
+        proto = info["protocol"]
+        rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
+                     "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                     "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
+                     "strain_2x_from_Dx": info["localization_first_Dx"]["2"],
+                     "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
+                     "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
+                     "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
+    return sorted(rows, key=lambda r: (r["sinter"], r["seed"]))
+
+
+def e56(tree, one):
+    """Rows of E5 and E6: every variant run in variants/<sample>/ with the E1 run of its sample,
+    amplitude and period (``one``: e1's rows) beside it."""
+    rows = []
+    for sample, folder in VARIANT_SAMPLES.items():
+        d = os.path.join(tree, "variants", sample)
+        for name in sorted(os.listdir(d)) if os.path.isdir(d) else ():
+            if not (name.endswith(".json") and "-tension-Dx" in name and not name.startswith("fig")):
+                continue
+            r = dict(_cyclic_row(d, name), sample=sample, variant=name.split("-tension-")[0])
+            base = next((b for b in one if b["sample"] == folder and b["amplitude"] == r["amplitude"]
+                         and b["period"] == r["period"]), None)
+            r["E1"] = {k: base[k] for k in ("first_peak", "first_peak_Dx", "turnaround_over_first", "second_over_first",
+                                            "later_spread")} if base else None
+            rows.append(r)
+    return rows
+
+
 def _f(x, fmt="{:.3g}"):
     return "–" if x is None else fmt.format(x)
 
 
-def markdown(one, two, label):
+def markdown(one, two, label, three=(), five_six=()):
     md = [f"# The tension branch decided by experiment ({label})", "",
           "Generated by `python3 -m mesostudies.tablet.experiments` from the committed runs; forces F/(kp d0), "
           "tension negative; Dx in d0, > 0 in tension.", "",
-          "## E1: cyclic tension, tested sample (d0 p_s/kp 0.02) against deep-sintered (0.1)", "",
-          "| sample | d0 p_s/kp | Dx | period [t_w] | first peak | F at the first turn / first peak | cycles 2-4 peaks "
+          "## E1: cyclic tension, tested sample (d0 p_s/kp 0.02), intermediate (0.05) and deep-sintered (0.1)", "",
+          "| sample | d0 p_s/kp | Dx | period [t_w] | first peak | at Dx | F at the first turn / first peak | cycles 2-4 peaks "
           "| spread of 2-4 / their mean | spread of 2-4 / first peak | cycle 2 / first |",
-          "|---|---|---|---|---|---|---|---|---|---|"]
+          "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in one:
         md.append(f"| {r['sample']} | {r['sinter']:g} | {r['amplitude']:g} | {r['period']:g} | {r['first_peak']:.4f} | "
+                  f"{r['first_peak_Dx']:.3f} | "
                   f"{_f(r['turnaround_over_first'], '{:.2f}')} | " + ", ".join(f"{x:.4f}" for x in r["later_peaks"])
                   + f" | {_f(r['later_spread'], '{:.1%}')} | {_f(r['later_spread_of_first'], '{:.1%}')} | "
                   f"{_f(r['second_over_first'], '{:.2f}')} |")
@@ -115,6 +173,33 @@ def markdown(one, two, label):
                   f"{r['peak_Dx']:.3f} | {_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['first_gap_Dx'], '{:.2f}')} | "
                   f"{_f(r['last_chain_Dx'], '{:.2f}')} | {_f(r['crack_from_wall_d0'], '{:.2f}')} | {_f(r['affine_peak_Dx'], '{:.3f}')} | "
                   f"{_f(r['affine_F02_over_peak'], '{:.2f}')} |")
+    if three:
+        md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`)", "",
+               "| sample | d0 p_s/kp | seed | peak | peak Dx | F(0.2)/F_peak | local strain >= 2x affine from Dx "
+               "| tensile at the peak: measured / affine | open at the peak: measured / affine "
+               "| most on the tensile branch: measured / affine |",
+               "|---|---|---|---|---|---|---|---|---|---|"]
+        for r in three:
+            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f} | "
+                      f"{_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
+                      f"{r['measured']['tensile']:.1%} / {r['affine']['tensile']:.1%} | "
+                      f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
+                      f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")
+    if five_six:
+        md += ["", "## E5 and E6: the same states, kc/kp 0.5 (kc0.5) and cycles back to the start's force "
+               "(force-return); in brackets the E1 run of the same sample, amplitude and period", "",
+               "| sample | variant | Dx | period [t_w] | first peak | at Dx | F at the first turn / first peak "
+               "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
+               "|---|---|---|---|---|---|---|---|---|---|"]
+        for r in five_six:
+            b = r["E1"] or {}
+            md.append(f"| {r['sample']} | {r['variant']} | {r['amplitude']:g} | {r['period']:g} | "
+                      f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | "
+                      f"{r['first_peak_Dx']:.3f} ({_f(b.get('first_peak_Dx'), '{:.3f}')}) | "
+                      f"{_f(r['turnaround_over_first'], '{:.2f}')} ({_f(b.get('turnaround_over_first'), '{:.2f}')}) | "
+                      f"{_f(r['second_over_first'], '{:.2f}')} ({_f(b.get('second_over_first'), '{:.2f}')}) | "
+                      f"{_f(r['later_spread'], '{:.1%}')} ({_f(b.get('later_spread'), '{:.1%}')}) | "
+                      + (", ".join(f"{x:.3f}" for x in r["returns_at_Dx"]) if r["returns_at_Dx"] else "–") + " |")
     return "\n".join(md) + "\n"
 
 
@@ -123,14 +208,15 @@ def main(argv):
         sys.exit("usage: python3 -m mesostudies.tablet.experiments TREE (a campaign tree: chosen/, deep/, factors/)")
     tree = argv[0]
     one, two = e1(tree), e2(tree)
+    three, five_six = e3(tree), e56(tree, one)
     out = os.path.join(tree, "branch")
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "experiments.json"), "w") as f:
-        json.dump({"E1": one, "E2": two}, f, indent=1)
+        json.dump({"E1": one, "E2": two, "E3": three, "E5_E6": five_six}, f, indent=1)
         f.write("\n")
     with open(os.path.join(out, "experiments.md"), "w") as f:
-        f.write(markdown(one, two, tree.rstrip("/")))
-    print(markdown(one, two, tree.rstrip("/")))
+        f.write(markdown(one, two, tree.rstrip("/"), three, five_six))
+    print(markdown(one, two, tree.rstrip("/"), three, five_six))
 
 
 if __name__ == "__main__":

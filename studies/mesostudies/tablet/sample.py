@@ -374,6 +374,23 @@ def _give_material(ids, mat):
         ip2.adoptMaterials(I)
 
 
+def set_tensile_stiffness(kc_over_kp):
+    """The loaded state with the particles' kc/kp changed (issue E5: does the peak follow the
+    contacts' tensile branch?): the "particles" material gets kc = kc_over_kp kp and every
+    contact of a sphere adopts it, keeping its history; the loading walls' own kc stays. A
+    contact on the tensile branch at this moment changes its force (-kc delta): their number is
+    returned with the change. Returns {'kc_over_kp', 'was', 'contacts', 'tensile_fraction'}."""
+    if not (isinstance(kc_over_kp, (int, float)) and 0 <= kc_over_kp < math.inf):
+        raise ValueError(f"kc_over_kp = {kc_over_kp!r} is invalid: must be a finite number >= 0")
+    mat = [m for m in O.materials if m.label == "particles"][0]
+    was = mat.kc / KP
+    tensile = _scene.branch_fractions().get("tensile", 0.0)
+    mat.kc = kc_over_kp * KP
+    _give_material(sphere_ids(), mat)
+    return {"kc_over_kp": kc_over_kp, "was": was, "contacts": sum(1 for I in O.interactions if I.isReal),
+            "tensile_fraction": tensile}
+
+
 def _switch_particles(label):
     """Gives every sphere the material ``label`` (_give_material)."""
     _give_material(sphere_ids(), [m for m in O.materials if m.label == label][0])

@@ -296,6 +296,58 @@ class Test:
         self._record()
         return self.rows
 
+    def force_cycles(self, amplitude, n_cycles=4, period=480.0, every=None, on_record=None, max_strokes_steps=None):
+        """n_cycles tension cycles that turn back at Dx = amplitude and return until the force is
+        back at the start's (F >= the first record's F) or, whichever comes first, the length is
+        (Dx <= 0): cycles about the sample's present length rather than its first one. The walls
+        move at constant speed, each amplitude d0 / (period t_w), the cosine cycle's mean speed,
+        so that a return to Dx = 0 takes the cosine cycle's time. The turns are checked every
+        quarter record (the overshoot is below 1/800 of the amplitude). Returns the rows;
+        ``self.turns`` holds (iter, Dx, F) where each stroke ended."""
+        if not amplitude > 0:
+            raise ValueError(f"amplitude = {amplitude} is invalid: must be > 0 (in units of d0)")
+        if int(n_cycles) != n_cycles or n_cycles < 1:
+            raise ValueError(f"n_cycles = {n_cycles} is invalid: a positive integer")
+        if not period > 0:
+            raise ValueError(f"period = {period} is invalid: must be > 0 (crossing times)")
+        speed = amplitude * sample.D0 / (period * self.t_cross)
+        self.steps_per_cycle = int(round(period * self.t_cross / O.dt))
+        every = every or max(1, self.steps_per_cycle // 400)
+        check = max(1, every // 4)
+        limit = max_strokes_steps or 4 * self.steps_per_cycle  # a stroke that does not end is an error
+        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed, label=f"stroke_{wid}")
+                  for wid, s in ((self.right, 1.0), (self.left, -1.0))]
+        self._install(motion, every, on_record)
+        self._record()
+        f_start = self.rows[-1][2]
+        self.turns = []
+        t0 = time.time()
+        for cycle in range(int(n_cycles)):
+            for outward in (True, False):
+                for e in motion:
+                    e.velocity = speed if outward else -speed
+                start = O.iter
+                while True:
+                    self._run(check)
+                    Test.steps_run += check
+                    dx, f = self.dx(), self.force()
+                    if (dx >= amplitude) if outward else (f >= f_start or dx <= 0):
+                        break
+                    if O.iter - start > limit:
+                        raise RuntimeError(f"force_cycles: the {'outward' if outward else 'return'} stroke of cycle "
+                                           f"{cycle + 1} did not end in {limit} steps (Dx = {dx:.4g}, F = {f:.4g})")
+                self.turns.append((O.iter, dx, f))
+                if self.progress:
+                    print(f"  tension Dx={amplitude:g} to the start's force: cycle {cycle + 1}/{n_cycles} "
+                          f"{'out' if outward else 'back'} at Dx={dx:+.4f}  F/(kp d0)={f:+.4e}  ({time.time() - t0:.0f} s)",
+                          flush=True)
+        for e in motion:
+            e.dead = True
+        for i in (self.left, self.right):
+            O.bodies[i].state.vel = Vector3(0, 0, 0)
+        self._record()
+        return self.rows
+
     def pull(self, speed, until=9.0, every=100, on_record=None, stop=None):
         """Monotonic tension: each wall moves out at ``speed`` [mm/us] until Dx = until (or, checked
         between chunks of 50 records, until ``stop()`` is true). Returns the recorded rows."""

@@ -14,11 +14,12 @@ from .common import (
     FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
 )
 from .runs import (
-    PERTURBED, PERTURBED_MORE, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic, drag_share, factor_run,
+    PERTURBED, PERTURBED_MORE, RETURNS, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic, drag_share, factor_run,
     large_compression, pull, rates, timestep_study,
 )
 from .report import factor_report, factor_table
 from ..affine import run as affine_run
+from ..profile import run as profile_run
 
 
 # The options of every tablet job, declared once: argparse takes them as they are, and a yade-batch
@@ -33,7 +34,8 @@ OPTIONS = (
     ("--no-run", dict(action="store_true", help="rates: only the periods whose runs are complete")),
     ("--speed", dict(type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")),
     ("--until", dict(type=float, default=None,
-                     help="fig17: pull until Dx = UNTIL (default 9); fig19: compress until Dx = -UNTIL (default 3) (in d0)")),
+                     help="fig17: pull until Dx = UNTIL (default 9); profile: likewise (default 0.3); fig19: compress until "
+                          "Dx = -UNTIL (default 3) (in d0)")),
     ("--factors", dict(default=None, help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 "
                                           "and the perturbed 1.000001, 1.000002, 0.999999)")),
     ("--runs", dict(default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")),
@@ -47,10 +49,16 @@ OPTIONS = (
                     help="factors: the walls made adhesive after sintering (loading: the two x walls; all: six)")),
     ("--rel-std", dict(type=float, default=0.05,
                        help="factors: relative standard deviation of the radii (Gaussian, cut at 2 sigma; default 0.05)")),
-    ("--seed", dict(type=int, default=1, help="factors, fig16, fig18, affine: the random seed of the gas (positions and radii): "
+    ("--seed", dict(type=int, default=1, help="factors, fig16, fig18, affine, profile: the random seed of the gas (positions and radii): "
                                               "another realization of the preparation")),
     ("--sinter", dict(type=float, default=sample.SINTER,
-                      help="factors, fig16, fig18, affine: the sintering stress d0 p_s/kp (the paper's 0.02)")),
+                      help="factors, fig16, fig18, affine, profile: the sintering stress d0 p_s/kp (the paper's 0.02)")),
+    ("--returns", dict(default="length", choices=RETURNS,
+                       help="fig16: where the cycles turn back: at Dx = 0 (length), or at the start's force (force), "
+                            "walls at constant speed")),
+    ("--test-kc-over-kp", dict(type=float, default=None,
+                               help="fig16: the particles' kc/kp from the unconfined start on, every contact keeping "
+                                    "its history (the same sample with another tensile stiffness)")),
     ("--drag", dict(default="contacts", choices=("contacts", "lab"), help="factors: the background drag's reference in the pull")),
     ("--table", dict(action="store_true", help="factors: only gather the table of the runs made")),
     ("--report", dict(default=None, metavar="DOCS",
@@ -62,7 +70,7 @@ OPTIONS = (
 # The periods a job runs when --periods is not given (FAST, SLOW otherwise).
 DEFAULT_PERIODS = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}
 MPI_FIGURES = ("fig16", "fig17", "fig18")
-PREPARATION_FIGURES = ("factors", "fig16", "fig18", "affine")  # the jobs that take --sinter and --seed
+PREPARATION_FIGURES = ("factors", "fig16", "fig18", "affine", "profile")  # the jobs that take --sinter and --seed
 
 
 def batch_columns():
@@ -113,6 +121,12 @@ def parse_args(figure, argv):
     _numbers(p, "--speed", str(a.speed), 0, 0.2, "a wall speed in mm/us (the sound speed is about 22)")
     if a.until is not None:
         _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull or compression in d0")
+    if (a.returns != "length" or a.test_kc_over_kp is not None) and figure != "fig16":
+        p.error(f"--returns and --test-kc-over-kp: only fig16 runs these variants (not {figure})")
+    if a.returns != "length" and a.mpi is not None:
+        p.error("--returns force: without --mpi (the turns are decided every few steps from the walls)")
+    if a.test_kc_over_kp is not None and not (math.isfinite(a.test_kc_over_kp) and 0 <= a.test_kc_over_kp <= 100):
+        p.error(f"--test-kc-over-kp {a.test_kc_over_kp} is invalid: must lie in [0, 100]")
     if a.kc_over_kp is not None and not (math.isfinite(a.kc_over_kp) and 0 <= a.kc_over_kp <= 100):
         p.error(f"--kc-over-kp {a.kc_over_kp} is invalid: must lie in [0, 100]")
     try:  # an unwritable --out fails now, not after the computation
@@ -172,7 +186,8 @@ JOBS = {
                                                     run_missing=not a.no_run),
               "the cycles of one amplitude at three periods."),
     "fig16": (lambda a, amps, slow, periods: cyclic("tension", a.out, amps, a.quick, periods, slow_amplitudes=slow,
-                                                     protocol=_preparation(a)),
+                                                     protocol=_preparation(a), returns=a.returns,
+                                                     kc_over_kp=a.test_kc_over_kp),
               "tension cycles (Fig. 16)."),
     "fig17": (lambda a, amps, slow, periods: pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0),
               "the pull to rupture with snapshots (Fig. 17)."),
@@ -184,6 +199,8 @@ JOBS = {
     "factors": (_factors, "one pull of the factor study (a preparation), then its table."),
     "affine": (lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
                "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
+    "profile": (lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a), until=a.until or 0.3),
+                "the pull's first part with the strain by slab and the contacts' branches against an affine stretch."),
 }
 FIGURES = tuple(JOBS)
 

@@ -40,13 +40,13 @@ def _arrow(ax, rows, frac, colour, lw=1.4):
                     arrowprops=dict(arrowstyle="-|>", color=colour, lw=lw, mutation_scale=16, shrinkA=0, shrinkB=0))
 
 
-def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
+def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False, variant=""):
     """Force-displacement cycles as the paper draws them: compressive displacement (L0 - L)/d0
     and force > 0 (tension on the negative axes), the paper's colours, the amplitudes of the
     paper's figure in panel (a) and any larger ones in panel (b); thick: the slower period, drawn
     first and pale so that the thin (first period) line stays visible on it; the largest
     amplitude drawn first so that none hides a smaller one; arrows: black on the first
-    loading, coloured on the re-loading of the last cycle."""
+    loading, coloured on the re-loading of the last cycle; ``variant`` names a test variant in the titles."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -77,7 +77,8 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False):
         ax.set_xlabel("compression (L0 - L)/d0  [tension < 0]")
         ax.set_ylabel("F/(kp d0)  [compressive > 0]")
         what = "the paper's amplitudes" if n == 0 else "a larger amplitude than the paper's"
-        ax.set_title(f"({chr(97 + n)}) {mode} cycles, {what}" + (" (quick mode)" if quick else ""), fontsize=10)
+        ax.set_title(f"({chr(97 + n)}) {mode} cycles, {what}" + (f", {variant}" if variant else "")
+                     + (" (quick mode)" if quick else ""), fontsize=10)
         ax.legend(fontsize=6.5, ncol=2)
     fig.tight_layout()
     fig.savefig(png, dpi=130)

@@ -36,16 +36,33 @@ def _test(progress):
     return test, f0
 
 
+RETURNS = ("length", "force")  # where a tension cycle turns back: at Dx = 0, or at the start's force (E6)
+
+
+def variant_prefix(returns="length", kc_over_kp=None):
+    """The name prefix of the cyclic runs of a test variant (none for the campaign's cycles)."""
+    if returns not in RETURNS:
+        raise ValueError(f"returns = {returns!r} is invalid: one of {RETURNS}")
+    return (f"kc{kc_over_kp:g}-" if kc_over_kp is not None else "") + ("force-return-" if returns == "force" else "")
+
+
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", dt_factor=None,
-               energy=False, cycles=None, protocol=None):
+               energy=False, cycles=None, protocol=None, returns="length", kc_over_kp=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
     campaign's PROTOCOL is read back, not repeated. ``dt_factor`` scales tablet.contact_step (default
     DT_FACTORS[mode]); ``energy`` adds the energy balance of the run (uniaxial.Test.energy_balance)
     to the JSON; ``cycles`` overrides the campaign's cycle count; ``protocol``: preparation options
-    that differ from PROTOCOL (tablet.prepare's sinter, seed, ...). Returns (description, rows)."""
+    that differ from PROTOCOL (tablet.prepare's sinter, seed, ...). Test variants on the same
+    state (named by variant_prefix, recorded in the JSON): ``returns='force'``, tension cycles
+    that turn back at the start's force (uniaxial.Test.force_cycles) instead of at Dx = 0;
+    ``kc_over_kp``, the particles' kc/kp changed on the unconfined start, every contact keeping
+    its history (sample.set_tensile_stiffness). Returns (description, rows)."""
     proto = dict(PROTOCOL, **(protocol or {}))
+    if returns == "force" and (mode != "tension" or _mpy() is not None):
+        raise ValueError("returns = 'force': tension cycles only, without yade.mpy")
+    prefix = variant_prefix(returns, kc_over_kp) + prefix
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
     if _out.complete(where):
@@ -62,11 +79,19 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     dt_factor = DT_FACTORS[mode] if dt_factor is None else dt_factor
     O.dt *= dt_factor
     bundle = _out.Bundle(where) if is_master() else None
+    variant = {}
+    if kc_over_kp is not None:
+        variant["tensile_stiffness"] = sample.set_tensile_stiffness(kc_over_kp)
     try:
         test, f0 = _test(progress)
         if energy:
             test.track_energy()
-        rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period)
+        if returns == "force":
+            rows = test.force_cycles(amplitude, n_cycles=n_cycles, period=period)
+            variant["returns"] = "force"
+            variant["turns"] = test.turns
+        else:
+            rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period)
         if _mpy() is not None:
             rows = _mpy().comm.bcast(rows, root=0)  # the master's rows: one result on every rank
             rows[0] = (*rows[0][:2], f0)
@@ -78,10 +103,11 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
-            "peaks": cycle_peaks(mode, rows, test.steps_per_cycle), "wall_clock_s": time.time() - t0,
+            "peaks": (stroke_peaks(rows, test.turns) if returns == "force" else cycle_peaks(mode, rows, test.steps_per_cycle)),
+            "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
             "mpi_ranks": _mpy().numThreads if _mpy() else 1, "dt_factor": dt_factor, "final_F": rows[-1][2],
-            "protocol": proto}
+            "protocol": proto, **variant}
     if energy:
         info["energy_balance"] = test.energy_balance()
     if bundle is None:
@@ -95,12 +121,24 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     return info, rows
 
 
+def stroke_peaks(rows, turns):
+    """The most tensile force (min F) of each cycle of uniaxial.Test.force_cycles: a cycle ends
+    where its return stroke does (every second turn)."""
+    ends = [t[0] for t in turns[1::2]]
+    peaks, k = [], 0
+    for end in ends:
+        cycle = [r[2] for r in rows[k:] if r[0] <= end]
+        k += len(cycle)
+        peaks.append(min(cycle) if cycle else None)
+    return peaks
+
+
 def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None,
-           protocol=None):
+           protocol=None, returns="length", kc_over_kp=None):
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
     times, default PERIODS[mode]; thin lines the first, thick the others; the slower periods
-    only for ``slow_amplitudes`` when given; ``protocol`` as in run_cycles); writes the figure's
-    bundle (fig16 or fig18)."""
+    only for ``slow_amplitudes`` when given; ``protocol``, ``returns``, ``kc_over_kp`` as in
+    run_cycles); writes the figure's bundle (fig16 or fig18, a variant's with its prefix)."""
     _uni.check_mode(mode)
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
     periods = tuple(periods or PERIODS[mode])
@@ -109,10 +147,11 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
         for k, period in enumerate(periods):
             if k > 0 and slow_amplitudes is not None and amplitude not in slow_amplitudes:
                 continue
-            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, protocol=protocol)
+            info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, protocol=protocol,
+                                    returns=returns, kc_over_kp=kc_over_kp)
             runs[info["name"]] = info
             data[info["name"]] = rows
-    fig = "fig16" if mode == "tension" else "fig18"
+    fig = variant_prefix(returns, kc_over_kp) + ("fig16" if mode == "tension" else "fig18")
     summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
                "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
     if not is_master():
@@ -121,7 +160,9 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
         for name in runs:
             b.copy_from(run_dir(outdir, name, quick))
         b.write_json(fig + ".json", summary)
-        plot_cycles(mode, amplitudes, periods, runs, data, b.path(fig + ".png"), quick)
+        plot_cycles(mode, amplitudes, periods, runs, data, b.path(fig + ".png"), quick, variant=", ".join(
+            ([f"kc/kp = {kc_over_kp:g} on the same sample"] if kc_over_kp is not None else [])
+            + (["back to the start's force"] if returns == "force" else [])))
     return summary
 
 
