@@ -25,12 +25,19 @@ namespace {
 	}
 }
 
+std::string adhesionChoices()
+{
+	std::string out;
+	for (int k = 0; k < kAdhesionModeCount; ++k)
+		out += (k == 0 ? "'" : (k + 1 == kAdhesionModeCount ? " or '" : ", '")) + std::string(kAdhesionModes[k].name) + "'";
+	return out;
+}
+
 Adhesion parseAdhesion(const std::string& s)
 {
-	if (s == "none") return Adhesion::None;
-	if (s == "reversible") return Adhesion::Reversible;
-	if (s == "jumpIn") return Adhesion::JumpIn;
-	throw std::invalid_argument("adhesion = '" + s + "' is invalid: must be 'none', 'reversible' or 'jumpIn'");
+	for (const AdhesionMode& m : kAdhesionModes)
+		if (s == m.name) return m.mode;
+	throw std::invalid_argument("adhesion = '" + s + "' is invalid: must be " + adhesionChoices());
 }
 
 K2Interpolation parseK2Interpolation(const std::string& s)
@@ -42,11 +49,8 @@ K2Interpolation parseK2Interpolation(const std::string& s)
 
 const char* adhesionName(Adhesion a)
 {
-	switch (a) {
-		case Adhesion::Reversible: return "reversible";
-		case Adhesion::JumpIn: return "jumpIn";
-		default: return "none";
-	}
+	const int k = static_cast<int>(a);
+	return k >= 0 && k < kAdhesionModeCount ? kAdhesionModes[k].name : "none";
 }
 
 const char* k2InterpolationName(K2Interpolation k) { return k == K2Interpolation::Sqrt ? "sqrt" : "linear"; }
@@ -73,7 +77,12 @@ void validate(const MaterialParams& m)
 void validatePair(const PairParams& p)
 {
 	const int adhesion = static_cast<int>(p.adhesion), interp = static_cast<int>(p.k2Interpolation);
-	if (adhesion < 0 || adhesion > 2) reject("adhesion", adhesion, "must be a mode: 0 none, 1 reversible, 2 jumpIn");
+	if (adhesion < 0 || adhesion >= kAdhesionModeCount) {
+		std::string modes;
+		for (int k = 0; k < kAdhesionModeCount; ++k)
+			modes += (k ? ", " : "") + std::to_string(k) + " " + kAdhesionModes[k].name;
+		reject("adhesion", adhesion, ("must be a mode: " + modes).c_str());
+	}
 	if (interp < 0 || interp > 1) reject("k2Interpolation", interp, "must be 0 linear or 1 sqrt");
 	MaterialParams m;
 #define MESO_COPY(name, def, unit, ok, rule, mix, dest, ...) m.name = p.dest;
@@ -148,8 +157,7 @@ PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)
 	MESO_ALL_PARAMS(MESO_MIX)
 #undef MESO_MIX
 	p.kp = std::max(p.kp, p.k1); // the harmonic mean is monotone, so kp >= k1 holds up to rounding
-	auto strength = [](Adhesion a) { return a == Adhesion::None ? 0 : (a == Adhesion::JumpIn ? 1 : 2); };
-	p.adhesion    = strength(m1.adhesion) <= strength(m2.adhesion) ? m1.adhesion : m2.adhesion;
+	p.adhesion    = adhesionMode(m1.adhesion).strength <= adhesionMode(m2.adhesion).strength ? m1.adhesion : m2.adhesion;
 	p.k2Interpolation = (m1.k2Interpolation == K2Interpolation::Sqrt && m2.k2Interpolation == K2Interpolation::Sqrt)
 	        ? K2Interpolation::Sqrt
 	        : K2Interpolation::Linear;

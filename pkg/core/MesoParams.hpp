@@ -17,13 +17,51 @@
 
 namespace meso {
 
-enum class Adhesion : int { None = 0, Reversible = 1, JumpIn = 2 };
+// The adhesion modes (docs/model.md §4), one row each; a new mode is a row here and its force in
+// NormalLaw.hpp's adhesiveForce. X(enumerator, saved value, name, strength, acrossGap, doc):
+// a mixed pair takes the mode of lower strength; a mode that acts across the gap pulls pairs in
+// before they touch, so the collider must find them at the force's range (Ip2 warns otherwise);
+// the others start at the first touch (the 'touched' flag) or never.
+#define MESO_ADHESION_MODES(X) \
+	X(None, 0, "none", 0, false, "no non-contact force") \
+	X(Reversible, 1, "reversible", 2, true, "Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$") \
+	X(JumpIn, 2, "jumpIn", 1, false, "Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after")
+
+// The modes as documentation: "'none' (no non-contact force); ..." (MesoMat.adhesion's doc).
+#define MESO_ADHESION_DOC(e, value, name, strength, acrossGap, doc) "'" name "' (" doc "); "
+
+#define MESO_ADHESION_ENUM(e, value, ...) e = value,
+enum class Adhesion : int { MESO_ADHESION_MODES(MESO_ADHESION_ENUM) };
+#undef MESO_ADHESION_ENUM
 enum class K2Interpolation : int { Linear = 0, Sqrt = 1 };
+
+struct AdhesionMode {
+	Adhesion    mode;
+	const char* name;
+	int         strength;
+	bool        acrossGap;
+};
+#define MESO_ADHESION_ROW(e, value, name, strength, acrossGap, ...) AdhesionMode { Adhesion::e, name, strength, acrossGap },
+constexpr AdhesionMode kAdhesionModes[] = { MESO_ADHESION_MODES(MESO_ADHESION_ROW) };
+#undef MESO_ADHESION_ROW
+constexpr int kAdhesionModeCount = sizeof(kAdhesionModes) / sizeof(kAdhesionModes[0]);
+
+// The row of a mode (the enumerators are the rows' indices: checked below).
+constexpr const AdhesionMode& adhesionMode(Adhesion a) { return kAdhesionModes[static_cast<int>(a)]; }
+#define MESO_ADHESION_INDEX(e, value, ...) static_assert(kAdhesionModes[value].mode == Adhesion::e, "rows in saved-value order");
+MESO_ADHESION_MODES(MESO_ADHESION_INDEX)
+#undef MESO_ADHESION_INDEX
+
+// For the hot path: the modes that act across the gap, as comparisons with constants (no table load).
+#define MESO_ADHESION_ACROSS(e, value, name, strength, acrossGap, ...) (acrossGap && a == Adhesion::e) ||
+constexpr bool actsAcrossGap(Adhesion a) { return MESO_ADHESION_MODES(MESO_ADHESION_ACROSS) false; }
+#undef MESO_ADHESION_ACROSS
 
 Adhesion        parseAdhesion(const std::string& name);        // throws std::invalid_argument naming 'adhesion'
 K2Interpolation parseK2Interpolation(const std::string& name); // throws naming 'k2Interpolation'
 const char*     adhesionName(Adhesion a);
 const char*     k2InterpolationName(K2Interpolation k);
+std::string     adhesionChoices(); // "'none', 'reversible' or 'jumpIn'", for messages
 
 // One spring-dashpot-Coulomb element (sliding, rolling or torsion): spring k [N/m], dashpot
 // gamma [kg/s], static and dynamic coefficients of the Coulomb limit [-].

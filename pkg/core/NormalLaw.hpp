@@ -92,7 +92,7 @@ MESO_HOT double hystereticForce(const PairParams& p, const PairGeometry& g, Norm
 MESO_HOT double adhesiveForce(const PairParams& p, NormalHistory& h, double delta)
 {
 	if (p.adhesion == Adhesion::None) return 0;
-	if (p.adhesion == Adhesion::JumpIn && !h.touched) {
+	if (!actsAcrossGap(p.adhesion) && !h.touched) {
 		if (delta <= 0) return 0;
 		h.touched = true;
 	}
@@ -191,12 +191,15 @@ MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeom
 // (the overlap, the history after the update, the hysteretic force): nothing is stored for it, so
 // the hot path pays nothing. Loading sets deltaMax to the overlap itself; the tensile limit returns
 // -kc delta itself; both are exact equalities of what the step computed.
-enum class Branch : int { New = 0, Apart, NonContact, Loading, Limit, Unloading, Tensile };
-inline const char* branchName(Branch b)
-{
-	static const char* const names[] = { "new", "apart", "nonContact", "loading", "limit", "unloading", "tensile" };
-	return names[static_cast<int>(b)];
-}
+#define MESO_BRANCHES(X) X(New, "new") X(Apart, "apart") X(NonContact, "nonContact") X(Loading, "loading") X(Limit, "limit") X(Unloading, "unloading") X(Tensile, "tensile")
+#define MESO_BRANCH_ENUM(e, name) e,
+enum class Branch : int { MESO_BRANCHES(MESO_BRANCH_ENUM) };
+#undef MESO_BRANCH_ENUM
+#define MESO_BRANCH_NAME(e, name) name,
+constexpr const char* kBranchNames[] = { MESO_BRANCHES(MESO_BRANCH_NAME) };
+#undef MESO_BRANCH_NAME
+constexpr int      kBranchCount = sizeof(kBranchNames) / sizeof(kBranchNames[0]);
+inline const char* branchName(Branch b) { return kBranchNames[static_cast<int>(b)]; }
 MESO_INLINE Branch branchAfter(const PairParams& p, const PairGeometry& g, const NormalHistory& h, double delta, double fHysteretic)
 {
 	if (std::isnan(delta)) return Branch::New; // no step yet

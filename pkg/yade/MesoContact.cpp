@@ -414,7 +414,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::go(const shared_ptr<Material>& m1, const shar
 	I->phys                      = phys;
 	checkTimeStep(*phys, *I);
 	checkDepth(*I);
-	if (p.adhesion == meso::Adhesion::Reversible) checkDetection(*phys, *I);
+	if (meso::actsAcrossGap(p.adhesion)) checkDetection(*phys, *I);
 }
 
 void Ip2_MesoMat_MesoMat_MesoPhys::checkDepth(const Interaction& I)
@@ -433,9 +433,25 @@ void Ip2_MesoMat_MesoMat_MesoPhys::checkDepth(const Interaction& I)
 	          << "(grow the radii or let the spheres settle with a softer law first). (Warned once.)" << std::endl;
 }
 
+boost::python::tuple MesoMat::adhesionModes()
+{
+	boost::python::list out;
+	for (const meso::AdhesionMode& m : meso::kAdhesionModes)
+		out.append(std::string(m.name));
+	return boost::python::tuple(out);
+}
+
+boost::python::tuple MesoPhys::branchNames()
+{
+	boost::python::list out;
+	for (const char* name : meso::kBranchNames)
+		out.append(std::string(name));
+	return boost::python::tuple(out);
+}
+
 void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const Interaction& I)
 {
-	// The pull-in of reversible adhesion acts across the gap: a pair made already in contact, which was
+	// The pull-in of a mode that acts across the gap (reversible): a pair made already in contact, which was
 	// inside the range a step ago, missed it (one that crossed the whole range in a step lost nothing,
 	// nor did a pair that overlapped before the first step).
 	const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
@@ -456,7 +472,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const In
 	else
 		what = "Ig2_" + other + "_Sphere_ScGeom.interactionDetectionFactor";
 	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: the " << s1 << "-" << s2 << " contact #" << I.getId1() << "+#" << I.getId2()
-	          << " with reversible non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
+	          << " with '" << meso::adhesionName(phys.pair().adhesion) << "' non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
 	          << " m), so its pull-in over the range " << -phys.pair().deltaA << " m was missed. Detect pairs at that gap: " << what
 	          << " and Bo1_Sphere_Aabb.aabbEnlargeFactor >= 1 + range/radius; mesocontact.scene.set_detection() sets them "
 	          << "(call it after the engines and bodies are in place, and again after adding smaller spheres or a larger range). "

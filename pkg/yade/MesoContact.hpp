@@ -47,11 +47,12 @@ public:
 	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	static void          registerChecked(boost::python::object& cls); // attributes that name themselves in a type error
 	void                 updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
+	static boost::python::tuple adhesionModes();
 	void                 undoToValid(); // every checked attribute back to its last valid value
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
 		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
-		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion: 'none', 'reversible' (Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$) or 'jumpIn' (Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after)."))
+		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion, one of " MESO_ADHESION_MODES(MESO_ADHESION_DOC) "``adhesionModes()`` lists them."))
 		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1)."))
 		MESO_TANGENTIAL_PARAMS(MESO_MAT_ATTR)
 		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
@@ -59,7 +60,8 @@ public:
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 		.add_property("density",&MesoMat::getDensity,&MesoMat::setDensity,"Density of the material [kg/m³], finite and > 0 (checked on assignment).")
 		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law. :yref:`PWaveTimeStep` reads it but sees none of the law's stiffnesses: set O.dt with ``mesocontact.scene.time_step()``.")
-		.def("updateAttrs",&MesoMat::updateAttrsChecked,(boost::python::arg("attrs")),"Sets several attributes at once: an unknown name (AttributeError), a wrong type (TypeError) or an invalid value (ValueError) names the attribute and leaves every attribute as it was.");
+		.def("updateAttrs",&MesoMat::updateAttrsChecked,(boost::python::arg("attrs")),"Sets several attributes at once: an unknown name (AttributeError), a wrong type (TypeError) or an invalid value (ValueError) names the attribute and leaves every attribute as it was.")
+		.def("adhesionModes",&MesoMat::adhesionModes,"The names ``adhesion`` takes, in the order of their saved values.").staticmethod("adhesionModes");
 		MesoMat::registerChecked(_classObj)
 	);
 	// clang-format on
@@ -109,6 +111,7 @@ public:
 		.add_property("a12",&MesoPhys::getA12,"Reduced radius $2a_1a_2/(a_1+a_2)$ ($2a$ against a wall) [m].")
 		.add_property("branch",&MesoPhys::getBranch,"Branch of the law the contact was on at the last step: 'loading' ($k_1$), 'limit' (the limit branch $k_p$ beyond $\\delta_{max}^p$), 'unloading' (an un-/re-loading line $k_2$), 'tensile' (the tensile limit $-k_c\\delta$), 'nonContact' (no overlap, the non-contact adhesion acting), 'apart' (no overlap, no force) or 'new' (no step yet). Read back from the stored state: it costs the law nothing.")
 		.add_property("branchIndex",&MesoPhys::getBranchIndex,"``branch`` as a number for VTK and numpy: 0 new, 1 apart, 2 nonContact, 3 loading, 4 limit, 5 unloading, 6 tensile.")
+		.def("branchNames",&MesoPhys::branchNames,"The names ``branch`` takes, in the order of ``branchIndex``.").staticmethod("branchNames")
 		.def("dict",&MesoPhys::stateDict,"The attributes YADE's ``dict()`` lists (those of FrictPhys) and the meso contact's state and pair parameters: overlap history, k2, branch, the force parts, the springs.")
 		.add_property("touched",&MesoPhys::getTouched,"For 'jumpIn' adhesion: whether the pair has been in mechanical contact (it starts the adhesive force). Kept only for that mode: False for 'none' and 'reversible'.")
 		MESO_ALL_PARAMS(MESO_PHYS_PROPERTY)
@@ -164,7 +167,8 @@ public:
 	Real getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
 	Real        getMuS() const { return pair().sliding.muS; }
 	meso::Branch branch() const { return pairParams ? meso::branchAfter(pair(), geometry, history, lastDelta, fHysteretic) : meso::Branch::New; }
-	std::string getBranch() const { return meso::branchName(branch()); }
+	std::string                 getBranch() const { return meso::branchName(branch()); }
+	static boost::python::tuple branchNames();
 	int         getBranchIndex() const { return static_cast<int>(branch()); }
 	boost::python::dict stateDict() const;
 	int         byteSize() const; // of this object's class
