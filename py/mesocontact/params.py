@@ -78,8 +78,8 @@ def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contac
     the law's stiffest element by steps_per_contact steps, for the smallest particle mass m_min,
     in closed form for equal spheres [s]. The tablet uses it (t_c/50). For a scene's O.dt use
     mesocontact.scene.time_step(safety), a fraction of the stable step of every pair that can
-    meet (walls and mixed materials included); its default safety 0.1 gives about 8 steps per
-    half period of the stiffest element where resolved_step gives 50.
+    meet (walls and mixed materials included); its safety 0.1 gives about 8 steps per half period
+    of the stiffest element where resolved_step gives 50.
 
     Highest angular frequencies of a pair of equal spheres (the worst case; a sphere against a
     wall is slower): normal kp/m_r with m_r = m/2; sliding 3.5 kt/m_r (the spring drags

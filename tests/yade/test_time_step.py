@@ -97,12 +97,20 @@ want = ip2.stableStep(stiff, wall, 0.5 * R, 0.0)
 got = scene.time_step(safety=1.0)
 check(math.isfinite(got) and abs(got - want) < 1e-15 * want, "a sphere against a fixed sphere: the sphere-wall bound, not inf",
       f"{got:.4e} s")
-for bad, says in ((0.0, "safety"), (1.5, "safety")):
+for bad, says in ((0.0, "safety"), (-1.0, "safety"), (math.nan, "safety"), (math.inf, "safety"), ("0.5", "safety")):
     try:
         scene.time_step(safety=bad)
         check(False, f"safety = {bad} refused")
     except ValueError as e:
         check(says in str(e), f"safety = {bad} refused, naming it", str(e))
+import warnings  # noqa: E402
+
+with warnings.catch_warnings(record=True) as caught:  # an unstable step on purpose: given, with a warning
+    warnings.simplefilter("always")
+    over = scene.time_step(safety=1.5)
+check(abs(over - 1.5 * want) < 1e-15 * over and len(caught) == 1 and "stability bound" in str(caught[0].message),
+      "safety = 1.5: 1.5 times the bound, with a warning", str(caught[0].message) if caught else "no warning")
+check(abs(scene.time_step() - 0.05 * want) < 1e-15 * want, "the default safety is 0.05, what the examples use")
 try:
     ip2.stableStep(soft, soft, -1.0)
     check(False, "stableStep(radius1 = -1) refused")
