@@ -8,7 +8,7 @@ packages=(yade cmake g++ make pkg-config binutils bzip2 xz-utils
           libeigen3-dev libboost-python1.74-dev libboost-serialization1.74-dev
           libboost-system1.74-dev libboost-log1.74-dev libboost-iostreams1.74-dev
           libopenmpi-dev python3-dev libbz2-dev libgtest-dev
-          python3-numpy python3-scipy python3-matplotlib flake8)
+          python3-numpy python3-scipy python3-matplotlib flake8 clang-format)
 
 missing=()
 for p in "${packages[@]}"; do

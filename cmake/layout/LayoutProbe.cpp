@@ -48,39 +48,39 @@ template <class T> T& object(py::object o) { return py::extract<T&>(o)(); }
 py::dict sizes()
 {
 	py::dict d;
-	d["Serializable"]   = sizeof(Serializable);
-	d["Material"]       = sizeof(Material);
-	d["ElastMat"]       = sizeof(ElastMat);
-	d["FrictMat"]       = sizeof(FrictMat);
-	d["IPhys"]          = sizeof(IPhys);
-	d["NormPhys"]       = sizeof(NormPhys);
-	d["NormShearPhys"]  = sizeof(NormShearPhys);
-	d["FrictPhys"]      = sizeof(FrictPhys);
-	d["IGeom"]          = sizeof(IGeom);
-	d["ScGeom"]         = sizeof(ScGeom);
-	d["ScGeom6D"]       = sizeof(ScGeom6D);
-	d["State"]          = sizeof(State);
-	d["Body"]           = sizeof(Body);
-	d["Interaction"]    = sizeof(Interaction);
-	d["Sphere"]         = sizeof(Sphere);
-	d["Facet"]          = sizeof(Facet);
-	d["Wall"]           = sizeof(Wall);
-	d["IGeomFunctor"]   = sizeof(IGeomFunctor);
-	d["IPhysFunctor"]   = sizeof(IPhysFunctor);
-	d["LawFunctor"]     = sizeof(LawFunctor);
-	d["GlobalEngine"]   = sizeof(GlobalEngine);
+	d["Serializable"]  = sizeof(Serializable);
+	d["Material"]      = sizeof(Material);
+	d["ElastMat"]      = sizeof(ElastMat);
+	d["FrictMat"]      = sizeof(FrictMat);
+	d["IPhys"]         = sizeof(IPhys);
+	d["NormPhys"]      = sizeof(NormPhys);
+	d["NormShearPhys"] = sizeof(NormShearPhys);
+	d["FrictPhys"]     = sizeof(FrictPhys);
+	d["IGeom"]         = sizeof(IGeom);
+	d["ScGeom"]        = sizeof(ScGeom);
+	d["ScGeom6D"]      = sizeof(ScGeom6D);
+	d["State"]         = sizeof(State);
+	d["Body"]          = sizeof(Body);
+	d["Interaction"]   = sizeof(Interaction);
+	d["Sphere"]        = sizeof(Sphere);
+	d["Facet"]         = sizeof(Facet);
+	d["Wall"]          = sizeof(Wall);
+	d["IGeomFunctor"]  = sizeof(IGeomFunctor);
+	d["IPhysFunctor"]  = sizeof(IPhysFunctor);
+	d["LawFunctor"]    = sizeof(LawFunctor);
+	d["GlobalEngine"]  = sizeof(GlobalEngine);
 	return d;
 }
 size_t usable(py::object o) { return malloc_usable_size(py::extract<Serializable*>(o)()); }
 
 // One reading per member: d["name"] = the member as Python sees it (pointers as addresses).
-py::object value(Real x) { return py::object(double(x)); }
-py::object value(int x) { return py::object(x); }
-py::object value(bool x) { return py::object(x); }
-py::object value(const Vector3r& v) { return vec(v); }
-py::object value(const Vector3i& v) { return vec(v); }
+py::object                    value(Real x) { return py::object(double(x)); }
+py::object                    value(int x) { return py::object(x); }
+py::object                    value(bool x) { return py::object(x); }
+py::object                    value(const Vector3r& v) { return vec(v); }
+py::object                    value(const Vector3i& v) { return vec(v); }
 template <class T> py::object value(const shared_ptr<T>& p) { return py::object(size_t(p.get())); }
-py::object value(const std::vector<Vector3r>& v)
+py::object                    value(const std::vector<Vector3r>& v)
 {
 	py::list l;
 	for (const auto& x : v)
@@ -89,13 +89,13 @@ py::object value(const std::vector<Vector3r>& v)
 }
 // A reader of class T: the listed members as Python sees them, by name (pointers as addresses).
 #define READ_MEMBER(r, obj, member) d[BOOST_PP_STRINGIZE(member)] = value(obj.member);
-#define READER(fname, T, members) \
-	py::dict fname(py::object o) \
-	{ \
-		const T& x = object<T>(o); \
-		py::dict d; \
-		BOOST_PP_SEQ_FOR_EACH(READ_MEMBER, x, members) \
-		return d; \
+#define READER(fname, T, members)                                                                                                                              \
+	py::dict fname(py::object o)                                                                                                                           \
+	{                                                                                                                                                      \
+		const T& x = object<T>(o);                                                                                                                     \
+		py::dict d;                                                                                                                                    \
+		BOOST_PP_SEQ_FOR_EACH(READ_MEMBER, x, members)                                                                                                 \
+		return d;                                                                                                                                      \
 	}
 READER(state, State, (pos)(vel)(angVel)(mass)(inertia))
 READER(material, FrictMat, (density)(young)(frictionAngle)(id))
@@ -146,8 +146,8 @@ py::dict sceneContainers()
 	d["bodies"]       = s.bodies->size();
 	d["interactions"] = s.interactions->size();
 	s.forces.sync(); // the library's functions, on the container at these headers' offset
-	d["force0"] = vec(s.forces.getForce(0));
-	d["energyNames"]  = s.energy->names.size();
+	d["force0"]      = vec(s.forces.getForce(0));
+	d["energyNames"] = s.energy->names.size();
 	if (s.isPeriodic) {
 		d["hSize"]           = mat(s.cell->hSize);
 		d["velGrad"]         = mat(s.cell->velGrad);

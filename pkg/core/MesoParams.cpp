@@ -58,11 +58,11 @@ const char* k2InterpolationName(K2Interpolation k) { return k == K2Interpolation
 void validate(const MaterialParams& m)
 {
 	// Each number against its own rule (MesoParamTable.hpp), in the table's order.
-#define MESO_CHECK(name, def, unit, ok, rule, ...) \
-	{ \
-		const double v = m.name; \
-		finite(#name, v); \
-		if (!(ok)) reject(#name, v, rule); \
+#define MESO_CHECK(name, def, unit, ok, rule, ...)                                                                                                             \
+	{                                                                                                                                                      \
+		const double v = m.name;                                                                                                                       \
+		finite(#name, v);                                                                                                                              \
+		if (!(ok)) reject(#name, v, rule);                                                                                                             \
 	}
 	MESO_ALL_PARAMS(MESO_CHECK)
 #undef MESO_CHECK
@@ -92,7 +92,8 @@ void validatePair(const PairParams& p)
 	m.adhesion        = p.adhesion;
 	m.k2Interpolation = p.k2Interpolation;
 	validate(m);
-	for (const auto& [name, e] : { std::make_pair("sliding muD", &p.sliding), std::make_pair("rolling muD", &p.rolling), std::make_pair("torsion muD", &p.torsion) }) {
+	for (const auto& [name, e] :
+	     { std::make_pair("sliding muD", &p.sliding), std::make_pair("rolling muD", &p.rolling), std::make_pair("torsion muD", &p.torsion) }) {
 		finite(name, e->muD);
 		if (!(e->muD >= 0)) reject(name, e->muD, "must be >= 0");
 	}
@@ -150,17 +151,16 @@ namespace {
 PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)
 {
 	const bool            one = mat1.dominant && !mat2.dominant, two = mat2.dominant && !mat1.dominant;
-	const MaterialParams& m1  = two ? mat2 : mat1;
-	const MaterialParams& m2  = one ? mat1 : mat2;
+	const MaterialParams& m1 = two ? mat2 : mat1;
+	const MaterialParams& m2 = one ? mat1 : mat2;
 	PairParams            p;
 #define MESO_MIX(name, def, unit, ok, rule, mix, dest, ...) p.dest = mix(m1.name, m2.name);
 	MESO_ALL_PARAMS(MESO_MIX)
 #undef MESO_MIX
-	p.kp = std::max(p.kp, p.k1); // the harmonic mean is monotone, so kp >= k1 holds up to rounding
-	p.adhesion    = adhesionMode(m1.adhesion).strength <= adhesionMode(m2.adhesion).strength ? m1.adhesion : m2.adhesion;
-	p.k2Interpolation = (m1.k2Interpolation == K2Interpolation::Sqrt && m2.k2Interpolation == K2Interpolation::Sqrt)
-	        ? K2Interpolation::Sqrt
-	        : K2Interpolation::Linear;
+	p.kp              = std::max(p.kp, p.k1); // the harmonic mean is monotone, so kp >= k1 holds up to rounding
+	p.adhesion        = adhesionMode(m1.adhesion).strength <= adhesionMode(m2.adhesion).strength ? m1.adhesion : m2.adhesion;
+	p.k2Interpolation = (m1.k2Interpolation == K2Interpolation::Sqrt && m2.k2Interpolation == K2Interpolation::Sqrt) ? K2Interpolation::Sqrt
+	                                                                                                                 : K2Interpolation::Linear;
 	if (p.adhesion == Adhesion::None) p.fa = 0;
 	p.sliding.muS = smaller(m1.muS, m2.muS);
 	for (ElementParams* e : { &p.sliding, &p.rolling, &p.torsion })

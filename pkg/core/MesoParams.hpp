@@ -22,9 +22,9 @@ namespace meso {
 // a mixed pair takes the mode of lower strength; a mode that acts across the gap pulls pairs in
 // before they touch, so the collider must find them at the force's range (Ip2 warns otherwise);
 // the others start at the first touch (the 'touched' flag) or never.
-#define MESO_ADHESION_MODES(X) \
-	X(None, 0, "none", 0, false, "no non-contact force") \
-	X(Reversible, 1, "reversible", 2, true, "Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$") \
+#define MESO_ADHESION_MODES(X)                                                                                                                                 \
+	X(None, 0, "none", 0, false, "no non-contact force")                                                                                                   \
+	X(Reversible, 1, "reversible", 2, true, "Eq. 14: pull-in and pull-off along $-k_{ca}\\delta-f_a$")                                                     \
 	X(JumpIn, 2, "jumpIn", 1, false, "Eq. 15: no force before first touch, $-f_a$ in contact, pull-off tail after")
 
 // The modes as documentation: "'none' (no non-contact force); ..." (MesoMat.adhesion's doc).
@@ -96,16 +96,16 @@ double harmonicMean(double x, double y);
 // so YADE contacts share one copy (a contact's memory is what bulk runs pay for, per step).
 struct PairParams {
 	// Hot: what Law2::go() reads every step, flags first.
-	bool            tangential      = false; // any tangential mechanism acts
-	bool            rollingOrTorsion = false; // rolling and torsion act (ScGeom6D and a spring or dashpot set)
+	bool            tangential       = false;                                      // any tangential mechanism acts
+	bool            rollingOrTorsion = false;                                      // rolling and torsion act (ScGeom6D and a spring or dashpot set)
 	bool            slidingActs = false, rollingActs = false, torsionActs = false; // which elements act (setMechanisms())
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
 	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
-	double          deltaA          = 0; // range of the non-contact force -fa/kca (<= 0) [m]
-	double          delta0PerMaxP   = 0; // delta0P/deltaMaxP = 1 - k1/kp (Eqs. 10, 11) [-]
+	double          deltaA        = 0;         // range of the non-contact force -fa/kca (<= 0) [m]
+	double          delta0PerMaxP = 0;         // delta0P/deltaMaxP = 1 - k1/kp (Eqs. 10, 11) [-]
 	ElementParams   sliding, rolling, torsion; // Luding 2008 tangential elements
-	double          leverFactor = 1; // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
+	double          leverFactor = 1;           // rolling/torsion arm: 1 -> a1'a2'/(a1'+a2'), 2 -> 2 a1'a2'/(a1'+a2')
 	// Cold: kept for the user and to derive the geometry.
 	double phiF = 0; // plasticity depth [-]
 	double phiD = 1; // dynamic/static ratio of the Coulomb limits (the elements' muD already hold it) [-]

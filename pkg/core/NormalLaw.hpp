@@ -12,8 +12,8 @@ namespace meso {
 // cached function of it (it changes only when deltaMax does, and takes a division). k2 is not
 // kept: unloadingStiffness() is cheaper than the memory a contact would carry for it.
 struct NormalHistory {
-	double deltaMax = 0; // largest overlap of the current contact (after -kc resets) [m]
-	double delta0   = 0; // force-free overlap of the current k2 line [m]
+	double deltaMax = 0;     // largest overlap of the current contact (after -kc resets) [m]
+	double delta0   = 0;     // force-free overlap of the current k2 line [m]
 	bool   touched  = false; // the pair has been in mechanical contact (jump-in adhesion)
 };
 
@@ -129,18 +129,25 @@ MESO_INLINE double storedElastic(const PairParams& p, const PairGeometry& g, con
 // energy at step n uses the velocity of step n-1/2: the work absorbed by the contact up to that
 // time is the trapezoidal sum up to step n minus f_n (delta_n - delta_{n-1})/2.
 struct NormalEnergyStep {
-	double elastic = 0;    // stored elastic energy, half-step consistent (reset every step) [J]
-	double plastic = 0;    // increment of hysteretic dissipation [J]
-	double adhesive = 0;   // increment of the work absorbed by the adhesive force (< 0 while binding) [J]
-	double viscous = 0;    // increment of viscous dissipation [J]
+	double elastic  = 0; // stored elastic energy, half-step consistent (reset every step) [J]
+	double plastic  = 0; // increment of hysteretic dissipation [J]
+	double adhesive = 0; // increment of the work absorbed by the adhesive force (< 0 while binding) [J]
+	double viscous  = 0; // increment of viscous dissipation [J]
 };
 
 // prev, prevDelta, prevElastic: the force parts, overlap and storedElastic() of the previous step
 // (zero force before the first one); f, delta: this step's, h after this step's update. The previous
 // stored energy is not kept: it is storedElastic() of the previous force and history, which the
 // caller evaluates before the update.
-MESO_INLINE NormalEnergyStep energyStep(const PairParams& p, const PairGeometry& g, double prevDelta, double prevElastic, const NormalHistory& h,
-                                   const NormalForce& prev, const NormalForce& f, double delta)
+MESO_INLINE NormalEnergyStep energyStep(
+        const PairParams&    p,
+        const PairGeometry&  g,
+        double               prevDelta,
+        double               prevElastic,
+        const NormalHistory& h,
+        const NormalForce&   prev,
+        const NormalForce&   f,
+        double               delta)
 {
 	const double     dd      = delta - prevDelta;
 	const double     elastic = storedElastic(p, g, h, f.hysteretic);
@@ -156,7 +163,7 @@ MESO_INLINE NormalEnergyStep energyStep(const PairParams& p, const PairGeometry&
 // energy (the adhesive part and the energy are functions of the overlap and the history).
 struct NormalMemory {
 	double fHysteretic = 0, fViscous = 0;
-	double lastDelta   = std::numeric_limits<double>::quiet_NaN(); // NaN before the law's first step
+	double lastDelta = std::numeric_limits<double>::quiet_NaN(); // NaN before the law's first step
 };
 
 // One step of the normal law with its energy: the previous step rebuilt from last (before the
@@ -165,8 +172,8 @@ struct NormalMemory {
 // the law's first step the contact is taken as having been at delta - vn dt already: zero for a pair
 // coming from outside the force's range; spheres that start overlapped hold their initial elastic
 // energy (in e.elastic), not work done in this step (which would read as negative dissipation).
-MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeometry& g, NormalHistory& h, const NormalMemory& last, double delta,
-                                             double vn, double dt, NormalEnergyStep& e)
+MESO_INLINE NormalForce normalStepWithEnergy(
+        const PairParams& p, const PairGeometry& g, NormalHistory& h, const NormalMemory& last, double delta, double vn, double dt, NormalEnergyStep& e)
 {
 	const bool   first     = std::isnan(last.lastDelta);
 	const double prevDelta = first ? delta - vn * dt : last.lastDelta;
@@ -191,7 +198,8 @@ MESO_INLINE NormalForce normalStepWithEnergy(const PairParams& p, const PairGeom
 // (the overlap, the history after the update, the hysteretic force): nothing is stored for it, so
 // the hot path pays nothing. Loading sets deltaMax to the overlap itself; the tensile limit returns
 // -kc delta itself; both are exact equalities of what the step computed.
-#define MESO_BRANCHES(X) X(New, "new") X(Apart, "apart") X(NonContact, "nonContact") X(Loading, "loading") X(Limit, "limit") X(Unloading, "unloading") X(Tensile, "tensile")
+#define MESO_BRANCHES(X)                                                                                                                                       \
+	X(New, "new") X(Apart, "apart") X(NonContact, "nonContact") X(Loading, "loading") X(Limit, "limit") X(Unloading, "unloading") X(Tensile, "tensile")
 #define MESO_BRANCH_ENUM(e, name) e,
 enum class Branch : int { MESO_BRANCHES(MESO_BRANCH_ENUM) };
 #undef MESO_BRANCH_ENUM

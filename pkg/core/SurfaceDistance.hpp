@@ -30,7 +30,7 @@ inline Eigen::Vector3d nearestOnTriangle(const Eigen::Vector3d& p, const Eigen::
 			if ((p - e[k]).squaredNorm() < (p - e[best]).squaredNorm()) best = k;
 		return e[best];
 	}
-	const double          d1 = ab.dot(ap), d2 = ac.dot(ap);
+	const double d1 = ab.dot(ap), d2 = ac.dot(ap);
 	if (d1 <= 0 && d2 <= 0) return a;
 	const Eigen::Vector3d bp = p - b;
 	const double          d3 = ab.dot(bp), d4 = ac.dot(bp);
@@ -45,7 +45,7 @@ inline Eigen::Vector3d nearestOnTriangle(const Eigen::Vector3d& p, const Eigen::
 	const double va = d3 * d6 - d5 * d4;
 	if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b); // edge bc
 	const double denom = va + vb + vc;
-	if (!(denom > 0)) return a; // all three vertices coincide
+	if (!(denom > 0)) return a;                       // all three vertices coincide
 	return a + (vb / denom) * ab + (vc / denom) * ac; // inside the face
 }
 

@@ -13,10 +13,7 @@ using Vec3 = Eigen::Vector3d;
 
 // Cross product written out: Eigen's cross() is not always inlined, and then binds to another
 // library's instantiation through the PLT (measured: ~20 instructions per call in Law2::go()).
-MESO_HOT Vec3 cross(const Vec3& a, const Vec3& b)
-{
-	return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
-}
+MESO_HOT Vec3 cross(const Vec3& a, const Vec3& b) { return Vec3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]); }
 
 // Outcome of one step of an element: the (quasi-)force and whether it slipped.
 template <class V> struct ElementStep {
@@ -30,10 +27,7 @@ MESO_HOT double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + (a[1] *
 MESO_HOT double dot(double a, double b) { return a * b; } // the 1D element (torsion)
 
 // a x + b y, written out for the same reason (Eigen's assignment kernels stay out of line in go()).
-MESO_HOT Vec3 combine(double a, const Vec3& x, double b, const Vec3& y)
-{
-	return Vec3(a * x[0] + b * y[0], a * x[1] + b * y[1], a * x[2] + b * y[2]);
-}
+MESO_HOT Vec3   combine(double a, const Vec3& x, double b, const Vec3& y) { return Vec3(a * x[0] + b * y[0], a * x[1] + b * y[1], a * x[2] + b * y[2]); }
 MESO_HOT double combine(double a, double x, double b, double y) { return a * x + b * y; }
 
 MESO_HOT double magnitude(const Vec3& v) { return std::sqrt(dot(v, v)); }
@@ -66,7 +60,8 @@ template <class V> MESO_HOT ElementStep<V> elementStep(const ElementParams& p, V
 	out.slipped = true;
 	out.force   = trial * (p.muD * level / magnitude(trial));
 	if (p.k > 0) xi = -(out.force + p.gamma * v) / p.k;
-	else xi = xi * 0.0;
+	else
+		xi = xi * 0.0;
 	return out;
 }
 
@@ -78,9 +73,9 @@ template <class V> MESO_HOT ElementStep<V> elementStep(const ElementParams& p, V
 // t = angle/2: exactly orthogonal, no trigonometric call, rotating by 2 atan(angle/2) =
 // angle - angle^3/12 + ...
 struct ContactRotation {
-	Vec3   n, w; // current normal; (nPrev + n)/(1 + c)
-	double cosSpin = 1, sinSpin = 0;
-	bool   tilt = false, spin = false;
+	Vec3     n, w; // current normal; (nPrev + n)/(1 + c)
+	double   cosSpin = 1, sinSpin = 0;
+	bool     tilt = false, spin = false;
 	MESO_HOT ContactRotation(const Vec3& nPrev, const Vec3& nNow, double spinAngle)
 	        : n(nNow)
 	{
@@ -88,7 +83,7 @@ struct ContactRotation {
 		// exact to rounding (truncation below 1e-18 relative where used), sparing two
 		// divisions on go()'s dependency chain; larger angles divide.
 		const double c = dot(nPrev, nNow), u = 1 - c;
-		tilt           = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
+		tilt = c > -0.5; // a flip by more than 120 degrees in one step: no meaningful transport
 		if (tilt) w = (nPrev + nNow) * (u < 1e-6 ? 0.5 * (1 + 0.5 * u * (1 + 0.5 * u)) : 1 / (1 + c));
 		spin = spinAngle != 0;
 		if (spin) {
@@ -127,11 +122,11 @@ MESO_HOT ContactArms contactArms(const PairParams& p, const PairGeometry& g, dou
 // sliding, rolling and torsion elements that act), at first touch (delta = 0). invMass1/2: 1/m of
 // each body, invInertia1/2: 1/(smallest principal moment) (0 for a body that does not move). Names
 // the element that limits it in *which (normal, sliding, rolling, torsion).
-MESO_INLINE double stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1,
-                              double invInertia2, const char** which)
+MESO_INLINE double
+stableStep(const PairParams& p, const PairGeometry& g, double invMass1, double invMass2, double invInertia1, double invInertia2, const char** which)
 {
-	double best = stableStep(p.kp, p.gammaN, invMass1 + invMass2);
-	*which      = "normal";
+	double best   = stableStep(p.kp, p.gammaN, invMass1 + invMass2);
+	*which        = "normal";
 	auto consider = [&](double dt, const char* name) {
 		if (dt < best) {
 			best   = dt;
@@ -140,8 +135,10 @@ MESO_INLINE double stableStep(const PairParams& p, const PairGeometry& g, double
 	};
 	const ContactArms arms = contactArms(p, g, 0.0);
 	if (p.slidingActs) // the contact point moves with both spheres' spins too
-		consider(stableStep(p.sliding.k, p.sliding.gamma, invMass1 + invMass2 + arms.arm1 * arms.arm1 * invInertia1 + arms.arm2 * arms.arm2 * invInertia2),
-		         "sliding");
+		consider(
+		        stableStep(
+		                p.sliding.k, p.sliding.gamma, invMass1 + invMass2 + arms.arm1 * arms.arm1 * invInertia1 + arms.arm2 * arms.arm2 * invInertia2),
+		        "sliding");
 	const double invRot = arms.lever * arms.lever * (invInertia1 + invInertia2); // v_r = a' (w1 - w2), torque a' f on each
 	if (p.rollingActs) consider(stableStep(p.rolling.k, p.rolling.gamma, invRot), "rolling");
 	if (p.torsionActs) consider(stableStep(p.torsion.k, p.torsion.gamma, invRot), "torsion");
@@ -186,12 +183,12 @@ MESO_INLINE double springEnergy(const ElementParams& p, double xi) { return 0.5 
 // acting on body 1 (body 2 gets the opposite). The sliding force is not here: YADE keeps it as
 // the IPhys's shearForce, and a copy would only cost memory.
 struct TangentialState {
-	Vec3   xiT   = Vec3::Zero(); // sliding spring [m]
-	Vec3   xiR   = Vec3::Zero(); // rolling spring [m]
-	double xiO   = 0;            // torsion spring, along n [m]
-	Vec3   fR    = Vec3::Zero(); // rolling quasi-force [N]
-	double fO    = 0;            // torsion quasi-force, along n [N]
-	Vec3   nPrev = Vec3::Zero(); // normal of the previous step (zero: none yet)
+	Vec3   xiT      = Vec3::Zero();                              // sliding spring [m]
+	Vec3   xiR      = Vec3::Zero();                              // rolling spring [m]
+	double xiO      = 0;                                         // torsion spring, along n [m]
+	Vec3   fR       = Vec3::Zero();                              // rolling quasi-force [N]
+	double fO       = 0;                                         // torsion quasi-force, along n [N]
+	Vec3   nPrev    = Vec3::Zero();                              // normal of the previous step (zero: none yet)
 	bool   slidingT = false, slidingR = false, slidingO = false; // elements slipping at the last step
 	void   reset() { *this = TangentialState(); }
 };
@@ -206,8 +203,16 @@ struct TangentialEnergy {
 // flags of p). level: f_n + kc delta (clamped at 0 here). energy may be null; inlined, so that a
 // caller passing nullptr gets no bookkeeping code at all.
 // fT: the sliding force on body 1, the last step's on entry, this step's on return.
-MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, const Vec3& n, double spinAngle,
-                             double dt, double level, TangentialEnergy* energy)
+MESO_INLINE void tangentialStep(
+        const PairParams&        p,
+        TangentialState&         s,
+        Vec3&                    fT,
+        const ContactVelocities& v,
+        const Vec3&              n,
+        double                   spinAngle,
+        double                   dt,
+        double                   level,
+        TangentialEnergy*        energy)
 {
 	if (level < 0) level = 0;
 	if (dot(s.nPrev, s.nPrev) > 0) {
@@ -219,7 +224,7 @@ MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& f
 			rot.apply(s.fR);
 		}
 	}
-	s.nPrev = n;
+	s.nPrev            = n;
 	const Vec3   prevT = fT, prevR = s.fR;
 	const double prevO = s.fO;
 	double       uT0 = 0, uR0 = 0, uO0 = 0;
@@ -233,20 +238,20 @@ MESO_INLINE void tangentialStep(const PairParams& p, TangentialState& s, Vec3& f
 	if (p.torsionActs) s.fO = elementStep(p.torsion, s.xiO, v.torsion, dt, level, s.slidingO).force;
 	if (!energy) return;
 	const double uT = springEnergy(p.sliding, s.xiT), uR = springEnergy(p.rolling, s.xiR), uO = springEnergy(p.torsion, s.xiO);
-	energy->sliding  = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
-	energy->rolling  = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
-	energy->torsion  = absorbedWork(prevO, s.fO, v.torsion, dt) - (uO - uO0);
-	energy->stored   = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.torsion);
+	energy->sliding = absorbedWork(prevT, fT, v.sliding, dt) - (uT - uT0);
+	energy->rolling = absorbedWork(prevR, s.fR, v.rolling, dt) - (uR - uR0);
+	energy->torsion = absorbedWork(prevO, s.fO, v.torsion, dt) - (uO - uO0);
+	energy->stored  = uT + uR + uO + 0.5 * dt * (fT.dot(v.sliding) + s.fR.dot(v.rolling) + s.fO * v.torsion);
 }
 
 // The step at which the contact ends (delta <= 0): forces vanish; what the springs held is lost.
 MESO_INLINE void tangentialRelease(const PairParams& p, TangentialState& s, Vec3& fT, const ContactVelocities& v, double dt, TangentialEnergy* energy)
 {
 	if (energy) {
-		energy->sliding  = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
-		energy->rolling  = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
-		energy->torsion  = absorbedWork(s.fO, 0.0, v.torsion, dt) + springEnergy(p.torsion, s.xiO);
-		energy->stored   = 0;
+		energy->sliding = absorbedWork(fT, Vec3(Vec3::Zero()), v.sliding, dt) + springEnergy(p.sliding, s.xiT);
+		energy->rolling = absorbedWork(s.fR, Vec3(Vec3::Zero()), v.rolling, dt) + springEnergy(p.rolling, s.xiR);
+		energy->torsion = absorbedWork(s.fO, 0.0, v.torsion, dt) + springEnergy(p.torsion, s.xiO);
+		energy->stored  = 0;
 	}
 	s.reset();
 	fT = Vec3::Zero();

@@ -18,7 +18,7 @@ YADE_PLUGIN((MesoBackgroundDamping));
 
 void MesoBackgroundDamping::validate() const
 {
-	for (const auto& [name, value] : {std::pair<const char*, Real> {"gammaB", gammaB}, {"gammaBR", gammaBR}}) {
+	for (const auto& [name, value] : { std::pair<const char*, Real> { "gammaB", gammaB }, { "gammaBR", gammaBR } }) {
 		if (!(value >= 0) || !std::isfinite(value)) {
 			std::ostringstream msg;
 			msg << "MesoBackgroundDamping." << name << " = " << value << " is invalid: must be finite and >= 0";
@@ -102,7 +102,7 @@ bool MesoBackgroundDamping::takeLawSums(const Laws& laws)
 {
 	const long n = static_cast<long>(scene->bodies->size());
 	if (sums->step.load() != scene->iter || sums->perThread.empty() || static_cast<long>(sums->perThread[0].size()) != n) return false;
-	if (laws != sumLaws) return false; // the engines changed since the last step
+	if (laws != sumLaws) return false;   // the engines changed since the last step
 	neighbours.swap(sums->perThread[0]); // zeroed again by prepareLawSums
 	for (size_t t = 1; t < sums->perThread.size(); ++t)
 		for (long id = 0; id < n; ++id) {
@@ -149,13 +149,13 @@ void MesoBackgroundDamping::action()
 			if (static_cast<long>(v->size()) < n) v->resize(n, Vector3r::Zero());
 		if (static_cast<long>(hasPrev.size()) < n) hasPrev.resize(n, 0);
 	}
-	const BodyContainer& bodies     = *scene->bodies;
-	const Laws laws     = relative && sumInLaw ? precedingLaws() : Laws();
-	const bool fromLaw  = relative && sumInLaw && takeLawSums(laws);
+	const BodyContainer& bodies  = *scene->bodies;
+	const Laws           laws    = relative && sumInLaw ? precedingLaws() : Laws();
+	const bool           fromLaw = relative && sumInLaw && takeLawSums(laws);
 	if (relative && !fromLaw) sumNeighbours();
 	if (fromLaw) ++lawSumSteps;
-	Real                 dissipated = 0;
-	Real                 worst      = 0; // the largest drag per step against inertia, gamma dt / m (or / I)
+	Real dissipated = 0;
+	Real worst      = 0; // the largest drag per step against inertia, gamma dt / m (or / I)
 #ifdef YADE_OPENMP
 #pragma omp parallel for reduction(+ : dissipated) reduction(max : worst) schedule(static)
 #endif

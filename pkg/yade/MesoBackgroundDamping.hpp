@@ -17,16 +17,16 @@ class MesoBackgroundDamping : public GlobalEngine {
 	std::vector<char>       isSphere;
 	// sums: filled by the laws of the InteractionLoop right before this engine; sumLaws: the laws it was
 	// handed to, so that one no longer there stops adding.
-	using Laws                                      = std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>>;
-	shared_ptr<MesoNeighbourSums>                   sums = shared_ptr<MesoNeighbourSums>(new MesoNeighbourSums());
-	Laws                                            sumLaws;
-	void                                            validate() const; // throws std::invalid_argument naming the attribute and value
-	void                                            sumNeighbours();  // the engine's own pass over the interactions
-	Laws                                            precedingLaws() const;
-	bool                                            takeLawSums(const Laws& laws);              // the laws' sums of this step, if complete
-	void                                            prepareLawSums(const Laws& laws, long nBodies); // for the next step
-	Real                    validGammaB = 0, validGammaBR = 0; // the attributes as last validated (constructor, postLoad)
-	std::string             validReference;
+	using Laws                         = std::vector<shared_ptr<Law2_ScGeom_MesoPhys_Meso>>;
+	shared_ptr<MesoNeighbourSums> sums = shared_ptr<MesoNeighbourSums>(new MesoNeighbourSums());
+	Laws                          sumLaws;
+	void                          validate() const; // throws std::invalid_argument naming the attribute and value
+	void                          sumNeighbours();  // the engine's own pass over the interactions
+	Laws                          precedingLaws() const;
+	bool                          takeLawSums(const Laws& laws);                  // the laws' sums of this step, if complete
+	void                          prepareLawSums(const Laws& laws, long nBodies); // for the next step
+	Real                          validGammaB = 0, validGammaBR = 0;              // the attributes as last validated (constructor, postLoad)
+	std::string                   validReference;
 
 public:
 	void        action() override;

@@ -29,9 +29,10 @@ namespace {
 #undef MESO_FIELD
 	using pychecks::Kind;
 	// The other attributes a MesoMat validates (numericFields are numbers too).
-	const pychecks::Field otherKeywords[] = { { "density", Kind::Number },  { "young", Kind::Number },           { "frictionAngle", Kind::Number },
-		                                  { "adhesion", Kind::Text },   { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag },
-		                                  { "poisson", Kind::Number },  { "label", Kind::Text },             { "id", Kind::Integer } }; // the last three inherited, unchecked values
+	const pychecks::Field otherKeywords[]
+	        = { { "density", Kind::Number }, { "young", Kind::Number },         { "frictionAngle", Kind::Number },
+		    { "adhesion", Kind::Text },  { "k2Interpolation", Kind::Text }, { "dominant", Kind::Flag },
+		    { "poisson", Kind::Number }, { "label", Kind::Text },           { "id", Kind::Integer } }; // the last three inherited, unchecked values
 	void checkMesoMatKeywords(boost::python::dict& kw) // numbers handed on as Python floats (numpy's too)
 	{
 		for (const Field& f : numericFields)
@@ -71,16 +72,18 @@ meso::MaterialParams MesoMat::parse() const
 	m.k2Interpolation = meso::parseK2Interpolation(k2Interpolation);
 	if (!(frictionAngle >= 0 && frictionAngle < 0.5 * M_PI))
 		throw std::invalid_argument("frictionAngle = " + number(frictionAngle) + " is invalid: must lie in [0, pi/2)");
-	m.muS      = math::tan(frictionAngle);
+	m.muS = math::tan(frictionAngle);
 	if (m.muS != 0 && !(m.muS >= meso::kSmallestValue && m.muS <= meso::kLargestValue)) // named here, not as the core's muS
-		throw std::invalid_argument("frictionAngle = " + number(frictionAngle) + " is invalid: its tangent (the sliding coefficient) "
-		                            + number(m.muS) + " lies outside [1e-100, 1e100] (0 allowed)");
+		throw std::invalid_argument(
+		        "frictionAngle = " + number(frictionAngle) + " is invalid: its tangent (the sliding coefficient) " + number(m.muS)
+		        + " lies outside [1e-100, 1e100] (0 allowed)");
 	m.dominant = dominant;
 	// Not parameters of the law, but a mass of 0, < 0 or NaN (density) or a wrong time step (young,
 	// read by PWaveTimeStep) would make any run meaningless without a word.
 	if (!(std::isfinite(density) && density >= meso::kSmallestValue && density <= meso::kLargestValue))
-		throw std::invalid_argument("density = " + number(density)
-		                            + " is invalid: must be a finite number in [1e-100, 1e100] [kg/m^3] (masses and 1/m stay within floating point)");
+		throw std::invalid_argument(
+		        "density = " + number(density)
+		        + " is invalid: must be a finite number in [1e-100, 1e100] [kg/m^3] (masses and 1/m stay within floating point)");
 	if (!(std::isfinite(young) && young > 0))
 		throw std::invalid_argument("young = " + number(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law)");
 	return m;
@@ -92,7 +95,7 @@ void MesoMat::postLoad(MesoMat&)
 	try {
 		meso::MaterialParams m = parse();
 		meso::validate(m);
-		valid                = m;
+		valid = m;
 		++revisionCount;
 		validAdhesion        = adhesion;
 		validK2Interpolation = k2Interpolation;
@@ -120,7 +123,7 @@ void MesoMat::undoToValid()
 void MesoMat::updateAttrsChecked(const boost::python::dict& given)
 {
 	boost::python::dict d = boost::python::dict(given).copy(); // the caller's dict stays as it was
-	checkMesoMatKeywords(d);              // every type, before any value is set
+	checkMesoMatKeywords(d);                                   // every type, before any value is set
 	const boost::python::object cls  = boost::python::import("yade.wrapper").attr("MesoMat");
 	const boost::python::list   keys = d.keys();
 	for (long i = 0; i < boost::python::len(keys); ++i) {
@@ -137,7 +140,7 @@ void MesoMat::updateAttrsChecked(const boost::python::dict& given)
 	const int         idBefore      = id;
 	try {
 		pyUpdateAttrs(d); // ends with postLoad, which undoes all of them if a value is refused
-	} catch (...) { // anything YADE's own setters refuse half-way: undo what was set before it
+	} catch (...) {           // anything YADE's own setters refuse half-way: undo what was set before it
 		undoToValid();
 		poisson = poissonBefore;
 		label   = labelBefore;
@@ -208,8 +211,10 @@ void MesoPhys::postLoad(MesoPhys&)
 		out << getClassName() << " (a saved contact): " << name << " = " << v << " is invalid: " << rule;
 		throw std::runtime_error(out.str());
 	};
-	for (const auto& [name, v] : { std::make_pair("deltaMax", Real(history.deltaMax)), std::make_pair("delta0", Real(history.delta0)),
-	                               std::make_pair("fHysteretic", fHysteretic), std::make_pair("fViscous", fViscous) })
+	for (const auto& [name, v] : { std::make_pair("deltaMax", Real(history.deltaMax)),
+	                               std::make_pair("delta0", Real(history.delta0)),
+	                               std::make_pair("fHysteretic", fHysteretic),
+	                               std::make_pair("fViscous", fViscous) })
 		if (!std::isfinite(v)) refuse(name, v, "must be finite");
 	if (std::isinf(lastDelta)) refuse("lastDelta", lastDelta, "must be finite (NaN before the first step)");
 	if (!(std::isfinite(geometry.radius1) && geometry.radius1 >= 0)) refuse("radius1", geometry.radius1, "must be finite and >= 0");
@@ -227,21 +232,21 @@ void MesoPhys::postLoad(MesoPhys&)
 boost::python::dict MesoPhys::stateDict() const
 {
 	boost::python::dict d = pyDict(); // what YADE lists: FrictPhys's attributes
-	d["deltaMax"]        = getDeltaMax();
-	d["delta0"]          = getDelta0();
-	d["k2"]              = getK2();
-	d["deltaMaxP"]       = getDeltaMaxP();
-	d["delta0P"]         = getDelta0P();
-	d["deltaA"]          = getDeltaA();
-	d["a12"]             = getA12();
-	d["touched"]         = getTouched();
-	d["branch"]          = getBranch();
-	d["hystereticForce"] = getFh();
-	d["adhesiveForce"]   = getFadh();
-	d["viscousForce"]    = getFv();
-	d["coulombLevel"]    = getCoulombLevel();
-	d["adhesion"]        = getAdhesion();
-	d["k2Interpolation"] = getK2Interpolation();
+	d["deltaMax"]         = getDeltaMax();
+	d["delta0"]           = getDelta0();
+	d["k2"]               = getK2();
+	d["deltaMaxP"]        = getDeltaMaxP();
+	d["delta0P"]          = getDelta0P();
+	d["deltaA"]           = getDeltaA();
+	d["a12"]              = getA12();
+	d["touched"]          = getTouched();
+	d["branch"]           = getBranch();
+	d["hystereticForce"]  = getFh();
+	d["adhesiveForce"]    = getFadh();
+	d["viscousForce"]     = getFv();
+	d["coulombLevel"]     = getCoulombLevel();
+	d["adhesion"]         = getAdhesion();
+	d["k2Interpolation"]  = getK2Interpolation();
 #define MESO_DICT_ENTRY(name, def, unit, ok, rule, mix, dest, ...) d[#name] = pair().dest;
 	MESO_ALL_PARAMS(MESO_DICT_ENTRY)
 #undef MESO_DICT_ENTRY
@@ -267,7 +272,8 @@ void Ip2_MesoMat_MesoMat_MesoPhys::postLoad(Ip2_MesoMat_MesoMat_MesoPhys&)
 		sharedParams.clear();
 	}
 	if (leverArm == "reduced") leverFactor = 1;
-	else if (leverArm == "a12") leverFactor = 2;
+	else if (leverArm == "a12")
+		leverFactor = 2;
 	else {
 		const std::string bad = leverArm;
 		leverArm              = leverFactor == 2 ? "a12" : "reduced";
@@ -303,27 +309,29 @@ meso::PairParams Ip2_MesoMat_MesoMat_MesoPhys::mix(const MesoMat& m1, const Meso
 	return p;
 }
 
-shared_ptr<MesoPairParams>
-Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D)
+shared_ptr<MesoPairParams> Ip2_MesoMat_MesoMat_MesoPhys::pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D)
 {
-	const auto* mat1 = static_cast<const MesoMat*>(m1.get());
-	const auto* mat2 = static_cast<const MesoMat*>(m2.get());
+	const auto*                       mat1 = static_cast<const MesoMat*>(m1.get());
+	const auto*                       mat2 = static_cast<const MesoMat*>(m2.get());
 	const std::lock_guard<std::mutex> lock(sharedMutex);
-	Shared& s = sharedParams[std::make_tuple(mat1, mat2, geom6D)];
+	Shared&                           s = sharedParams[std::make_tuple(mat1, mat2, geom6D)];
 	if (s.params && s.revision1 == mat1->revision() && s.revision2 == mat2->revision()) return s.params;
-	s.m1        = m1;
-	s.m2        = m2;
-	s.revision1 = mat1->revision();
-	s.revision2 = mat2->revision();
-	s.params    = shared_ptr<MesoPairParams>(new MesoPairParams());
+	s.m1             = m1;
+	s.m2             = m2;
+	s.revision1      = mat1->revision();
+	s.revision2      = mat2->revision();
+	s.params         = shared_ptr<MesoPairParams>(new MesoPairParams());
 	s.params->params = mix(*mat1, *mat2, geom6D);
 	return s.params;
 }
 
-boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const
+boost::python::dict
+Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const
 {
-	const meso::PairParams p = mix(asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1"),
-	                               asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2"), pychecks::flag("rotations", rotations));
+	const meso::PairParams p
+	        = mix(asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1"),
+	              asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2"),
+	              pychecks::flag("rotations", rotations));
 	boost::python::dict d;
 #define MESO_ENTRY(name, ...) d[#name] = p.name;
 	MESO_NORMAL_PARAMS(MESO_ENTRY)
@@ -350,22 +358,28 @@ boost::python::dict Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const boost::p
 	return d;
 }
 
-Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& r1,
-                                                  const boost::python::object& r2, const boost::python::object& rot) const
+Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(
+        const boost::python::object& m1,
+        const boost::python::object& m2,
+        const boost::python::object& r1,
+        const boost::python::object& r2,
+        const boost::python::object& rot) const
 {
 	const Real radius1 = pychecks::number("radius1", r1), radius2 = pychecks::number("radius2", r2);
 	const bool rotations = pychecks::flag("rotations", rot);
-	if (!(radius1 > 0) || !std::isfinite(radius1)) throw std::invalid_argument("radius1 = " + number(radius1) + " is invalid: must be a finite number > 0 [m]");
-	if (!(radius2 >= 0) || !std::isfinite(radius2)) throw std::invalid_argument("radius2 = " + number(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
-	const MesoMat&         a = asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1");
-	const MesoMat&         b = asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2");
-	const meso::PairParams p = mix(a, b, rotations);
-	auto inverses = [](const MesoMat& m, Real r, Real& invMass, Real& invInertia) { // a free sphere; 0: fixed
-		invMass = invInertia = 0;
-		if (r <= 0) return;
-		const Real mass = 4.0 / 3.0 * M_PI * r * r * r * m.density;
-		invMass         = 1 / mass;
-		invInertia      = 1 / (0.4 * mass * r * r);
+	if (!(radius1 > 0) || !std::isfinite(radius1))
+		throw std::invalid_argument("radius1 = " + number(radius1) + " is invalid: must be a finite number > 0 [m]");
+	if (!(radius2 >= 0) || !std::isfinite(radius2))
+		throw std::invalid_argument("radius2 = " + number(radius2) + " is invalid: must be a finite number >= 0 [m] (0: a fixed wall)");
+	const MesoMat&         a        = asMeso(pychecks::instance<Material>("material1", m1, "a MesoMat"), "material1");
+	const MesoMat&         b        = asMeso(pychecks::instance<Material>("material2", m2, "a MesoMat"), "material2");
+	const meso::PairParams p        = mix(a, b, rotations);
+	auto                   inverses = [](const MesoMat& m, Real r, Real& invMass, Real& invInertia) { // a free sphere; 0: fixed
+                invMass = invInertia = 0;
+                if (r <= 0) return;
+                const Real mass = 4.0 / 3.0 * M_PI * r * r * r * m.density;
+                invMass         = 1 / mass;
+                invInertia      = 1 / (0.4 * mass * r * r);
 	};
 	Real invM1, invI1, invM2, invI2;
 	inverses(a, radius1, invM1, invI1);
@@ -376,8 +390,8 @@ Real Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor(const boost::python::object& m1
 
 void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const boost::python::object& interaction)
 {
-	const shared_ptr<Interaction> I = pychecks::instance<Interaction>("interaction", interaction, "an Interaction (O.interactions[i, j])");
-	auto* phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;
+	const shared_ptr<Interaction> I    = pychecks::instance<Interaction>("interaction", interaction, "an Interaction (O.interactions[i, j])");
+	auto*                         phys = I ? dynamic_cast<MesoPhys*>(I->phys.get()) : nullptr;
 	if (!phys || !I->geom || !phys->pairParams) throw std::invalid_argument("interaction: must be a real interaction with MesoPhys made by this Ip2");
 	Scene*                  sc = Omega::instance().getScene().get();
 	const shared_ptr<Body>& b1 = Body::byId(I->getId1(), sc);
@@ -385,10 +399,13 @@ void Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials(const boost::python::object& i
 	if (!b1 || !b2 || !dynamic_cast<MesoMat*>(b1->material.get()) || !dynamic_cast<MesoMat*>(b2->material.get()))
 		throw std::invalid_argument("interaction: both bodies must exist and carry a MesoMat");
 	shared_ptr<MesoPairParams> params = pairParams(b1->material, b2->material, dynamic_cast<const ScGeom6D*>(I->geom.get()) != nullptr);
-	const meso::PairParams&    now = params->params;
-	const meso::PairParams&    old = phys->pairParams->params;
-	for (const auto& [name, a, b] : { std::make_tuple("k1", now.k1, old.k1), std::make_tuple("kp", now.kp, old.kp), std::make_tuple("phiF", now.phiF, old.phiF) })
-		if (a != b) throw std::invalid_argument(std::string("interaction: the new materials change the pair's ") + name + ", which shapes the contact history");
+	const meso::PairParams&    now    = params->params;
+	const meso::PairParams&    old    = phys->pairParams->params;
+	for (const auto& [name, a, b] :
+	     { std::make_tuple("k1", now.k1, old.k1), std::make_tuple("kp", now.kp, old.kp), std::make_tuple("phiF", now.phiF, old.phiF) })
+		if (a != b)
+			throw std::invalid_argument(
+			        std::string("interaction: the new materials change the pair's ") + name + ", which shapes the contact history");
 	if (now.k2Interpolation != old.k2Interpolation) throw std::invalid_argument("interaction: the new materials change the pair's k2Interpolation");
 	if (now.tangential != (dynamic_cast<MesoTangentialPhys*>(phys) != nullptr))
 		throw std::invalid_argument("interaction: the new materials switch the tangential mechanisms on or off (the contact class cannot change)");
@@ -424,7 +441,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::checkDepth(const Interaction& I)
 	const auto* geom = dynamic_cast<const ScGeom*>(I.geom.get());
 	if (!geom) return;
 	const Real r1 = sphereRadius(I.getId1(), scene), r2 = sphereRadius(I.getId2(), scene);
-	const Real r  = r1 > 0 && r2 > 0 ? std::min(r1, r2) : std::max(r1, r2); // walls report 0
+	const Real r = r1 > 0 && r2 > 0 ? std::min(r1, r2) : std::max(r1, r2); // walls report 0
 	if (!(r > 0 && geom->penetrationDepth > r) || depthWarned.exchange(true)) return;
 	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: contact #" << I.getId1() << "+#" << I.getId2() << " was made with overlap "
 	          << geom->penetrationDepth << " m, deeper than the radius " << r
@@ -471,8 +488,8 @@ void Ip2_MesoMat_MesoMat_MesoPhys::checkDetection(const MesoPhys& phys, const In
 		        + "_Sphere_MesoScGeom (yade-meso; for facets also ...6D) with interactionDetectionFactor";
 	else
 		what = "Ig2_" + other + "_Sphere_ScGeom.interactionDetectionFactor";
-	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: the " << s1 << "-" << s2 << " contact #" << I.getId1() << "+#" << I.getId2()
-	          << " with '" << meso::adhesionName(phys.pair().adhesion) << "' non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
+	std::cerr << "WARNING Ip2_MesoMat_MesoMat_MesoPhys: the " << s1 << "-" << s2 << " contact #" << I.getId1() << "+#" << I.getId2() << " with '"
+	          << meso::adhesionName(phys.pair().adhesion) << "' non-contact adhesion was made already in contact (overlap " << geom->penetrationDepth
 	          << " m), so its pull-in over the range " << -phys.pair().deltaA << " m was missed. Detect pairs at that gap: " << what
 	          << " and Bo1_Sphere_Aabb.aabbEnlargeFactor >= 1 + range/radius; mesocontact.scene.set_detection() sets them "
 	          << "(call it after the engines and bodies are in place, and again after adding smaller spheres or a larger range). "
@@ -510,11 +527,11 @@ void Law2_ScGeom_MesoPhys_Meso::registerEnergies(bool tangential)
 {
 	const std::lock_guard<std::mutex> lock(energyMutex);
 	if (!normalEnergiesReady.load(std::memory_order_relaxed)) {
-		addEnergies(meso::NormalEnergyStep{});
+		addEnergies(meso::NormalEnergyStep {});
 		normalEnergiesReady.store(true, std::memory_order_release);
 	}
 	if (tangential && !tangentialEnergiesReady.load(std::memory_order_relaxed)) {
-		addEnergies(meso::TangentialEnergy{});
+		addEnergies(meso::TangentialEnergy {});
 		tangentialEnergiesReady.store(true, std::memory_order_release);
 	}
 }
@@ -561,8 +578,8 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 	// No exception can leave YADE's OpenMP loop, so the phys is dropped: the Ip2 makes a proper one
 	// at the next step (from the bodies' materials, history afresh), and the user is told.
 	if (!foreignWarned.exchange(true))
-		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2() << " has a "
-		          << ip->getClassName() << " not made by Ip2_MesoMat_MesoMat_MesoPhys (e.g. assigned from Python): it is "
+		std::cerr << "WARNING Law2_ScGeom_MesoPhys_Meso: contact #" << I->getId1() << "+#" << I->getId2() << " has a " << ip->getClassName()
+		          << " not made by Ip2_MesoMat_MesoMat_MesoPhys (e.g. assigned from Python): it is "
 		          << "dropped and remade from the bodies' materials at the next step. To change a live contact's materials, "
 		          << "use Ip2_MesoMat_MesoMat_MesoPhys.adoptMaterials. (Warned once.)" << std::endl;
 	releaseInPython(ip);
@@ -574,7 +591,7 @@ bool Law2_ScGeom_MesoPhys_Meso::dropForeign(shared_ptr<IPhys>& ip, const Interac
 struct MesoKinematics {
 	meso::ContactArms       arms;
 	meso::ContactVelocities v;
-	Real                    spin; // the frame spins with the pair's mean spin about n; against a wall, with the wall's
+	Real                    spin;   // the frame spins with the pair's mean spin about n; against a wall, with the wall's
 	Vector3r                b1, b2; // branches, set for a wall, box or facet only (spheres use arm n)
 };
 
@@ -597,7 +614,8 @@ namespace {
 	}
 
 	// Two spheres: the branches are +-arm n.
-	MESO_HOT MesoKinematics sphereSphereKinematics(const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, Real delta)
+	MESO_HOT MesoKinematics
+	sphereSphereKinematics(const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, Real delta)
 	{
 		MesoKinematics  k;
 		const Vector3r& n = geom.normal;
@@ -608,8 +626,14 @@ namespace {
 		return k;
 	}
 	// A sphere and a wall, box or facet: the branch of the wall to YADE's contact point.
-	MESO_HOT MesoKinematics
-	sphereWallKinematics(const Scene* scene, const meso::PairParams& p, const meso::PairGeometry& g, const ScGeom& geom, const PairMotion& m, const Interaction* I, Real delta)
+	MESO_HOT MesoKinematics sphereWallKinematics(
+	        const Scene*              scene,
+	        const meso::PairParams&   p,
+	        const meso::PairGeometry& g,
+	        const ScGeom&             geom,
+	        const PairMotion&         m,
+	        const Interaction*        I,
+	        Real                      delta)
 	{
 		MesoKinematics  k;
 		const Vector3r& n     = geom.normal;
@@ -625,8 +649,8 @@ namespace {
 
 	// Force fT at the contact point (sliding) and the quasi-torques of rolling and torsion, on body 1;
 	// their opposites on body 2.
-	MESO_HOT void addTangentialTorques(Scene* scene, int id1, int id2, bool spheres, const MesoKinematics& k, const Vector3r& n,
-	                                   const Vector3r& fT, const meso::TangentialState& t)
+	MESO_HOT void addTangentialTorques(
+	        Scene* scene, int id1, int id2, bool spheres, const MesoKinematics& k, const Vector3r& n, const Vector3r& fT, const meso::TangentialState& t)
 	{
 		const Vector3r quasiTorque = k.arms.lever * (t.fO * n - meso::cross(n, t.fR));
 		if (spheres) {
@@ -663,10 +687,11 @@ MESO_HOT void Law2_ScGeom_MesoPhys_Meso::tangentialStep(
 	const Real dt = scene->dt;
 	auto&      t  = phys.tangential;
 	// Without energy tracking no energy record is made or added (callgrind: fewer instructions).
-	auto advance = [&](meso::TangentialEnergy* e) __attribute__((always_inline))
+	auto advance = [&](meso::TangentialEnergy * e) __attribute__((always_inline))
 	{
 		if (delta > 0) meso::tangentialStep(p, t, fT, k.v, n, k.spin * dt, dt, level, e);
-		else if (meso::dot(t.nPrev, t.nPrev) > 0) meso::tangentialRelease(p, t, fT, k.v, dt, e);
+		else if (meso::dot(t.nPrev, t.nPrev) > 0)
+			meso::tangentialRelease(p, t, fT, k.v, dt, e);
 	};
 	if (scene->trackEnergy) {
 		if (!tangentialEnergiesReady.load(std::memory_order_acquire)) registerEnergies(true);
@@ -686,21 +711,21 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 		return dropForeign(ip, I);
 	if (static_cast<MesoPhys*>(ip.get())->owner != I) [[unlikely]]
 		if (adopt(ip, I)) return true;
-	auto* const             phys  = static_cast<MesoPhys*>(ip.get());
-	const auto&             p     = phys->pairParams->params;
-	const Real              delta = geom.penetrationDepth;
-	const Vector3r&         n     = geom.normal; // from 1 to 2
-	const PairMotion        m     = pairMotion(scene, geom, I);
+	auto* const      phys  = static_cast<MesoPhys*>(ip.get());
+	const auto&      p     = phys->pairParams->params;
+	const Real       delta = geom.penetrationDepth;
+	const Vector3r&  n     = geom.normal; // from 1 to 2
+	const PairMotion m     = pairMotion(scene, geom, I);
 	if (neighbourSums) neighbourSums->add(*I, geom, *m.s1, *m.s2, phys->geometry.radius1 > 0, phys->geometry.radius2 > 0, scene);
-	const meso::NormalForce f     = normalStep(*phys, p, delta, m.vn);
-	phys->normalForce             = f.total() * n;
-	Vector3r force1               = -phys->normalForce; // on body 1
+	const meso::NormalForce f = normalStep(*phys, p, delta, m.vn);
+	phys->normalForce         = f.total() * n;
+	Vector3r force1           = -phys->normalForce; // on body 1
 	if (p.tangential) {
-		const auto&             g       = phys->geometry;
-		const bool              spheres = g.radius1 > 0 && g.radius2 > 0;
-		const MesoKinematics    k       = spheres ? sphereSphereKinematics(p, g, geom, m, delta) : sphereWallKinematics(scene, p, g, geom, m, I, delta);
-		auto&                   tphys   = *static_cast<MesoTangentialPhys*>(phys); // the Ip2 made it so
-		Vector3r                fT      = -phys->shearForce; // YADE keeps the force sustained by body 2
+		const auto&          g       = phys->geometry;
+		const bool           spheres = g.radius1 > 0 && g.radius2 > 0;
+		const MesoKinematics k       = spheres ? sphereSphereKinematics(p, g, geom, m, delta) : sphereWallKinematics(scene, p, g, geom, m, I, delta);
+		auto&                tphys   = *static_cast<MesoTangentialPhys*>(phys); // the Ip2 made it so
+		Vector3r             fT      = -phys->shearForce;                       // YADE keeps the force sustained by body 2
 		tangentialStep(tphys, p, k, n, delta, meso::coulombLevel(p, f.hysteretic, f.viscous, delta), fT);
 		phys->shearForce = -fT;
 		if (delta > 0) {

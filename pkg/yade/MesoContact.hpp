@@ -28,9 +28,9 @@ class MesoMat : public FrictMat {
 	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
 	std::string          validAdhesion = "none", validK2Interpolation = "linear";
 	Real                 validFrictionAngle = 0, validDensity = 0, validYoung = 0; // set with valid (constructor, postLoad)
-	bool                 deferChecks   = false; // set while the constructor applies its keywords
-	meso::MaterialParams parse() const;         // throws std::invalid_argument naming the parameter
-	unsigned long        revisionCount = 0;     // counts accepted changes: contacts made before keep the parameters they had
+	bool                 deferChecks = false;                                      // set while the constructor applies its keywords
+	meso::MaterialParams parse() const;                                            // throws std::invalid_argument naming the parameter
+	unsigned long        revisionCount = 0; // counts accepted changes: contacts made before keep the parameters they had
 
 public:
 	virtual ~MesoMat() = default;
@@ -44,11 +44,11 @@ public:
 	void                        setDensity(Real d);
 	Real                        getYoung() const { return young; }
 	void                        setYoung(Real y);
-	void                 pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
-	static void          registerChecked(boost::python::object& cls); // attributes that name themselves in a type error
-	void                 updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
+	void                        pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
+	static void                 registerChecked(boost::python::object& cls);      // attributes that name themselves in a type error
+	void                        updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
 	static boost::python::tuple adhesionModes();
-	void                 undoToValid(); // every checked attribute back to its last valid value
+	void                        undoToValid(); // every checked attribute back to its last valid value
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
 		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
@@ -75,17 +75,18 @@ class MesoPairParams : public Serializable {
 public:
 	virtual ~MesoPairParams() = default;
 	void postLoad(MesoPairParams&); // a saved pair checked (meso::validatePair)
-	// clang-format off
+	                                // clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`).",
 		((meso::PairParams,params,,Attr::hidden,"The mixed parameters."))
 	);
-	// clang-format on
+	                                // clang-format on
 };
 REGISTER_SERIALIZABLE(MesoPairParams);
 
 // The pair's value of a number of MesoParamTable.hpp as a read-only MesoPhys property.
-#define MESO_PHYS_PROPERTY(name, def, unit, ok, rule, mix, dest, doc) \
-	.add_property(#name, +[](const MesoPhys& c) -> Real { return c.pair().dest; }, "The pair's :yref:`" #name "<MesoMat." #name ">` (after mixing) [" unit "].")
+#define MESO_PHYS_PROPERTY(name, def, unit, ok, rule, mix, dest, doc)                                                                                          \
+	.add_property(                                                                                                                                         \
+	        #name, +[](const MesoPhys& c) -> Real { return c.pair().dest; }, "The pair's :yref:`" #name "<MesoMat." #name ">` (after mixing) [" unit "].")
 
 // Field order matters: a bulk step streams through every contact, and the fields the normal law
 // touches each step (history, force parts, last overlap, the pair's pointer, invDeltaMaxP) lie
@@ -156,25 +157,25 @@ public:
 	Real        getCoulombLevel() const { return std::isnan(lastDelta) ? 0.0 : meso::coulombLevel(pair(), fHysteretic, fViscous, lastDelta); }
 	// The springs of a MesoTangentialPhys; zero for a contact without tangential mechanisms.
 	const meso::TangentialState& tangentialState() const;
-	Vector3r    getXiT() const { return tangentialState().xiT; }
-	Vector3r    getXiR() const { return tangentialState().xiR; }
-	Real        getXiO() const { return tangentialState().xiO; }
-	Vector3r    getFR() const { return tangentialState().fR; }
-	Real        getFO() const { return tangentialState().fO; }
-	Vector3r    getRollingTorque() const { return -getLeverArm() * tangentialState().nPrev.cross(tangentialState().fR); }
-	Vector3r    getTorsionTorque() const { return getLeverArm() * tangentialState().fO * tangentialState().nPrev; }
+	Vector3r                     getXiT() const { return tangentialState().xiT; }
+	Vector3r                     getXiR() const { return tangentialState().xiR; }
+	Real                         getXiO() const { return tangentialState().xiO; }
+	Vector3r                     getFR() const { return tangentialState().fR; }
+	Real                         getFO() const { return tangentialState().fO; }
+	Vector3r                     getRollingTorque() const { return -getLeverArm() * tangentialState().nPrev.cross(tangentialState().fR); }
+	Vector3r                     getTorsionTorque() const { return getLeverArm() * tangentialState().fO * tangentialState().nPrev; }
 	// The lever arm is a function of the overlap: recomputed here, not stored per contact.
-	Real getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
-	Real        getMuS() const { return pair().sliding.muS; }
+	Real         getLeverArm() const { return pair().tangential && !std::isnan(lastDelta) ? meso::contactArms(pair(), geometry, lastDelta).lever : 0; }
+	Real         getMuS() const { return pair().sliding.muS; }
 	meso::Branch branch() const { return pairParams ? meso::branchAfter(pair(), geometry, history, lastDelta, fHysteretic) : meso::Branch::New; }
-	std::string                 getBranch() const { return meso::branchName(branch()); }
+	std::string  getBranch() const { return meso::branchName(branch()); }
 	static boost::python::tuple branchNames();
-	int         getBranchIndex() const { return static_cast<int>(branch()); }
-	boost::python::dict stateDict() const;
-	int         byteSize() const; // of this object's class
-	int         frictPhysByteSize() const { return sizeof(FrictPhys); }
+	int                         getBranchIndex() const { return static_cast<int>(branch()); }
+	boost::python::dict         stateDict() const;
+	int                         byteSize() const; // of this object's class
+	int                         frictPhysByteSize() const { return sizeof(FrictPhys); }
 	// A loaded contact whose class does not fit its pair's mechanisms would be read as the wrong type.
-	void        postLoad(MesoPhys&);
+	void postLoad(MesoPhys&);
 	// The interaction whose law step last used this phys (not saved): a phys met on another
 	// interaction was loaded, restored or assigned from Python, and is checked once there.
 	const Interaction* owner = nullptr;
@@ -206,13 +207,13 @@ class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
 		shared_ptr<MesoPairParams> params;
 	};
 	std::map<std::tuple<const Material*, const Material*, bool>, Shared> sharedParams;
-	std::mutex                                                         sharedMutex;
+	std::mutex                                                           sharedMutex;
 	shared_ptr<MesoPairParams> pairParams(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, bool geom6D);
 	meso::PairParams           mix(const MesoMat& m1, const MesoMat& m2, bool rotations) const; // the one mixing, for contacts and Python
-	std::atomic<bool>          dtWarned{ false }, rangeWarned{ false }, depthWarned{ false };
-	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I); // updates stableDt, warns once
+	std::atomic<bool>          dtWarned { false }, rangeWarned { false }, depthWarned { false };
+	void                       checkTimeStep(const MesoPhys& phys, const Interaction& I);  // updates stableDt, warns once
 	void                       checkDetection(const MesoPhys& phys, const Interaction& I); // reversible adhesion: warns once if made in contact
-	void                       checkDepth(const Interaction& I); // warns once for a contact made deeper than a radius
+	void                       checkDepth(const Interaction& I);                           // warns once for a contact made deeper than a radius
 
 public:
 	void go(const shared_ptr<Material>& m1, const shared_ptr<Material>& m2, const shared_ptr<Interaction>& I) override;
@@ -224,8 +225,12 @@ public:
 	// The pair parameters the contacts of two materials get: the one mixing rule, for Python too.
 	// Python entry points: every argument is an object checked by name (Boost's converters name none).
 	boost::python::dict mixedParameters(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& rotations) const;
-	Real stableStepFor(const boost::python::object& m1, const boost::python::object& m2, const boost::python::object& radius1,
-	                   const boost::python::object& radius2, const boost::python::object& rotations) const;
+	Real                stableStepFor(
+	                       const boost::python::object& m1,
+	                       const boost::python::object& m2,
+	                       const boost::python::object& radius1,
+	                       const boost::python::object& radius2,
+	                       const boost::python::object& rotations) const;
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ip2_MesoMat_MesoMat_MesoPhys,IPhysFunctor,"Creates :yref:`MesoPhys` from two :yref:`MesoMat`. Unlike materials mix as follows: $k_1$, $k_p$, $k_c$, $f_a$, $k_{ca}$, $\\gamma_0$ and the tangential springs and dashpots by the harmonic mean $2xy/(x+y)$ (so a pair of equal materials has their values, and a material without a mechanism switches it off); $\\phi_f$ by the arithmetic mean; the friction coefficients $\\mu_s$, $\\mu_r$, $\\mu_o$ and $\\phi_d$ by the smaller one (as :yref:`Ip2_FrictMat_FrictMat_FrictPhys`); the adhesion mode is the weaker of the two ('none' < 'jumpIn' < 'reversible'); 'sqrt' interpolation only when both ask for it.\n\n$a_{12}=2a_1a_2/(a_1+a_2)$ from the radii of the two spheres; against a wall, box or facet $a_{12}=2a$ of the sphere. Rolling and torsion act when the geometry is :yref:`ScGeom6D`.",
 		((std::string,leverArm,"reduced",Attr::triggerPostLoad,"Lever arm $a'_{12}$ of rolling and torsion (open in [Luding2008]_): 'reduced' = $a'_1a'_2/(a'_1+a'_2)$ with $a'=a-\\delta/2$ ($a'$ of the sphere against a wall), or 'a12' = twice that. The factor 2 scales the torques of given $k_r$, $k_o$ by 4 and the limit torques by 2."))
@@ -249,19 +254,19 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	// time each register it, and the shares added under all but one index are lost. So the law
 	// registers its names once, under its own lock, before any thread adds to them.
 	std::mutex        energyMutex;
-	std::atomic<bool> normalEnergiesReady{ false }, tangentialEnergiesReady{ false };
+	std::atomic<bool> normalEnergiesReady { false }, tangentialEnergiesReady { false };
 	void              registerEnergies(bool tangential);
 	void              addEnergies(const meso::NormalEnergyStep& e);
 	void              addEnergies(const meso::TangentialEnergy& e);
-	std::atomic<bool> foreignWarned{ false };
+	std::atomic<bool> foreignWarned { false };
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
-	std::atomic<bool> borrowedWarned{ false };
+	std::atomic<bool> borrowedWarned { false };
 	bool              adopt(shared_ptr<IPhys>& ip, Interaction* I); // a phys met on this interaction for the first time
 	// The steps of go(), in MesoContact.cpp: the normal force (with its energy when tracked), then
 	// sliding, rolling and torsion from the contact's kinematics.
 	meso::NormalForce normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn);
-	void tangentialStep(MesoTangentialPhys& phys, const meso::PairParams& p, const MesoKinematics& k, const Vector3r& n, Real delta, Real level,
-	                    Vector3r& fT);
+	void
+	tangentialStep(MesoTangentialPhys& phys, const meso::PairParams& p, const MesoKinematics& k, const Vector3r& n, Real delta, Real level, Vector3r& fT);
 
 public:
 	// Set by a MesoBackgroundDamping right after this law's InteractionLoop: the law adds each contact's
@@ -287,7 +292,8 @@ REGISTER_SERIALIZABLE(Law2_ScGeom_MesoPhys_Meso);
 } // namespace yade
 
 // boost::serialization of the core structs (they live in MesoPhys as hidden attributes).
-namespace boost { namespace serialization {
+namespace boost {
+namespace serialization {
 	// Version 1 added phiD (version 0 files: recovered from the elements, which hold it as muD/muS).
 	// The tags of the flags and of the torsion element are those of the first files.
 	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int version)
@@ -296,11 +302,11 @@ namespace boost { namespace serialization {
 #define MESO_SERIALIZE(name, ...) ar& make_nvp(#name, p.name);
 		MESO_NORMAL_PARAMS(MESO_SERIALIZE)
 #undef MESO_SERIALIZE
-		ar& make_nvp("adhesion", adhesion)& make_nvp("k2Interpolation", interp);
-		ar& make_nvp("deltaA", p.deltaA)& make_nvp("delta0PerMaxP", p.delta0PerMaxP);
-		ar& make_nvp("sliding", p.sliding)& make_nvp("rolling", p.rolling)& make_nvp("twisting", p.torsion);
-		ar& make_nvp("leverFactor", p.leverFactor)& make_nvp("rollTwist", p.rollingOrTorsion)& make_nvp("tangential", p.tangential);
-		ar& make_nvp("slides", p.slidingActs)& make_nvp("rolls", p.rollingActs)& make_nvp("twists", p.torsionActs);
+		ar& make_nvp("adhesion", adhesion) & make_nvp("k2Interpolation", interp);
+		ar& make_nvp("deltaA", p.deltaA) & make_nvp("delta0PerMaxP", p.delta0PerMaxP);
+		ar& make_nvp("sliding", p.sliding) & make_nvp("rolling", p.rolling) & make_nvp("twisting", p.torsion);
+		ar& make_nvp("leverFactor", p.leverFactor) & make_nvp("rollTwist", p.rollingOrTorsion) & make_nvp("tangential", p.tangential);
+		ar& make_nvp("slides", p.slidingActs) & make_nvp("rolls", p.rollingActs) & make_nvp("twists", p.torsionActs);
 		if (version >= 1) ar& make_nvp("phiD", p.phiD);
 		else {
 			p.phiD = 1;
@@ -315,21 +321,22 @@ namespace boost { namespace serialization {
 	}
 	template <class Ar> void serialize(Ar& ar, meso::PairGeometry& g, const unsigned int)
 	{
-		ar& make_nvp("radius1", g.radius1)& make_nvp("radius2", g.radius2)& make_nvp("invDeltaMaxP", g.invDeltaMaxP);
+		ar& make_nvp("radius1", g.radius1) & make_nvp("radius2", g.radius2) & make_nvp("invDeltaMaxP", g.invDeltaMaxP);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{
-		ar& make_nvp("deltaMax", h.deltaMax)& make_nvp("delta0", h.delta0)& make_nvp("touched", h.touched);
+		ar& make_nvp("deltaMax", h.deltaMax) & make_nvp("delta0", h.delta0) & make_nvp("touched", h.touched);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::TangentialState& s, const unsigned int)
 	{
-		ar& make_nvp("xiT", s.xiT)& make_nvp("xiR", s.xiR)& make_nvp("xiO", s.xiO);
-		ar& make_nvp("fR", s.fR)& make_nvp("fO", s.fO)& make_nvp("nPrev", s.nPrev);
-		ar& make_nvp("slidingT", s.slidingT)& make_nvp("slidingR", s.slidingR)& make_nvp("slidingO", s.slidingO);
+		ar& make_nvp("xiT", s.xiT) & make_nvp("xiR", s.xiR) & make_nvp("xiO", s.xiO);
+		ar& make_nvp("fR", s.fR) & make_nvp("fO", s.fO) & make_nvp("nPrev", s.nPrev);
+		ar& make_nvp("slidingT", s.slidingT) & make_nvp("slidingR", s.slidingR) & make_nvp("slidingO", s.slidingO);
 	}
 	template <class Ar> void serialize(Ar& ar, meso::ElementParams& e, const unsigned int)
 	{
-		ar& make_nvp("k", e.k)& make_nvp("gamma", e.gamma)& make_nvp("muS", e.muS)& make_nvp("muD", e.muD);
+		ar& make_nvp("k", e.k) & make_nvp("gamma", e.gamma) & make_nvp("muS", e.muS) & make_nvp("muD", e.muD);
 	}
-}} // namespace boost::serialization
+}
+} // namespace boost::serialization
 BOOST_CLASS_VERSION(meso::PairParams, 1)

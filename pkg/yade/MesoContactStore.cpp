@@ -75,15 +75,16 @@ long MesoContactStore::restore()
 			const auto              key = std::make_pair(b1->shape->getClassIndex(), b2->shape->getClassIndex());
 			if (!made.count(key)) made[key] = madeGeometry(*ig2, b1, b2);
 			if (made[key] != k.geom->getClassName())
-				throw std::invalid_argument("restore: contact #" + std::to_string(k.id1) + "+#" + std::to_string(k.id2) + " holds a "
-				                            + k.geom->getClassName() + ", but this scene's InteractionLoop makes a " + made[key]
-				                            + " for that pair: the contacts come from a scene with other Ig2 functors; nothing was restored");
+				throw std::invalid_argument(
+				        "restore: contact #" + std::to_string(k.id1) + "+#" + std::to_string(k.id2) + " holds a " + k.geom->getClassName()
+				        + ", but this scene's InteractionLoop makes a " + made[key]
+				        + " for that pair: the contacts come from a scene with other Ig2 functors; nothing was restored");
 		}
 	}
 	for (const auto& k : kept) {
 		if (!sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue; // a body not on this rank (or no such id)
 		const shared_ptr<Interaction>& I = sc->interactions->find(k.id1, k.id2);
-		if (!I || I->geom || I->phys) continue; // no candidate pair here, or one that kept its state
+		if (!I || I->geom || I->phys) continue;   // no candidate pair here, or one that kept its state
 		if (I->getId1() != k.id1) I->swapOrder(); // allowed while it has neither
 		I->geom = k.geom;
 		I->phys = k.phys;

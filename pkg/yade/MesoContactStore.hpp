@@ -19,8 +19,8 @@ class MesoContactStore : public Serializable {
 		shared_ptr<IGeom> geom;
 		shared_ptr<IPhys> phys;
 	};
-	std::vector<Kept>      kept; // Python calls the methods one at a time (GIL held)
-	boost::weak_ptr<Scene> from; // contacts of another scene (even at the same address) are never given back
+	std::vector<Kept>      kept;                                    // Python calls the methods one at a time (GIL held)
+	boost::weak_ptr<Scene> from;                                    // contacts of another scene (even at the same address) are never given back
 	void                   keepFor(const shared_ptr<Scene>& scene); // forgets what was kept from another scene
 
 public:

@@ -38,11 +38,18 @@ struct MesoNeighbourSums {
 	// Each body of a contact in overlap adds the other's motion: a sphere's centre, or for a wall
 	// (no radius) the material point at the contact. Across a periodic boundary the other body is
 	// its image next to this one (position and velocity shifted by the cell).
-	static void sumPair(std::vector<Sums>& acc, const Interaction& I, const ScGeom& geom, const State& s1, const State& s2, bool sphere1,
-	                    bool sphere2, const Scene* scene)
+	static void
+	sumPair(std::vector<Sums>& acc,
+	        const Interaction& I,
+	        const ScGeom&      geom,
+	        const State&       s1,
+	        const State&       s2,
+	        bool               sphere1,
+	        bool               sphere2,
+	        const Scene*       scene)
 	{
 		Vector3r shift = Vector3r::Zero(), shiftVel = Vector3r::Zero(); // of body 2's image next to body 1
-		if (scene->isPeriodic && I.cellDist != Vector3i::Zero()) { // most contacts do not cross
+		if (scene->isPeriodic && I.cellDist != Vector3i::Zero()) {      // most contacts do not cross
 			shift    = scene->cell->hSize * I.cellDist.cast<Real>();
 			shiftVel = scene->cell->intrShiftVel(I.cellDist);
 		}

@@ -18,8 +18,20 @@ namespace {
 	Vector3r        fromEigen(const Eigen::Vector3d& v) { return Vector3r(v[0], v[1], v[2]); }
 
 	// Fills a made (isNew) or present geometry; the normal points from the surface to the sphere.
-	void fill(ScGeom& g, const State& s1, const State& s2, Scene* scene, const shared_ptr<Interaction>& c, const Vector3r& normal,
-	          Real overlap, Real radius1, Real radius2, const Vector3r& contactPoint, bool isNew, const Vector3r& shift2, bool noRatch)
+	void
+	fill(ScGeom&                        g,
+	     const State&                   s1,
+	     const State&                   s2,
+	     Scene*                         scene,
+	     const shared_ptr<Interaction>& c,
+	     const Vector3r&                normal,
+	     Real                           overlap,
+	     Real                           radius1,
+	     Real                           radius2,
+	     const Vector3r&                contactPoint,
+	     bool                           isNew,
+	     const Vector3r&                shift2,
+	     bool                           noRatch)
 	{
 		g.contactPoint     = contactPoint;
 		g.penetrationDepth = overlap;
@@ -57,14 +69,14 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
         const Facet& facet, Real radius, const State& s1, const State& s2, const Vector3r& shift2, bool force, const shared_ptr<Interaction>& c, bool sixD)
 {
 	// In the facet's own frame (its vertices are stored there), the centre's nearest point of the triangle.
-	const Matrix3r  toGlobal = s1.ori.toRotationMatrix();
-	const Vector3r  centre   = s2.pos + shift2;
-	const Vector3r  local    = toGlobal.transpose() * (centre - s1.pos);
-	const auto&     v        = facet.vertices;
-	const Vector3r  nearest  = fromEigen(meso::nearestOnTriangle(toEigen(local), toEigen(v[0]), toEigen(v[1]), toEigen(v[2])));
-	Vector3r        branch   = local - nearest;
-	const Real      dist     = branch.norm();
-	const Real      overlap  = radius - dist;
+	const Matrix3r toGlobal = s1.ori.toRotationMatrix();
+	const Vector3r centre   = s2.pos + shift2;
+	const Vector3r local    = toGlobal.transpose() * (centre - s1.pos);
+	const auto&    v        = facet.vertices;
+	const Vector3r nearest  = fromEigen(meso::nearestOnTriangle(toEigen(local), toEigen(v[0]), toEigen(v[1]), toEigen(v[2])));
+	Vector3r       branch   = local - nearest;
+	const Real     dist     = branch.norm();
+	const Real     overlap  = radius - dist;
 	if (!c->isReal() && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
 	if (dist > 1e-12 * radius) branch /= dist;
 	else { // the centre on the facet: the facet's own normal, toward the side the sphere came from
@@ -74,7 +86,7 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	const bool isNew = !c->geom || !fits(c->geom, sixD);
 	if (c->geom && isNew) pyrelease::releaseIfHeld(c->geom);
 	if (isNew) c->geom = sixD ? shared_ptr<ScGeom>(new ScGeom6D()) : shared_ptr<ScGeom>(new ScGeom());
-	ScGeom& g = *YADE_PTR_CAST<ScGeom>(c->geom);
+	ScGeom&        g      = *YADE_PTR_CAST<ScGeom>(c->geom);
 	const Vector3r normal = toGlobal * branch;
 	// As YADE's: the contact point halfway into the overlap.
 	fill(g, s1, s2, scene, c, normal, overlap, 2 * radius, radius, centre - (radius - 0.5 * overlap) * normal, isNew, shift2, false);
@@ -83,21 +95,36 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 }
 
 bool Ig2_Facet_Sphere_MesoScGeom::go(
-        const shared_ptr<Shape>& cm1, const shared_ptr<Shape>& cm2, const State& s1, const State& s2, const Vector3r& shift2, const bool& force,
+        const shared_ptr<Shape>&       cm1,
+        const shared_ptr<Shape>&       cm2,
+        const State&                   s1,
+        const State&                   s2,
+        const Vector3r&                shift2,
+        const bool&                    force,
         const shared_ptr<Interaction>& c)
 {
 	return geometry(static_cast<const Facet&>(*cm1), static_cast<const Sphere&>(*cm2).radius, s1, s2, shift2, force, c, false);
 }
 
 bool Ig2_Facet_Sphere_MesoScGeom6D::go(
-        const shared_ptr<Shape>& cm1, const shared_ptr<Shape>& cm2, const State& s1, const State& s2, const Vector3r& shift2, const bool& force,
+        const shared_ptr<Shape>&       cm1,
+        const shared_ptr<Shape>&       cm2,
+        const State&                   s1,
+        const State&                   s2,
+        const Vector3r&                shift2,
+        const bool&                    force,
         const shared_ptr<Interaction>& c)
 {
 	return geometry(static_cast<const Facet&>(*cm1), static_cast<const Sphere&>(*cm2).radius, s1, s2, shift2, force, c, true);
 }
 
 bool Ig2_Wall_Sphere_MesoScGeom::go(
-        const shared_ptr<Shape>& cm1, const shared_ptr<Shape>& cm2, const State& s1, const State& s2, const Vector3r& shift2, const bool& force,
+        const shared_ptr<Shape>&       cm1,
+        const shared_ptr<Shape>&       cm2,
+        const State&                   s1,
+        const State&                   s2,
+        const Vector3r&                shift2,
+        const bool&                    force,
         const shared_ptr<Interaction>& c)
 {
 	const Wall& wall   = static_cast<const Wall&>(*cm1);
@@ -109,11 +136,11 @@ bool Ig2_Wall_Sphere_MesoScGeom::go(
 			          << "makes no contacts. (Warned once.)" << std::endl;
 		return false;
 	}
-	const Real  dist   = s2.pos[ax] + shift2[ax] - s1.pos[ax]; // signed, centre to the wall's plane
-	const Real  overlap = radius - math::abs(dist);
+	const Real dist    = s2.pos[ax] + shift2[ax] - s1.pos[ax]; // signed, centre to the wall's plane
+	const Real overlap = radius - math::abs(dist);
 	if (!c->isReal() && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
-	Vector3r normal = Vector3r::Zero();
-	normal[ax]      = wall.sense == 0 ? (dist > 0 ? 1. : -1.) : (wall.sense > 0 ? 1. : -1.);
+	Vector3r normal  = Vector3r::Zero();
+	normal[ax]       = wall.sense == 0 ? (dist > 0 ? 1. : -1.) : (wall.sense > 0 ? 1. : -1.);
 	const bool isNew = !c->geom || !fits(c->geom, false);
 	if (c->geom && isNew) pyrelease::releaseIfHeld(c->geom);
 	if (isNew) c->geom = shared_ptr<ScGeom>(new ScGeom());

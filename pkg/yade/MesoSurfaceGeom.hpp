@@ -12,30 +12,31 @@
 
 namespace yade {
 
-#define MESO_SURFACE_GO                                                                                                                \
-	bool go(const shared_ptr<Shape>& cm1,                                                                                               \
-	        const shared_ptr<Shape>& cm2,                                                                                               \
-	        const State&             state1,                                                                                            \
-	        const State&             state2,                                                                                            \
-	        const Vector3r&          shift2,                                                                                            \
-	        const bool&              force,                                                                                             \
-	        const shared_ptr<Interaction>& c) override;                                                                                 \
-	bool goReverse(const shared_ptr<Shape>& cm1,                                                                                        \
-	               const shared_ptr<Shape>& cm2,                                                                                        \
-	               const State&             state1,                                                                                     \
-	               const State&             state2,                                                                                     \
-	               const Vector3r&          shift2,                                                                                     \
-	               const bool&              force,                                                                                      \
-	               const shared_ptr<Interaction>& c) override                                                                           \
-	{                                                                                                                                   \
-		c->swapOrder();                                                                                                                 \
-		return go(cm2, cm1, state2, state1, -shift2, force, c);                                                                         \
+#define MESO_SURFACE_GO                                                                                                                                        \
+	bool go(const shared_ptr<Shape>&       cm1,                                                                                                            \
+	        const shared_ptr<Shape>&       cm2,                                                                                                            \
+	        const State&                   state1,                                                                                                         \
+	        const State&                   state2,                                                                                                         \
+	        const Vector3r&                shift2,                                                                                                         \
+	        const bool&                    force,                                                                                                          \
+	        const shared_ptr<Interaction>& c) override;                                                                                                    \
+	bool goReverse(                                                                                                                                        \
+	        const shared_ptr<Shape>&       cm1,                                                                                                            \
+	        const shared_ptr<Shape>&       cm2,                                                                                                            \
+	        const State&                   state1,                                                                                                         \
+	        const State&                   state2,                                                                                                         \
+	        const Vector3r&                shift2,                                                                                                         \
+	        const bool&                    force,                                                                                                          \
+	        const shared_ptr<Interaction>& c) override                                                                                                     \
+	{                                                                                                                                                      \
+		c->swapOrder();                                                                                                                                \
+		return go(cm2, cm1, state2, state1, -shift2, force, c);                                                                                        \
 	}
 
-#define MESO_DETECTION_DOC                                                                                                             \
-	"A new interaction is made when the gap between the sphere and the surface is below (interactionDetectionFactor - 1) times "       \
-	"the sphere's radius (as Ig2_Box_Sphere_ScGeom does); 1 makes contacts only in overlap, as YADE's functor does; a finite number "   \
-	">= 1 (checked on assignment). Pair with :yref:`Bo1_Sphere_Aabb.aabbEnlargeFactor` of the same value; "                             \
+#define MESO_DETECTION_DOC                                                                                                                                     \
+	"A new interaction is made when the gap between the sphere and the surface is below (interactionDetectionFactor - 1) times "                           \
+	"the sphere's radius (as Ig2_Box_Sphere_ScGeom does); 1 makes contacts only in overlap, as YADE's functor does; a finite number "                      \
+	">= 1 (checked on assignment). Pair with :yref:`Bo1_Sphere_Aabb.aabbEnlargeFactor` of the same value; "                                                \
 	"mesocontact.scene.set_detection() sets both."
 
 // The detection factor as last accepted; an assignment outside [1, inf) is undone and refused
@@ -51,8 +52,15 @@ class Ig2_Facet_Sphere_MesoScGeom : public IGeomFunctor {
 protected:
 	// The geometry of a sphere against a facet, made (isNew) or updated; false when the pair is not
 	// in range and not yet an interaction. sixD: a new geometry is a ScGeom6D.
-	bool geometry(const Facet&, Real radius, const State& facet, const State& sphere, const Vector3r& shift2, bool force,
-	              const shared_ptr<Interaction>& c, bool sixD);
+	bool geometry(
+	        const Facet&,
+	        Real                           radius,
+	        const State&                   facet,
+	        const State&                   sphere,
+	        const Vector3r&                shift2,
+	        bool                           force,
+	        const shared_ptr<Interaction>& c,
+	        bool                           sixD);
 
 public:
 	MESO_SURFACE_GO

@@ -10,7 +10,8 @@
 #include <string>
 #include <type_traits>
 
-namespace yade { namespace pychecks {
+namespace yade {
+namespace pychecks {
 
 	enum class Kind { Number, Text, Flag, Integer };
 
@@ -62,8 +63,8 @@ namespace yade { namespace pychecks {
 		const long x        = PyLong_AsLongAndOverflow(n, &overflow);
 		Py_DECREF(n);
 		if (overflow || x < lo || x > hi)
-			throw std::invalid_argument(std::string(name) + " = " + describe(v) + " is invalid: must lie in [" + std::to_string(lo) + ", "
-			                            + std::to_string(hi) + "]");
+			throw std::invalid_argument(
+			        std::string(name) + " = " + describe(v) + " is invalid: must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 		return x;
 	}
 
@@ -103,9 +104,12 @@ namespace yade { namespace pychecks {
 	inline void check(const char* name, Kind kind, const boost::python::object& v)
 	{
 		if (kind == Kind::Number) number(name, v);
-		else if (kind == Kind::Text) text(name, v);
-		else if (kind == Kind::Integer) integer(name, v);
-		else flag(name, v);
+		else if (kind == Kind::Text)
+			text(name, v);
+		else if (kind == Kind::Integer)
+			integer(name, v);
+		else
+			flag(name, v);
 	}
 
 	struct Field {
@@ -133,8 +137,10 @@ namespace yade { namespace pychecks {
 	template <class T> T convert(const char* name, const boost::python::object& v)
 	{
 		if constexpr (std::is_same_v<T, bool>) return flag(name, v);
-		else if constexpr (std::is_same_v<T, std::string>) return text(name, v);
-		else return static_cast<T>(number(name, v));
+		else if constexpr (std::is_same_v<T, std::string>)
+			return text(name, v);
+		else
+			return static_cast<T>(number(name, v));
 	}
 
 	// The attribute of class C, set through a checked value; postLoad follows, as for YADE's
@@ -147,8 +153,11 @@ namespace yade { namespace pychecks {
                         c.*attr = convert<T>(name, v);
                         c.callPostLoad();
 		};
-		replaceProperty(cls, name, bp::make_function(get, bp::default_call_policies(), boost::mpl::vector<T, const C&>()),
-		                bp::make_function(set, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
+		replaceProperty(
+		        cls,
+		        name,
+		        bp::make_function(get, bp::default_call_policies(), boost::mpl::vector<T, const C&>()),
+		        bp::make_function(set, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
 	}
 
 	// The same for a property with its own getter and setter.
@@ -156,7 +165,12 @@ namespace yade { namespace pychecks {
 	{
 		namespace bp = boost::python;
 		auto setter  = [name, set](C& c, const bp::object& v) { (c.*set)(convert<T>(name, v)); };
-		replaceProperty(cls, name, bp::make_function(get), bp::make_function(setter, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
+		replaceProperty(
+		        cls,
+		        name,
+		        bp::make_function(get),
+		        bp::make_function(setter, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
 	}
 
-}} // namespace yade::pychecks
+}
+} // namespace yade::pychecks

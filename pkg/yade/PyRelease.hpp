@@ -7,13 +7,11 @@
 #include <boost/python/converter/shared_ptr_deleter.hpp>
 #include <Python.h>
 
-namespace yade { namespace pyrelease {
+namespace yade {
+namespace pyrelease {
 
 	// Whether Python owns this reference (boost::python made it from a Python object).
-	template <class T> bool heldByPython(const shared_ptr<T>& p)
-	{
-		return boost::get_deleter<boost::python::converter::shared_ptr_deleter>(p) != nullptr;
-	}
+	template <class T> bool heldByPython(const shared_ptr<T>& p) { return boost::get_deleter<boost::python::converter::shared_ptr_deleter>(p) != nullptr; }
 
 	template <class T> int releaseHeld(void* held)
 	{
@@ -35,4 +33,5 @@ namespace yade { namespace pyrelease {
 		if (p && heldByPython(p)) releaseInPython(p);
 	}
 
-}} // namespace yade::pyrelease
+}
+} // namespace yade::pyrelease

@@ -41,7 +41,7 @@ TEST(NearestOnTriangle, NeverFartherThanAnyPointOfTheTriangle)
 		const V p(2 * u(rng), 2 * u(rng), 2 * u(rng));
 		const V q = meso::nearestOnTriangle(p, a, b, c);
 		ASSERT_TRUE(onTriangle(q, a, b, c)) << "case " << k;
-		const double edge = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()});
+		const double edge = std::max({ (b - a).norm(), (c - a).norm(), (c - b).norm() });
 		// The grid's nearest point is at most edge/n from the true one: nothing on the grid is nearer.
 		EXPECT_LE((p - q).norm(), bruteDistance(p, a, b, c, n) + 1e-12) << "case " << k;
 		EXPECT_GE((p - q).norm(), bruteDistance(p, a, b, c, n) - edge / n) << "case " << k;
@@ -51,13 +51,13 @@ TEST(NearestOnTriangle, NeverFartherThanAnyPointOfTheTriangle)
 TEST(NearestOnTriangle, EachRegion)
 {
 	const V a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-	EXPECT_TRUE(meso::nearestOnTriangle(V(0.2, 0.3, 0.5), a, b, c).isApprox(V(0.2, 0.3, 0)));  // face
-	EXPECT_TRUE(meso::nearestOnTriangle(V(-1, -1, 0.2), a, b, c).isApprox(a));                 // vertex a
-	EXPECT_TRUE(meso::nearestOnTriangle(V(2, -0.5, 0), a, b, c).isApprox(b));                  // vertex b
-	EXPECT_TRUE(meso::nearestOnTriangle(V(-0.1, 3, 0), a, b, c).isApprox(c));                  // vertex c
-	EXPECT_TRUE(meso::nearestOnTriangle(V(0.5, -2, 1), a, b, c).isApprox(V(0.5, 0, 0)));       // edge ab
-	EXPECT_TRUE(meso::nearestOnTriangle(V(-2, 0.5, 1), a, b, c).isApprox(V(0, 0.5, 0)));       // edge ac
-	EXPECT_TRUE(meso::nearestOnTriangle(V(1, 1, -1), a, b, c).isApprox(V(0.5, 0.5, 0)));       // edge bc
+	EXPECT_TRUE(meso::nearestOnTriangle(V(0.2, 0.3, 0.5), a, b, c).isApprox(V(0.2, 0.3, 0))); // face
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-1, -1, 0.2), a, b, c).isApprox(a));                // vertex a
+	EXPECT_TRUE(meso::nearestOnTriangle(V(2, -0.5, 0), a, b, c).isApprox(b));                 // vertex b
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-0.1, 3, 0), a, b, c).isApprox(c));                 // vertex c
+	EXPECT_TRUE(meso::nearestOnTriangle(V(0.5, -2, 1), a, b, c).isApprox(V(0.5, 0, 0)));      // edge ab
+	EXPECT_TRUE(meso::nearestOnTriangle(V(-2, 0.5, 1), a, b, c).isApprox(V(0, 0.5, 0)));      // edge ac
+	EXPECT_TRUE(meso::nearestOnTriangle(V(1, 1, -1), a, b, c).isApprox(V(0.5, 0.5, 0)));      // edge bc
 }
 
 // Slivers of meshes from STL: two vertices coincident, or all three on a line. The nearest point is
@@ -66,14 +66,15 @@ TEST(NearestOnTriangle, DegenerateTrianglesAreTheirEdges)
 {
 	auto segmentDistance = [](const V& p, const V& a, const V& b) {
 		double best = 1e300;
-		for (int i = 0; i <= 100000; ++i) best = std::min(best, (p - (a + (i / 100000.0) * (b - a))).norm());
+		for (int i = 0; i <= 100000; ++i)
+			best = std::min(best, (p - (a + (i / 100000.0) * (b - a))).norm());
 		return best;
 	};
 	const V a(0, 0, 0), b(1, 0, 0), mid(0.5, 0, 0);
 	const V points[] = { V(0.3, 0.4, 0.2), V(-0.5, 0.1, 0), V(1.7, -0.2, 0.3), V(0.5, 0, 1) };
 	for (const V& p : points) {
-		for (const auto& [v0, v1, v2] : { std::make_tuple(a, a, b), std::make_tuple(a, b, b), std::make_tuple(b, a, a), std::make_tuple(a, mid, b),
-		                                  std::make_tuple(mid, b, a) }) {
+		for (const auto& [v0, v1, v2] :
+		     { std::make_tuple(a, a, b), std::make_tuple(a, b, b), std::make_tuple(b, a, a), std::make_tuple(a, mid, b), std::make_tuple(mid, b, a) }) {
 			const V q = meso::nearestOnTriangle(p, v0, v1, v2);
 			ASSERT_TRUE(q.allFinite());
 			EXPECT_NEAR(q.y(), 0, 1e-15);
