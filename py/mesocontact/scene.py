@@ -168,25 +168,69 @@ def branch_fractions():
     return {b: c / total for b, c in zip(BRANCHES, counts)} if total else {}
 
 
-# What export_contacts writes per contact (yade.export.VTKExporter.exportInteractions' `what`).
+# What export_contacts writes per contact: the field's name -> how to read it from an interaction i.
 VTK_CONTACT_FIELDS = {
-    "overlap": "i.geom.penetrationDepth", "deltaMax": "i.phys.deltaMax", "delta0": "i.phys.delta0", "k2": "i.phys.k2",
-    "branch": "i.phys.branchIndex", "normalForce": "i.phys.normalForce", "hystereticForce": "i.phys.hystereticForce",
-    "adhesiveForce": "i.phys.adhesiveForce", "viscousForce": "i.phys.viscousForce", "shearForce": "i.phys.shearForce",
-    "slidingSpring": "i.phys.slidingSpring", "rollingSpring": "i.phys.rollingSpring", "torsionSpring": "i.phys.torsionSpring",
+    "overlap": lambda i: i.geom.penetrationDepth, "deltaMax": lambda i: i.phys.deltaMax,
+    "delta0": lambda i: i.phys.delta0, "k2": lambda i: i.phys.k2, "branch": lambda i: i.phys.branchIndex,
+    "normalForce": lambda i: i.phys.normalForce, "hystereticForce": lambda i: i.phys.hystereticForce,
+    "adhesiveForce": lambda i: i.phys.adhesiveForce, "viscousForce": lambda i: i.phys.viscousForce,
+    "shearForce": lambda i: i.phys.shearForce, "slidingSpring": lambda i: i.phys.slidingSpring,
+    "rollingSpring": lambda i: i.phys.rollingSpring, "torsionSpring": lambda i: i.phys.torsionSpring,
 }
 
 
+def _contact_ends(i):
+    """The two ends of a contact's line: the two centres for two spheres; for a sphere against a
+    wall, box or facet its centre and the contact point (a surface's body position can lie far
+    from where it touches the sphere)."""
+    b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
+    p1, p2 = b1.state.pos, b2.state.pos
+    if O.periodic and any(i.cellDist):  # the second sphere's image next to the first
+        from yade import Vector3
+        p2 = p2 + O.cell.hSize * Vector3(*i.cellDist)
+    s1, s2 = (hasattr(b.shape, "radius") for b in (b1, b2))
+    if s1 and s2:
+        return p1, p2
+    return (p1, i.geom.contactPoint) if s1 else (i.geom.contactPoint, p2)
+
+
 def export_contacts(base, number=None):
-    """Writes the meso contacts' state as a legacy VTK file for ParaView (lines between the centres,
-    one cell per contact with VTK_CONTACT_FIELDS; ``branch`` is MesoPhys.branchIndex, see BRANCHES):
-    ``base``-intrs-NNNNNNNN.vtk, NNNNNNNN = number (default: the count of such files already there).
-    Every real interaction must carry a MesoPhys. Returns the file's name (None without contacts)."""
-    import glob
+    """Writes the meso contacts' state as a legacy VTK file for ParaView: one line per contact (between
+    the centres of two spheres; from a sphere's centre to the contact point against a wall, box or
+    facet), one cell each with VTK_CONTACT_FIELDS (``branch`` is MesoPhys.branchIndex, see
+    BRANCHES). The file is ``base``-intrs-NNNNNNNN.vtk with NNNNNNNN = number, by default O.iter:
+    a PyRunner calling it every N steps gives ParaView a time series, and a rerun overwrites its
+    files. Every real interaction must carry a MesoPhys. Returns the file's name (None without
+    contacts: no file)."""
     import os
-    from yade import export
+    from yade import wrapper as w
     if number is None:
-        number = len(glob.glob(f"{glob.escape(base)}-intrs-*.vtk"))
-    export.VTKExporter(base).exportInteractions(what=dict(VTK_CONTACT_FIELDS), numLabel=number)
+        number = O.iter
+    if not (isinstance(number, int) and not isinstance(number, bool) and 0 <= number < 10 ** 12):
+        raise ValueError(f"number = {number!r} is invalid: a non-negative integer (the file's number)")
+    contacts = [i for i in O.interactions if i.isReal]
+    if not contacts:
+        return None
+    foreign = [i for i in contacts if not isinstance(i.phys, w.MesoPhys)]
+    if foreign:
+        raise TypeError(f"export_contacts: interaction #{foreign[0].id1}+#{foreign[0].id2} carries "
+                        f"{type(foreign[0].phys).__name__}, not MesoPhys")
+    lines = ["# vtk DataFile Version 3.0", f"meso contacts at iteration {O.iter}", "ASCII", "DATASET POLYDATA",
+             f"POINTS {2 * len(contacts)} double"]
+    for i in contacts:
+        for p in _contact_ends(i):
+            lines.append(f"{p[0]!r} {p[1]!r} {p[2]!r}")
+    lines.append(f"LINES {len(contacts)} {3 * len(contacts)}")
+    lines += [f"2 {2 * k} {2 * k + 1}" for k in range(len(contacts))]
+    lines.append(f"CELL_DATA {len(contacts)}")
+    for name, read in VTK_CONTACT_FIELDS.items():
+        values = [read(i) for i in contacts]
+        if hasattr(values[0], "__len__"):
+            lines.append(f"VECTORS {name} double")
+            lines += [f"{v[0]!r} {v[1]!r} {v[2]!r}" for v in values]
+        else:
+            lines += [f"SCALARS {name} double 1", "LOOKUP_TABLE default"] + [repr(float(v)) for v in values]
     name = f"{base}-intrs-{number:08d}.vtk"
+    from . import outputs
+    outputs.write_atomic(name, "\n".join(lines) + "\n")
     return name if os.path.exists(name) else None

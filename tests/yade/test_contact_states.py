@@ -4,6 +4,7 @@
 # -kc delta, nonContact pull-off, gone); MesoPhys.dict() holds the meso state and the pair's
 # parameters; scene.branch_fractions() sums to 1; scene.export_contacts() writes a legacy VTK file
 # with every field of scene.VTK_CONTACT_FIELDS, one value per contact.
+import math
 import os
 import tempfile
 
@@ -49,4 +50,29 @@ with tempfile.TemporaryDirectory() as tmp:
     fields = [k for k in scene.VTK_CONTACT_FIELDS if f"\n{k} " in text or f"SCALARS {k} " in text or f"VECTORS {k} " in text]
     check(name is not None and text.startswith("# vtk DataFile") and "CELL_DATA 1" in text and len(fields) == len(scene.VTK_CONTACT_FIELDS),
           "export_contacts: a legacy VTK file with every field, one cell", f"{os.path.basename(name or '')}: {fields}")
+
+# Against a box and a facet, whose body positions lie 50 radii below and a third of the facet away:
+# each contact is drawn from the sphere's centre to its contact point (within the radius), and the
+# file is numbered O.iter, so that a second export at the same step overwrites it.
+def vtk_points(path):
+    words = open(path).read().split("POINTS ")[1].split("\n")
+    n = int(words[0].split()[0])
+    return [tuple(float(x) for x in ln.split()) for ln in words[1:1 + n]]
+
+
+for kind in ("box", "facet"):
+    s = pair.build_wall(R, 0.05, dict(law, fa=0.0, adhesion="none"), kind=kind, steps_per_contact=400)
+    while not any(i.isReal and i.geom.penetrationDepth > 0 for i in O.interactions):
+        O.step()
+    ball = O.bodies[s.ids[1]]
+    with tempfile.TemporaryDirectory() as tmp:
+        name = scene.export_contacts(os.path.join(tmp, "c"))
+        again = scene.export_contacts(os.path.join(tmp, "c"))
+        ends = vtk_points(name)
+        far = max(math.dist(p, ball.state.pos) for p in ends)
+        check(name == again and name.endswith(f"-intrs-{O.iter:08d}.vtk") and len(os.listdir(tmp)) == 1,
+              f"export_contacts ({kind}): numbered O.iter, a second export overwrites", os.listdir(tmp))
+        check(len(ends) == 2 and far <= R, f"export_contacts ({kind}): the line ends within the sphere",
+              f"farthest end {far / R:.3g} R from its centre (the {kind}'s body: "
+              f"{math.dist(O.bodies[s.ids[0]].state.pos, ball.state.pos) / R:.3g} R)")
 finish()
