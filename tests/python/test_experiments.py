@@ -63,9 +63,12 @@ class Experiments(unittest.TestCase):
                                                          [18, 0.05, 0.0]]))
             _write(os.path.join(t, "variants", "tested", "force-return-tension-Dx0.1-P480.csv"),
                    "iter,Dx,F\n10,0.0,0.0\n11,0.06,-0.05\n12,0.1,-0.02\n13,0.07,-0.01\n14,0.04,0.0\n")
-            records = [{"Dx": 0.0, "measured": {"tensile": 0.0, "open": 0.0}, "affine": {"tensile": 0.0, "open": 0.0}},
-                       {"Dx": 0.03, "measured": {"tensile": 0.02, "open": 0.1}, "affine": {"tensile": 0.3, "open": 0.05}},
-                       {"Dx": 0.06, "measured": {"tensile": 0.01, "open": 0.2}, "affine": {"tensile": 0.4, "open": 0.1}}]
+            records = [{"Dx": 0.0, "measured": {"tensile": 0.0, "open": 0.0}, "affine": {"tensile": 0.0, "open": 0.0},
+                        "max_strain_over_affine": None, "at_d0": None},
+                       {"Dx": 0.03, "measured": {"tensile": 0.02, "open": 0.1}, "affine": {"tensile": 0.3, "open": 0.05},
+                        "max_strain_over_affine": 1.5, "at_d0": 4.0},
+                       {"Dx": 0.06, "measured": {"tensile": 0.01, "open": 0.2}, "affine": {"tensile": 0.4, "open": 0.1},
+                        "max_strain_over_affine": 2.5, "at_d0": 4.0}]
             _write(os.path.join(t, "profile", "tested", "profile.json"),
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
                     "protocol": {"packing": "frictionless"}})
@@ -81,6 +84,7 @@ class Experiments(unittest.TestCase):
         (p,) = three
         self.assertEqual((p["sinter"], p["seed"], p["record_Dx"], p["max_tensile_affine"]), (0.02, 1, 0.03, 0.4))
         self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)
+        self.assertEqual((p["strain_at_peak"], p["strain_2x_from_Dx"]), (1.5, 0.06))
 
 
 if __name__ == "__main__":

@@ -25,6 +25,7 @@ import json
 import os
 import sys
 
+from .profile import persistent_from
 from .statements import load_json, read_csv
 
 E1_SAMPLES = (("chosen", 0.02), ("mid", 0.05), ("deep", 0.1))
@@ -121,7 +122,8 @@ def e3(tree):
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
                      "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
-                     "strain_2x_from_Dx": info["localization_first_Dx"]["2"],
+                     "strain_2x_from_Dx": persistent_from(info["records"], 2.0),
+                     "strain_at_peak": at_peak["max_strain_over_affine"], "strain_at_peak_where_d0": at_peak["at_d0"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
@@ -175,13 +177,15 @@ def markdown(one, two, label, three=(), five_six=()):
                   f"{_f(r['affine_F02_over_peak'], '{:.2f}')} |")
     if three:
         md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`)", "",
-               "| sample | d0 p_s/kp | seed | peak | peak Dx | F(0.2)/F_peak | local strain >= 2x affine from Dx "
-               "| tensile at the peak: measured / affine | open at the peak: measured / affine "
-               "| most on the tensile branch: measured / affine |",
-               "|---|---|---|---|---|---|---|---|---|---|"]
+               "| sample | d0 p_s/kp | seed | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
+               "(where, from the left face [d0]) | stays >= 2x affine from Dx "
+               "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
+               "| most on -kc delta: measured / affine |",
+               "|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
             md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f} | "
-                      f"{_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
+                      f"{_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['strain_at_peak'], '{:.1f}')} "
+                      f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
                       f"{r['measured']['tensile']:.1%} / {r['affine']['tensile']:.1%} | "
                       f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
                       f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")

@@ -5,15 +5,16 @@ pull's) runs to a small Dx while, every few records,
 - the particles are grouped into slabs along x by their position at the start, and each slab's
   mean displacement along x is recorded: the local strain between neighbouring slabs against
   the affine one (Dx d0 / L0 everywhere);
-- the particle contacts that existed at the start are counted on each branch of the law (detached
-  ones as 'open'), against the branches the affine stretch of the same contacts gives
+- the particle contacts that existed at the start are counted on the tensile limit -kc delta,
+  open (no overlap, or gone) or on one of the law's lines k1, kp, k2 (in compression, or in
+  tension below delta0), against the same counts for an affine stretch of the same contacts
   (affine.py: each opens by eps l nx^2 along its own k2 line, then along -kc delta).
 
 ``localization(...)`` and ``affine_branches(...)`` are plain numpy; ``run`` needs YADE and writes
 the bundle ``profile/`` (profile.csv, profile-slabs.csv, profile.json, profile.png)."""
 import numpy as np
 
-BRANCH_GROUPS = ("compressive", "tensile", "open")  # on a k1/k2/kp line, on -kc delta, no longer in overlap
+BRANCH_GROUPS = ("line", "tensile", "open")  # on a k1, kp or k2 line; on the tensile limit -kc delta; no overlap
 
 
 def affine_branches(delta, delta0, k2, kc, length, nx2, eps):
@@ -22,7 +23,7 @@ def affine_branches(delta, delta0, k2, kc, length, nx2, eps):
     d = delta - eps * length * nx2
     tensile = (d > 0) & (k2 * (d - delta0) <= -kc * d)
     n = max(1, len(d))
-    return {"compressive": float(np.sum((d > 0) & ~tensile) / n), "tensile": float(np.sum(tensile) / n),
+    return {"line": float(np.sum((d > 0) & ~tensile) / n), "tensile": float(np.sum(tensile) / n),
             "open": float(np.sum(d <= 0) / n)}
 
 
@@ -39,6 +40,22 @@ def localization(strains, affine):
     strains = np.asarray(strains, float)
     k = int(np.argmax(strains))
     return float(strains[k] / affine) if affine > 0 else None, k
+
+
+def persistent_from(records, factor):
+    """The Dx from which the largest local strain stays at least ``factor`` times the affine one
+    in every later record (None if it does not by the last): where localization sets in for good,
+    which the first crossing is not at tiny Dx, where slab noise over a tiny affine strain is large."""
+    start = None
+    for r in records:
+        m = r.get("max_strain_over_affine")
+        if m is None:
+            continue
+        if m < factor:
+            start = None
+        elif start is None:
+            start = r["Dx"]
+    return start
 
 
 def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records=5, progress=True):
@@ -73,13 +90,13 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
         if (len(t.rows) - 1) % every_records:
             return
         u = [sum(O.bodies[i].state.pos[0] - start[i] for i in m) / len(m) for m in members]
-        counts = {"compressive": 0, "tensile": 0}
+        counts = {"line": 0, "tensile": 0}
         for a, b in pairs:
             I = O.interactions[a, b] if O.interactions.has(a, b) else None
             if I is not None and I.isReal and I.geom.penetrationDepth > 0:
-                counts["tensile" if I.phys.branchIndex == tensile_index else "compressive"] += 1
+                counts["tensile" if I.phys.branchIndex == tensile_index else "line"] += 1
         measured = {k: v / len(pairs) for k, v in counts.items()}
-        measured["open"] = 1.0 - measured["compressive"] - measured["tensile"]
+        measured["open"] = 1.0 - measured["line"] - measured["tensile"]
         eps = row[1] * sample.D0 / test.L0
         strains = local_strains(x0, u)
         factor, where = localization(strains, eps) if eps > 0 else (None, None)
@@ -100,7 +117,8 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
             "definitions": {"local strain": "difference of neighbouring slabs' mean x displacement over their centres' "
                                             "distance, over the affine strain Dx d0 / L0",
                             "measured branches": "the particle contacts of the start: on -kc delta (tensile), in overlap "
-                                                 "otherwise (compressive), without overlap or gone (open)",
+                                                 "otherwise (line: k1, kp or k2, compressive or tensile), without "
+                                                 "overlap or gone (open)",
                             "affine branches": "the same contacts stretched affinely (affine.py)"}}
     with outputs.Bundle(os.path.join(root(outdir, quick), "profile")) as b:
         b.write_text("profile.csv", _csv_text(rows))
