@@ -3,6 +3,7 @@ whether they are still those files (plain Python).
 
     python3 -m mesostudies.manifest DIR --commit C --command "..." [--protocol JSON] [--date D] [--note TEXT]
     python3 -m mesostudies.manifest --check DIR      # exit 1 if a file differs from the manifest
+    python3 -m mesostudies.manifest DIR --refresh "figures redrawn by ..."   # same runs, files changed
 
 ``CAMPAIGN.json`` records the commit whose code made the runs, the command, the preparation
 (protocol), the date, the machine (processor and cores, never its name) and each file's size and
@@ -52,6 +53,18 @@ def write(folder, commit, command, protocol=None, date=None, note=None, machine_
     return manifest
 
 
+def refresh(folder, note):
+    """Lists the folder's files anew in its manifest, keeping what it records about the runs
+    (commit, command, protocol, date, machine) and adding ``note`` (what changed the files, e.g.
+    figures redrawn from the same data by a later commit). Returns the manifest."""
+    with open(os.path.join(folder, NAME)) as f:
+        old = json.load(f)
+    if not (isinstance(note, str) and note):
+        raise ValueError("note: a non-empty string (what changed the files)")
+    return write(folder, old["commit"], old["command"], old.get("protocol"), old.get("date"),
+                 "; ".join(x for x in (old.get("note"), note) if x), old.get("machine"))
+
+
 def check(folder):
     """The differences between ``folder`` and its manifest: a list of 'missing F', 'changed F',
     'unlisted F' (empty: the folder holds exactly what the manifest says)."""
@@ -77,12 +90,19 @@ def main(argv):
     p.add_argument("--date", default=None)
     p.add_argument("--note", default=None)
     p.add_argument("--machine", default=None, help="the machine that ran it (default: this one's processor and cores)")
+    p.add_argument("--refresh", default=None, metavar="NOTE",
+                   help="list the files anew, keeping the recorded commit, command, protocol, date and machine, "
+                        "and add NOTE (what changed them)")
     a = p.parse_args(argv)
     if a.check:
         problems = check(a.folder)
         print("\n".join(problems) or f"{a.folder}: as its manifest says")
         return 1 if problems else 0
     try:
+        if a.refresh is not None:
+            m = refresh(a.folder, a.refresh)
+            print(f"{a.folder}/{NAME}: {len(m['files'])} files (refreshed)")
+            return 0
         protocol = json.loads(a.protocol) if a.protocol else None
         m = write(a.folder, a.commit, a.command, protocol, a.date, a.note, a.machine)
     except (ValueError, json.JSONDecodeError) as e:

@@ -42,11 +42,13 @@ def _arrow(ax, rows, frac, colour, lw=1.4):
 
 def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False, variant=""):
     """Force-displacement cycles as the paper draws them: compressive displacement (L0 - L)/d0
-    and force > 0 (tension on the negative axes), the paper's colours, the amplitudes of the
-    paper's figure in panel (a) and any larger ones in panel (b); thick: the slower period, drawn
-    first and pale so that the thin (first period) line stays visible on it; the largest
-    amplitude drawn first so that none hides a smaller one; arrows: black on the first
-    loading, coloured on the re-loading of the last cycle; ``variant`` names a test variant in the titles."""
+    and force > 0 (tension on the negative axes; the CSVs' Dx = (L - L0)/d0 is the abscissa's
+    negative), the paper's colours, the amplitudes up to the largest the paper's figure shows in
+    one panel and any larger ones in a second (panel letters only with two panels); thick: the
+    slower period, drawn first and pale so that the thin (first period) line stays visible on it;
+    the thin lines stacked by amplitude, the smallest on top (it retraces the start that every
+    other amplitude shares); arrows: black on the first loading, coloured on the re-loading of the
+    last cycle; ``variant`` names a test variant in the titles."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -61,8 +63,9 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False, variant
             for name, info in mine:
                 slow = info["period_crossings"] != periods[0]
                 xy = [(-r[1], r[2]) for r in data[name]]
-                ax.plot([p[0] for p in xy], [p[1] for p in xy], color=colour, lw=3.2 if slow else 0.8,
-                        alpha=0.35 if slow else 1.0, zorder=2 if slow else 3,
+                rank = sorted(amplitudes, reverse=True).index(a)  # the smallest amplitude on top
+                ax.plot([p[0] for p in xy], [p[1] for p in xy], color=colour, lw=3.2 if slow else 0.9,
+                        alpha=0.35 if slow else 1.0, zorder=2 if slow else 3 + 0.1 * rank,
                         label=f"Dx = {a:g}, {info['period_crossings']:g} t_w" + (" (4x slower)" if slow else ""))
                 if not slow:  # arrows on the thin line: first loading (black), last re-loading (colour)
                     far = max(range(len(xy)), key=lambda k: abs(xy[k][0]))
@@ -74,10 +77,12 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False, variant
         ax.plot([0], [0], "ko", ms=6, zorder=7)
         ax.axhline(0, color="0.6", lw=0.5)
         ax.axvline(0, color="0.6", lw=0.5)
-        ax.set_xlabel("compression (L0 - L)/d0  [tension < 0]")
+        ax.set_xlabel("(L0 - L)/d0 = -Dx  [tension < 0]")
         ax.set_ylabel("F/(kp d0)  [compressive > 0]")
-        what = "the paper's amplitudes" if n == 0 else "a larger amplitude than the paper's"
-        ax.set_title(f"({chr(97 + n)}) {mode} cycles, {what}" + (f", {variant}" if variant else "")
+        what = (f"amplitudes up to {PAPER_LARGEST[mode]:g}, the largest the paper draws" if n == 0
+                else "beyond the paper's largest amplitude")
+        letter = f"({chr(97 + n)}) " if len(panels) > 1 else ""
+        ax.set_title(f"{letter}{mode} cycles, {what}" + (f", {variant}" if variant else "")
                      + (" (quick mode)" if quick else ""), fontsize=10)
         ax.legend(fontsize=6.5, ncol=2)
     fig.tight_layout()
@@ -103,20 +108,31 @@ def plot_compression(rows, snaps, png):
 
 
 def plot_pull(rows, events, png):
+    """The pull's force against Dx: (a) the whole pull with the crack events and the snapshots'
+    marks, lettered as the snapshot panels; (b) its first 0.5 d0, where the tension branch lies
+    (on the whole pull's axis it is a spike at 0)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
-    ax.plot([r[1] for r in rows], [r[2] for r in rows], lw=0.8)
-    for key, style in (("first_gap_Dx", "g--"), ("see_through_Dx", "b--"), ("last_contact_Dx", "r--")):
-        if events[key] is not None:
-            ax.axvline(events[key], color=style[0], ls="--", lw=0.8, label=key.replace("_", " "))
-    for s in events["snapshots"]:
-        ax.plot(s["Dx"], s["F"], "ko", ms=3)
-    ax.set_xlabel("Dx = (L - L0)/d0")
-    ax.set_ylabel("F/(kp d0)  [compressive > 0]")
-    if ax.get_legend_handles_labels()[0]:  # no empty box when no event was reached (or taken)
-        ax.legend(fontsize=8)
+    fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.0))
+    for n, (ax, until) in enumerate(zip(axes, (None, 0.5))):
+        shown = [r for r in rows if until is None or r[1] <= until]
+        ax.plot([r[1] for r in shown], [r[2] for r in shown], lw=0.8)
+        for key, style in (("first_gap_Dx", "g--"), ("see_through_Dx", "b--"), ("last_contact_Dx", "r--")):
+            if events[key] is not None and (until is None or events[key] <= until):
+                ax.axvline(events[key], color=style[0], ls="--", lw=0.8, label=key.replace("_", " "))
+        for k, snap in enumerate(events["snapshots"]):
+            if until is None or snap["Dx"] <= until:
+                ax.plot(snap["Dx"], snap["F"], "ko", ms=3)
+                ax.annotate(f"({chr(97 + k)})", (snap["Dx"], snap["F"]), textcoords="offset points", xytext=(3, 5),
+                            fontsize=8)
+        ax.axhline(0, color="0.6", lw=0.5)
+        ax.set_xlabel("Dx = (L - L0)/d0  [tension > 0]")
+        ax.set_ylabel("F/(kp d0)  [compressive > 0]")
+        ax.set_title("(a) the pull to rupture" if n == 0 else f"(b) its first {until:g} d0: the tension branch",
+                     fontsize=10)
+        if ax.get_legend_handles_labels()[0]:  # no empty box when no event was reached (or taken)
+            ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(png, dpi=130)
     plt.close(fig)
