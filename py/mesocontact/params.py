@@ -192,6 +192,8 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
         positive("kca", kca)
     if adhesion not in ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {ADHESION_MODES}")
+    if fa > 0 and adhesion == "none":  # MesoMat refuses this pair of values: so does the fit, before it runs
+        raise ValueError("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0")
     if limit not in (None, True, False):
         raise ValueError(f"limit = {limit!r} is invalid: None, True or False")
     radius2 = radius if radius2 is None else radius2

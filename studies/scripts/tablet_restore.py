@@ -8,5 +8,12 @@ from mesostudies.tablet import campaign
 
 batch.help_requested(sys.argv[1:], sys.argv[0], nargs=2)
 
-names = campaign.restore(sys.argv[1], sys.argv[2])
-print(f"restored {len(names)} runs into {sys.argv[2]}/runs: {', '.join(names)}", flush=True)
+try:
+    names = campaign.restore(sys.argv[1], sys.argv[2])
+except (ValueError, OSError) as e:  # a missing DOCS, DOCS = OUT, an unwritable OUT: the reason, not a traceback
+    sys.exit(f"tablet_restore.py: {e}")
+if not names:
+    print(f"restored no runs: {sys.argv[1]} holds no run JSON with its CSV, or every run is already in {sys.argv[2]}/runs",
+          flush=True)
+else:
+    print(f"restored {len(names)} runs into {sys.argv[2]}/runs: {', '.join(names)}", flush=True)

@@ -114,6 +114,9 @@ class MaterialFrom(unittest.TestCase):
                     params.material_from(**dict(base, **{key: value}))
         with self.assertRaisesRegex(ValueError, "phiF, plastic_overlap"):
             params.material_from(**dict(base, plastic_overlap=1e-5))
+        # what MesoMat refuses (fa without a mode) is refused here too, before the fit
+        with self.assertRaisesRegex(ValueError, "^adhesion = 'none' is invalid with fa > 0"):
+            params.material_from(**dict(base, fa=1e-6, adhesion="none"))
         # a contact far too short for any k1 and kp with this e
         with self.assertRaisesRegex(ValueError, "contact_time"):
             params.material_from(**dict(base, contact_time=t * 1e-9))

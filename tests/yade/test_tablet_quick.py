@@ -209,6 +209,13 @@ try:
 except ValueError as e:
     check(name in str(e), f"restore refuses a tampered CSV: {e}")
 
+for bad_docs, bad_out, says in ((os.path.join(docs, "missing"), out, "docsdir"), (docs, docs, "outdir")):
+    try:
+        campaign.restore(bad_docs, bad_out)
+        check(False, f"restore refuses {says}")
+    except ValueError as e:
+        check(str(e).startswith(says), f"restore refuses a missing folder or itself as the target: {e}")
+
 # Every run records the preparation it was made from; a file without it is of the first protocol.
 protos = [info["protocol"] for m in summaries for info in summaries[m]["runs"].values()]
 check(all(p == campaign.PROTOCOL for p in protos) and campaign.protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},

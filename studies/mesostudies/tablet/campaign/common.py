@@ -107,3 +107,13 @@ def cycle_peaks(mode, rows, steps_per_cycle):
     return [pick(cycles[k]) for k in sorted(cycles)]
 
 
+def stroke_peaks(rows, turns):
+    """The most tensile force (min F) of each cycle of uniaxial.Test.force_cycles: a cycle ends
+    where its return stroke does (every second turn)."""
+    ends = [t[0] for t in turns[1::2]]
+    peaks, k = [], 0
+    for end in ends:
+        cycle = [r[2] for r in rows[k:] if r[0] <= end]
+        k += len(cycle)
+        peaks.append(min(cycle) if cycle else None)
+    return peaks

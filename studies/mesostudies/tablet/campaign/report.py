@@ -14,7 +14,7 @@ from .. import sample
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS,
-    TENSION_AMPLITUDES, cycle_peaks, prepare, read_csv, root, run_dir,
+    TENSION_AMPLITUDES, cycle_peaks, stroke_peaks, prepare, read_csv, root, run_dir,
 )
 
 
@@ -233,6 +233,10 @@ def restore(docsdir, outdir):
     hours. A run is restored only if the peaks recomputed from its CSV equal the JSON's; a
     complete bundle already there is left as it is. Returns the names restored."""
     import glob
+    if not os.path.isdir(docsdir):
+        raise ValueError(f"docsdir = {docsdir!r} is invalid: not a directory (the committed runs' folder)")
+    if os.path.realpath(docsdir) == os.path.realpath(outdir):
+        raise ValueError(f"outdir = {outdir!r} is invalid: the committed folder itself (restore into a results tree)")
     restored = []
     for js in sorted(glob.glob(os.path.join(docsdir, "*.json"))):
         name = os.path.basename(js)[:-5]
@@ -245,7 +249,8 @@ def restore(docsdir, outdir):
         if _out.complete(where):
             continue
         rows = read_csv(csv_path)
-        if cycle_peaks(info["mode"], rows, info["steps_per_cycle"]) != info["peaks"]:
+        peaks = stroke_peaks(rows, info["turns"]) if info.get("turns") else cycle_peaks(info["mode"], rows, info["steps_per_cycle"])
+        if peaks != info["peaks"]:
             raise ValueError(f"restore: {csv_path} does not give the peaks of {js}")
         with _out.Bundle(where) as b:
             b.copy_from(docsdir, only=(name + ".csv", name + ".json"))

@@ -17,7 +17,7 @@ from .. import sample
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FULL, GAP_AREA, PERIODS, PROTOCOL,
-    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, protocol_of, cycle_peaks,
+    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, protocol_of, cycle_peaks, stroke_peaks,
     is_master, mpy as _mpy, prepare, read_csv, root, run_dir, run_name,
 )
 from .plots import plot_compression, plot_cycles, plot_pull, plot_rates
@@ -119,18 +119,6 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     if progress:
         print(f"{name}: {info['wall_clock_s']:.0f} s, peaks {['%.4g' % x for x in info['peaks']]}", flush=True)
     return info, rows
-
-
-def stroke_peaks(rows, turns):
-    """The most tensile force (min F) of each cycle of uniaxial.Test.force_cycles: a cycle ends
-    where its return stroke does (every second turn)."""
-    ends = [t[0] for t in turns[1::2]]
-    peaks, k = [], 0
-    for end in ends:
-        cycle = [r[2] for r in rows[k:] if r[0] <= end]
-        k += len(cycle)
-        peaks.append(min(cycle) if cycle else None)
-    return peaks
 
 
 def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None,
