@@ -61,9 +61,10 @@ class Layout(unittest.TestCase):
 
     def test_a_study_runs_as_a_script(self):
         with tempfile.TemporaryDirectory() as top:
-            d = os.path.join(top, "chosen")  # beside ../factors, which the statements' reasons read
+            d = os.path.join(top, "chosen")  # beside ../factors and ../branch, which the statements' reasons read
             os.mkdir(d)
             os.symlink(DOCS.parent / "factors", os.path.join(top, "factors"))
+            os.symlink(DOCS.parent / "branch", os.path.join(top, "branch"))
             for f in os.listdir(DOCS):
                 if f.endswith((".json", ".csv")) and not f.endswith("-branches.csv") and f != "statements.json":
                     os.symlink(DOCS / f, os.path.join(d, f))
