@@ -49,7 +49,7 @@ class TabletDocs(unittest.TestCase):
 
     def generated(self):
         return "".join(_read(*p) for p in (("chosen", "summary.md"), ("chosen", "statements.md"),
-                                           ("chosen", "peaks.md"), ("factors", "factors.md")))
+                                           ("chosen", "peaks.md"), ("factors", "factors.md"), ("branch", "experiments.md")))
 
     def test_readme_quotes_generated_numbers(self):
         self.assertEqual(missing_numbers(_prose("README.md"), self.generated()), [],
@@ -62,7 +62,9 @@ class TabletDocs(unittest.TestCase):
 
     def test_experiments_are_generated(self):
         from mesostudies.tablet import experiments
-        self.assertEqual(experiments.markdown(experiments.e1(DOCS), experiments.e2(DOCS), "campaigns/tablet"),
+        one = experiments.e1(DOCS)
+        self.assertEqual(experiments.markdown(one, experiments.e2(DOCS), "campaigns/tablet", experiments.e3(DOCS),
+                                              experiments.e56(DOCS, one)),
                          _read("branch", "experiments.md"),
                          "branch/experiments.md differs from what python3 -m mesostudies.tablet.experiments writes")
 
