@@ -256,12 +256,44 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
         found = [x for x in found if reached[tuple(x)] == limit]
     if not found:
         raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: no k1, kp reproduce both at "
-                         f"impact_speed = {impact_speed!r}" + ("" if limit is None else f" with limit={limit!r}"))
+                         f"impact_speed = {impact_speed!r}" + ("" if limit is None else f" with limit={limit!r}")
+                         + _why_not(grid, restitution, contact_time))
     if len(found) > 1:
         alts = "; ".join(f"k1 = {law(x)['k1']:.4g}, kp = {law(x)['kp']:.4g}, kc = {law(x)['kc']:.4g} "
                          f"({'beyond' if reached[tuple(x)] else 'below'} the plastic limit)" for x in found)
         raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: {len(found)} materials reproduce "
                          f"them at impact_speed = {impact_speed!r} ({alts}); say which with limit=True or limit=False")
     p = law(found[0])
-    return dict(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=phiF, fa=fa, kca=p["kca"], adhesion=p["adhesion"],
-                k2Interpolation=interpolation, gammaN=0.0, density=density)
+    out = FittedMaterial(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=phiF, fa=fa, kca=p["kca"], adhesion=p["adhesion"],
+                         k2Interpolation=interpolation, gammaN=0.0, density=density)
+    out.stable_step = 2.0 * math.sqrt(m_r / p["kp"])
+    out.report = (f"kp/k1 = {p['kp'] / p['k1']:.3g} (kp = {p['kp']:.4g} N/m); the stiffest element of this pair, kp on "
+                  f"the reduced mass, is stable for dt < 2 sqrt(m_r/kp) = {out.stable_step:.3g} s: a scene of these "
+                  f"spheres runs at scene.time_step() = 0.05 of that or less, {contact_time / (0.05 * out.stable_step):.3g} "
+                  "steps per contact")
+    return out
+
+
+class FittedMaterial(dict):
+    """material_from's result: the MesoMat keywords (use it as ``MesoMat(**m)``), with ``report``
+    (kp/k1 and what kp costs in time step) and ``stable_step`` (2 sqrt(m_r/kp) of the fitted pair
+    [s], the normal element's leapfrog bound without damping)."""
+    report = ""
+    stable_step = math.inf
+
+
+def _why_not(grid, restitution, contact_time):
+    """What a failed fit could not meet, from its grid of misfits (e - target, t/target - 1):
+    the contact times at which the target e is reached, or the range of e there is."""
+    cells = [c for row in grid for c in row if c is not None]
+    if not cells:
+        return ": every trial material sticks at this speed (raise impact_speed, or lower fa / kc)"
+    es = [restitution + c[0] for c in cells]
+    if not min(es) <= restitution <= max(es):
+        return (f": the materials stiff enough for contacts that short give e in [{min(es):.3g}, {max(es):.3g}] at this "
+                "speed with these phiF and adhesion (relax restitution or contact_time, or change phiF, the adhesion "
+                "or the speed)")
+    near = sorted(cells, key=lambda c: abs(c[0]))[:max(3, len(cells) // 50)]  # the trial materials closest to e
+    times = [contact_time * (1 + c[1]) for c in near]
+    return (f": the materials that give e = {restitution!r} last {min(times):.3g} to {max(times):.3g} s in contact "
+            f"(relax contact_time towards that range, or change phiF or the adhesion, which shift it)")

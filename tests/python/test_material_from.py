@@ -102,6 +102,15 @@ class MaterialFrom(unittest.TestCase):
         self.assertAlmostEqual(theory.pair_collision(*args).e, o.e, places=9)
         self.assertAlmostEqual(theory.contact_duration(*args) / t, 1.0, places=9)
 
+    def test_report_says_what_kp_costs(self):
+        m = params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-5, phiF=0.1)
+        mass = 2000 * 4 / 3 * math.pi * 0.5e-3 ** 3  # equal spheres: m_r = m/2
+        dt = 2 * math.sqrt(0.5 * mass / m["kp"])
+        self.assertAlmostEqual(m.stable_step / dt, 1.0, places=12)
+        self.assertIn(f"kp/k1 = {m['kp'] / m['k1']:.3g}", m.report)
+        self.assertIn(f"{dt:.3g} s", m.report)
+        self.assertEqual(set(m), {"k1", "kp", "kc", "phiF", "fa", "kca", "adhesion", "k2Interpolation", "gammaN", "density"})
+
     def test_bad_input_named(self):
         o, t, _ = self.measured(0.05)
         base = dict(radius=R, density=RHO, impact_speed=0.05, restitution=o.e, contact_time=t, phiF=0.1)
@@ -114,6 +123,9 @@ class MaterialFrom(unittest.TestCase):
                     params.material_from(**dict(base, **{key: value}))
         with self.assertRaisesRegex(ValueError, "phiF, plastic_overlap"):
             params.material_from(**dict(base, plastic_overlap=1e-5))
+        # a contact far too short for e = 0.5 at 0.2 m/s: the message gives the e those materials reach and what to relax
+        with self.assertRaisesRegex(ValueError, r"give e in \[0\.\d+, 1\] at this speed .*relax restitution or contact_time"):
+            params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-7, phiF=0.1)
         # what MesoMat refuses (fa without a mode) is refused here too, before the fit
         with self.assertRaisesRegex(ValueError, "^adhesion = 'none' is invalid with fa > 0"):
             params.material_from(**dict(base, fa=1e-6, adhesion="none"))
