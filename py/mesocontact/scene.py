@@ -154,6 +154,34 @@ def time_step(safety=0.05):
 
 
 
+def contact_cohesion():
+    """What holds the scene's meso contacts together now: per contact in overlap, the largest pull
+    it resists if pulled apart slowly from its present state, kc k2 delta0 / (k2 + kc) (where its
+    k2 line meets the tensile limit -kc delta; 0 for a contact that has not been loaded past
+    elastic, delta0 = 0) plus fa of its non-contact adhesion when it acts in contact. In a bed
+    loaded by gravity alone the contacts stay shallow (delta0 far below the plastic limit), so
+    this is far below the pull_off_force that params.material_from fits, which is that of a
+    contact loaded to the plastic limit: the cohesion comes from fa. Returns {'contacts', 'mean',
+    'median', 'max', 'fa_share' (the share of the summed cohesion that fa gives)} [N]
+    ({'contacts': 0} without contacts in overlap)."""
+    from yade import wrapper as w
+    contact, fa = [], []
+    for i in O.interactions:
+        if not (i.isReal and isinstance(i.phys, w.MesoPhys) and i.geom.penetrationDepth > 0):
+            continue
+        p = i.phys
+        k2, kc, d0 = p.k2, p.kc, p.delta0
+        contact.append(kc * k2 * d0 / (k2 + kc) if kc > 0 and d0 > 0 else 0.0)
+        acts = p.adhesion == "reversible" or (p.adhesion == "jumpIn" and p.touched)
+        fa.append(p.fa if acts else 0.0)
+    if not contact:
+        return {"contacts": 0}
+    total = sorted(c + f for c, f in zip(contact, fa))
+    n = len(total)
+    return {"contacts": n, "mean": sum(total) / n, "median": 0.5 * (total[(n - 1) // 2] + total[n // 2]),
+            "max": total[-1], "fa_share": sum(fa) / sum(total) if sum(total) > 0 else None}
+
+
 def branch_fractions():
     """The fraction of the scene's meso contacts (real interactions with a MesoPhys) on each
     branch of the law at the last step: a dict over BRANCHES that sums to 1 ({} without contacts).
