@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace meso {
 
@@ -146,6 +147,23 @@ namespace {
 	double harmonic(double x, double y) { return harmonicMean(x, y); }
 	double arithmetic(double x, double y) { return 0.5 * (x + y); }
 	double smaller(double x, double y) { return std::min(x, y); }
+}
+
+std::string firstDifference(const PairParams& a, const PairParams& b)
+{
+#define MESO_DIFF(name, def, unit, ok, rule, mix, dest, ...)                                                                                                   \
+	if (a.dest != b.dest) return #name;
+	MESO_ALL_PARAMS(MESO_DIFF)
+#undef MESO_DIFF
+	if (a.adhesion != b.adhesion) return "adhesion";
+	if (a.k2Interpolation != b.k2Interpolation) return "k2Interpolation";
+	for (const auto& [name, x, y] : { std::make_tuple("sliding", &a.sliding, &b.sliding),
+	                                  std::make_tuple("rolling", &a.rolling, &b.rolling),
+	                                  std::make_tuple("torsion", &a.torsion, &b.torsion) })
+		if (x->k != y->k || x->gamma != y->gamma || x->muS != y->muS || x->muD != y->muD) return std::string(name) + " element";
+	if (a.tangential != b.tangential || a.rollingOrTorsion != b.rollingOrTorsion) return "the tangential mechanisms";
+	if (a.leverFactor != b.leverFactor) return "leverFactor";
+	return "";
 }
 
 PairParams mixPair(const MaterialParams& mat1, const MaterialParams& mat2)

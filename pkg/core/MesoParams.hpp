@@ -111,6 +111,10 @@ struct PairParams {
 	double phiD = 1; // dynamic/static ratio of the Coulomb limits (the elements' muD already hold it) [-]
 };
 
+// The first parameter in which two pairs' parameters differ ("" when they are the same): what a
+// contact carries against what its bodies' materials give it now.
+std::string firstDifference(const PairParams& a, const PairParams& b);
+
 // What one contact adds to its pair's parameters: the radii and the limit overlap, which scales with a12.
 struct PairGeometry {
 	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]; first: the normal law reads only this

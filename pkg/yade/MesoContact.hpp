@@ -199,6 +199,7 @@ public:
 REGISTER_SERIALIZABLE(MesoTangentialPhys);
 
 class Ip2_MesoMat_MesoMat_MesoPhys : public IPhysFunctor {
+	friend class MesoContactStore; // checks restored contacts against mix() of their bodies' materials
 	// One MesoPairParams per (material, material, ScGeom6D or not), made on first use; the Ip2 runs
 	// inside YADE's OpenMP loop, hence the mutex (taken once per new contact, not per step).
 	struct Shared {

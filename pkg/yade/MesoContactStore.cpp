@@ -1,6 +1,7 @@
 // The contact store (MesoContactStore.hpp): kept by body ids, given back to pairs made anew, sent
 // as bytes of the scene's own archive. Any law's contacts are kept, not only this one's.
 #include "MesoContactStore.hpp"
+#include "MesoContact.hpp"
 #include <core/BodyContainer.hpp>
 #include <core/InteractionContainer.hpp>
 #include <core/InteractionLoop.hpp>
@@ -47,6 +48,15 @@ namespace {
 			if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get())) return loop->geomDispatcher.get();
 		return nullptr;
 	}
+	// The meso Ip2 functor of the scene's interaction loop (null without one).
+	Ip2_MesoMat_MesoMat_MesoPhys* mesoPhysOf(const Scene& sc)
+	{
+		for (const auto& e : sc.engines)
+			if (const auto* loop = dynamic_cast<const InteractionLoop*>(e.get()))
+				for (const auto& f : loop->physDispatcher->functors)
+					if (auto* ip2 = dynamic_cast<Ip2_MesoMat_MesoMat_MesoPhys*>(f.get())) return ip2;
+		return nullptr;
+	}
 	// The class of geometry the scene's loop makes for this pair, made once on a scratch interaction
 	// (a restored geometry of another class would be cast to the wrong type by the functor).
 	std::string madeGeometry(IGeomDispatcher& ig2, const shared_ptr<Body>& b1, const shared_ptr<Body>& b2)
@@ -66,6 +76,22 @@ long MesoContactStore::restore()
 	long   restored = 0;
 	if (from.lock().get() != sc) kept.clear();
 	// Checked before any is given back: a refused restore changes nothing and keeps the contacts.
+	if (Ip2_MesoMat_MesoMat_MesoPhys* ip2 = mesoPhysOf(*sc)) {
+		for (const auto& k : kept) {
+			const auto* phys = dynamic_cast<const MesoPhys*>(k.phys.get());
+			if (!phys || !phys->pairParams || !sc->bodies->exists(k.id1) || !sc->bodies->exists(k.id2)) continue;
+			const auto* m1 = dynamic_cast<const MesoMat*>(Body::byId(k.id1, sc)->material.get());
+			const auto* m2 = dynamic_cast<const MesoMat*>(Body::byId(k.id2, sc)->material.get());
+			if (!m1 || !m2) continue;
+			const std::string differs
+			        = meso::firstDifference(ip2->mix(*m1, *m2, dynamic_cast<const ScGeom6D*>(k.geom.get()) != nullptr), phys->pair());
+			if (!differs.empty())
+				throw std::invalid_argument(
+				        "restore: contact #" + std::to_string(k.id1) + "+#" + std::to_string(k.id2) + " carries another " + differs
+				        + " than its bodies' materials give that pair here: the contacts come from a scene with other materials "
+				          "(give the bodies those materials, or let the pairs start afresh); nothing was restored");
+		}
+	}
 	if (IGeomDispatcher* ig2 = geometryOf(*sc)) {
 		std::map<std::pair<int, int>, std::string> made; // by shape classes: one probe each
 		for (const auto& k : kept) {

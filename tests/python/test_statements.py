@@ -14,7 +14,7 @@ class TestStatements(unittest.TestCase):
     def test_committed_campaign(self):
         chosen = os.path.join(DOCS, "chosen")
         items = statements.statements(chosen)
-        self.assertEqual(len(items), 26)
+        self.assertEqual(len(items), 27)
         self.assertTrue(all(s["verdict"] in ("✓", "◐", "✗", "–") for s in items))
         with open(os.path.join(chosen, "tension-Dx0.2-P480.json")) as f:
             L0 = json.load(f)["L0"]
@@ -28,7 +28,7 @@ class TestStatements(unittest.TestCase):
         sd = (sum((e - mean) ** 2 for e in errs) / (len(errs) - 1)) ** 0.5
         err = abs(L0 / 0.115 - 1)
         expect = ("◐" if 0.01 - err < sd else "✓") if err <= 0.01 else ("◐" if err <= 0.05 else "✗")
-        self.assertEqual((len(errs), first["verdict"]), (6, expect))
+        self.assertEqual((len(errs), first["verdict"]), (6, "✓" if abs(mean) <= sd else expect))
         with open(os.path.join(chosen, "fig17.json")) as f:
             last = json.load(f)["last_contact_Dx"]
         row = next(s for s in items if s["paper"].startswith("the contact is lost only at Dx ~ 8"))
@@ -38,7 +38,7 @@ class TestStatements(unittest.TestCase):
                                                                    r["drag"]) == ("frictionless", "sinter", 0.1, 0.02, "contacts")]
         m = sum(chains) / len(chains)
         sd = (sum((c - m) ** 2 for c in chains) / (len(chains) - 1)) ** 0.5
-        self.assertEqual(row["verdict"], "✓" if 6 <= last <= 10 else ("◐" if abs(8 - m) <= sd else "✗"))
+        self.assertEqual(row["verdict"], "✓" if 8 / 1.5 <= last <= 12 else ("◐" if abs(8 - m) <= sd else "✗"))
 
     def test_a_statement_without_its_file_is_not_judged(self):
         with tempfile.TemporaryDirectory() as top:  # the chosen campaign without roughness.json, beside ../factors
@@ -68,33 +68,32 @@ class TestStatements(unittest.TestCase):
         items = {s["n"]: s for s in statements.statements(chosen)}
         with open(os.path.join(chosen, "fig17.json")) as f:
             pull = json.load(f)
-        # 20: the tension branch's extent, where the pull's tension stays below half of its peak for good
+        # 21: the tension branch's extent, where the pull's tension stays below half of its peak for good
         rows = statements.read_csv(os.path.join(chosen, "fig17.csv"))
         k = min(range(len(rows)), key=lambda j: rows[j][2])
         last_above = max(j for j in range(k, len(rows)) if rows[j][2] <= 0.5 * rows[k][2])
-        self.assertIn(f"below half the peak for good from Dx = {rows[last_above + 1][1]:.3f}", items[20]["project"])
-        # 12: the crack plane at Dx = 0.2 against the same plane at Dx = 0
+        self.assertIn(f"below half the peak for good from Dx = {rows[last_above + 1][1]:.3f}", items[21]["project"])
+        # 13: the crack plane at Dx = 0.2 against the same plane at Dx = 0
         at, p0 = pull["planes_at_marks"]["0.2"], pull["planes_at_start"]
         x = at["weakest"]["from_left_d0"]
         before = min(zip(p0["x"], p0["count"]), key=lambda xc: abs(xc[0] - x))[1]
-        self.assertIn(f"{at['weakest']['count']} of {before} contacts", items[12]["project"])
-        by_count, by_force = at["weakest"]["count"] < 0.5 * before, at["F"] / pull["max_tension"] < 0.5
-        self.assertEqual(items[12]["verdict"], "✓" if by_count and by_force else ("◐" if by_count or by_force else "✗"))
-        # 19: the last chains of the preparation's realizations in the factor study
+        self.assertIn(f"{at['weakest']['count']} of {before} contacts", items[13]["project"])
+        self.assertEqual(items[13]["verdict"], "✓" if at["F"] / pull["max_tension"] < 0.5 else "✗")
+        # 20: the last chains of the preparation's realizations in the factor study
         with open(os.path.join(DOCS, "factors", "factors.json")) as f:
             rows = json.load(f)
         v = sorted(r["last_chain_Dx"] for r in rows if (r["packing"], r["glue"], r["rel_std"], r["sinter"], r["drag"])
                    == ("frictionless", "sinter", 0.1, 0.02, "contacts"))
-        self.assertIn(", ".join(f"{x:.2f}" for x in v), items[19]["why"])
-        # every statement not met says why, but 22 (the set grows evenly with the amplitude: no reason found)
-        self.assertTrue(all(items[n]["why"] for n, s in items.items() if s["verdict"] == "✗" and n != 22),
-                        [n for n, s in items.items() if s["verdict"] == "✗" and not s["why"]])
-        # 10: the tension where cycle 4 turns back, read from the CSV here
+        self.assertIn(", ".join(f"{x:.2f}" for x in v), items[20]["why"])
+        # every statement not or only partly met says why (or that no reason was found)
+        self.assertTrue(all(items[n]["why"] for n, s in items.items() if s["verdict"] in ("✗", "◐")),
+                        [n for n, s in items.items() if s["verdict"] in ("✗", "◐") and not s["why"]])
+        # 11: the tension where cycle 4 turns back, read from the CSV here
         with open(os.path.join(chosen, "tension-Dx0.2-P1920.json")) as f:
             run = json.load(f)
         rows = statements.read_csv(os.path.join(chosen, "tension-Dx0.2-P1920.csv"))
         last = [r for r in rows if r[0] - rows[0][0] >= 3 * run["steps_per_cycle"]]
-        self.assertIn(f"0.2: {-max(last, key=lambda r: r[1])[2]:.3g}", items[10]["project"])
+        self.assertIn(f"0.2: {-max(last, key=lambda r: r[1])[2]:.3g}", items[11]["project"])
 
 
 

@@ -4,7 +4,7 @@
 #   runs on unchanged and is released safely, another contact's is dropped with a warning and remade;
 # - contacts restored onto pairs whose loop makes another geometry class: YADE's functor cast it to
 #   the wrong type (segfault); now restore() refuses, naming the pair and both classes, and restores
-#   nothing; the facet and wall functors replace a geometry of another class instead of casting it;
+#   nothing; likewise contacts whose parameters the bodies' materials no longer give (item9); the facet and wall functors replace a geometry of another class instead of casting it;
 # - Wall.axis outside 0-2 read pos[3]: the wall functor makes no contact and says so, set_detection
 #   refuses it;
 # - interactionDetectionFactor of the surface functors below 1 or not finite: spheres passed through;
@@ -253,9 +253,42 @@ def item8():
     check(calls == [-2], "a runner installed again under its label calls its new callable", str(calls))
 
 
+# 9. (the issue's item 6) Contacts restored onto pairs whose materials give them other parameters:
+#    a plain contact (no sliding) where the materials have kt, or one of another kc, ran on with the
+#    other scene's law; now restore() refuses, naming the pair and the first parameter that
+#    differs, and restores nothing; the same materials restore.
+def item9():
+    pair()
+    until_touch(1)
+    store = w.MesoContactStore()
+    data = store.exportContacts([0, 1])
+    for change, says in ((dict(tangential=True), "kt"), (dict(), "kc")):
+        pair(**change)
+        if says == "kc":
+            O.materials[0].kc = 200
+        until_touch(1)
+        store.keep()
+        O.interactions.clear()
+        O.engines[1]()
+        store.importContacts(data)
+        try:
+            n = store.restore()
+            check(False, f"a contact restored where the materials give another {says}: refused", f"restored {n}")
+        except ValueError as e:
+            check(f"another {says} " in str(e) and "#0+#1" in str(e) and "nothing was restored" in str(e),
+                  f"a contact restored where the materials give another {says}: refused, naming it", str(e)[:120])
+    pair()
+    until_touch(1)
+    store.keep()
+    O.interactions.clear()
+    O.engines[1]()
+    store.importContacts(data)
+    check(store.restore() == 1 and O.interactions[0, 1].phys.kc == 100, "the same materials restore")
+
+
 # All items, or those named on the command line (item1 ... item7), e.g. to show one before a fix:
 #   yade -n -x tests/yade/test_reliability.py item2
-ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7, item8)}
+ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7, item8, item9)}
 for name in [a for a in sys.argv[1:] if a in ITEMS] or list(ITEMS):
     ITEMS[name]()
 finish()
