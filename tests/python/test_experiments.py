@@ -86,6 +86,13 @@ class Experiments(unittest.TestCase):
         self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)
         self.assertEqual((p["strain_at_peak"], p["strain_2x_from_Dx"]), (1.5, 0.06))
 
+    def test_contact_pull_ratio(self):
+        # a contact's largest pull kc k2 d0/(k2 + kc), kc 0.5 against 0.2 (over kp): k2 = kp: (0.5/1.5)/(0.2/1.2) = 2;
+        # k2 = k1 = kp/2: (0.25/1)/(0.1/0.7) = 1.75
+        lo, hi = experiments.pull_ratio(0.5)
+        self.assertAlmostEqual(lo, 1.75, places=12)
+        self.assertAlmostEqual(hi, 2.0, places=12)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -30,6 +30,16 @@ from .statements import load_json, read_csv
 
 E1_SAMPLES = (("chosen", 0.02), ("mid", 0.05), ("deep", 0.1))
 VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep"}  # variants/<sample> -> its E1 folder
+K1_OVER_KP, KC_OVER_KP = 0.5, 0.2  # the Appendix F particles' k1/kp and kc/kp (mesostudies.tablet.sample.MATERIALS)
+
+
+def pull_ratio(kc_new, kc_old=KC_OVER_KP):
+    """How much more a contact pulls with kc_new than with kc_old (both over kp): its largest pull
+    kc k2 delta0 / (k2 + kc) along its k2 line, k2 between k1 (a contact loaded barely past elastic)
+    and kp (one at the plastic limit). Returns (ratio at k2 = k1, ratio at k2 = kp)."""
+    def most(kc, k2):
+        return kc * k2 / (k2 + kc)
+    return tuple(most(kc_new, k2) / most(kc_old, k2) for k2 in (K1_OVER_KP, 1.0))
 PAPER_L0 = 0.115  # the paper's sample length [mm]
 
 
@@ -144,6 +154,8 @@ def e56(tree, one):
                          and b["period"] == r["period"]), None)
             r["E1"] = {k: base[k] for k in ("first_peak", "first_peak_Dx", "turnaround_over_first", "second_over_first",
                                             "later_spread")} if base else None
+            r["peak_over_E1"] = r["first_peak"] / base["first_peak"] if base else None
+            r["contact_pull_ratio"] = pull_ratio(r["kc_over_kp"]) if r["kc_over_kp"] is not None else None
             rows.append(r)
     return rows
 
@@ -192,13 +204,16 @@ def markdown(one, two, label, three=(), five_six=()):
     if five_six:
         md += ["", "## E5 and E6: the same states, kc/kp 0.5 (kc0.5) and cycles back to the start's force "
                "(force-return); in brackets the E1 run of the same sample, amplitude and period", "",
-               "| sample | variant | Dx | period [t_w] | first peak | at Dx | F at the first turn / first peak "
+               "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
+               "(k2 = k1 to kp) | at Dx | F at the first turn / first peak "
                "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
-               "|---|---|---|---|---|---|---|---|---|---|"]
+               "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in five_six:
             b = r["E1"] or {}
             md.append(f"| {r['sample']} | {r['variant']} | {r['amplitude']:g} | {r['period']:g} | "
-                      f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | "
+                      f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | {_f(r['peak_over_E1'], '{:.2f}')} | "
+                      + ("–" if r["contact_pull_ratio"] is None else
+                         f"{r['contact_pull_ratio'][0]:.2f} – {r['contact_pull_ratio'][1]:.2f}") + " | "
                       f"{r['first_peak_Dx']:.3f} ({_f(b.get('first_peak_Dx'), '{:.3f}')}) | "
                       f"{_f(r['turnaround_over_first'], '{:.2f}')} ({_f(b.get('turnaround_over_first'), '{:.2f}')}) | "
                       f"{_f(r['second_over_first'], '{:.2f}')} ({_f(b.get('second_over_first'), '{:.2f}')}) | "
