@@ -133,7 +133,7 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
 
 def plot(info, slab_rows, png):
     """(a) the local strain over the affine one along the sample at a few Dx up to and past the
-    peak; (b) the contacts on the tensile branch and open, measured and affine, against Dx."""
+    peak; (b) the contacts on the tensile limit -kc delta and open, measured and affine, against Dx."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -152,13 +152,13 @@ def plot(info, slab_rows, png):
     a.legend(fontsize=7)
     rec = info["records"]
     dx = [r["Dx"] for r in rec]
-    for key, colour in (("tensile", "C3"), ("open", "C0")):
-        b.plot(dx, [r["measured"][key] for r in rec], color=colour, label=f"{key}, measured")
-        b.plot(dx, [r["affine"][key] for r in rec], color=colour, ls="--", label=f"{key}, affine stretch")
+    for key, colour, name in (("tensile", "C3", "on -kc delta"), ("open", "C0", "open")):
+        b.plot(dx, [r["measured"][key] for r in rec], color=colour, label=f"{name}, measured")
+        b.plot(dx, [r["affine"][key] for r in rec], color=colour, ls="--", label=f"{name}, affine stretch")
     b.axvline(peak, color="0.4", lw=0.8, ls=":")
     b.set_xlabel("Dx [d0], tension > 0")
     b.set_ylabel("fraction of the start's particle contacts")
-    b.set_title(f"(b) contacts on the tensile branch and open (peak at Dx = {peak:.3f})", fontsize=10)
+    b.set_title(f"(b) contacts on the tensile limit and open (peak at Dx = {peak:.3f})", fontsize=10)
     b.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(png, dpi=130)

@@ -82,8 +82,7 @@ def plot_cycles(mode, amplitudes, periods, runs, data, png, quick=False, variant
         what = (f"amplitudes up to {PAPER_LARGEST[mode]:g}, the largest the paper draws" if n == 0
                 else "beyond the paper's largest amplitude")
         letter = f"({chr(97 + n)}) " if len(panels) > 1 else ""
-        ax.set_title(f"{letter}{mode} cycles, {what}" + (f", {variant}" if variant else "")
-                     + (" (quick mode)" if quick else ""), fontsize=10)
+        ax.set_title(f"{letter}{mode} cycles, {variant or what}" + (" (quick mode)" if quick else ""), fontsize=10)
         ax.legend(fontsize=6.5, ncol=2)
     fig.tight_layout()
     fig.savefig(png, dpi=130)
