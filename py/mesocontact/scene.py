@@ -154,7 +154,7 @@ def time_step(safety=0.05):
 
 
 
-def contact_cohesion():
+def contact_cohesion(requested=None):
     """What holds the scene's meso contacts together now: per contact in overlap, the largest pull
     it resists if pulled apart slowly from its present state, kc k2 delta0 / (k2 + kc) (where its
     k2 line meets the tensile limit -kc delta; 0 for a contact that has not been loaded past
@@ -163,8 +163,11 @@ def contact_cohesion():
     this is far below the pull_off_force that params.material_from fits, which is that of a
     contact loaded to the plastic limit: the cohesion comes from fa. Returns {'contacts', 'mean',
     'median', 'max', 'fa_share' (the share of the summed cohesion that fa gives)} [N]
-    ({'contacts': 0} without contacts in overlap)."""
+    ({'contacts': 0} without contacts in overlap). With ``requested`` (a pull-off force [N], e.g. the
+    one given to params.material_from), a warning says when fewer than half the contacts reach it."""
     from yade import wrapper as w
+    if requested is not None and not (is_number(requested) and requested > 0 and requested < math.inf):
+        raise ValueError(f"requested = {requested!r} is invalid: a pull-off force > 0 [N]")
     contact, fa = [], []
     for i in O.interactions:
         if not (i.isReal and isinstance(i.phys, w.MesoPhys) and i.geom.penetrationDepth > 0):
@@ -178,6 +181,13 @@ def contact_cohesion():
         return {"contacts": 0}
     total = sorted(c + f for c, f in zip(contact, fa))
     n = len(total)
+    reach = sum(t >= requested for t in total) if requested is not None else n
+    if reach < 0.5 * n:  # most contacts hold less than the user asked for: say so, and why
+        import warnings
+        warnings.warn(f"contact_cohesion: {reach} of {n} contacts resist the requested pull-off {requested:.3g} N (median "
+                      f"{0.5 * (total[(n - 1) // 2] + total[n // 2]):.3g} N): pull_off_force is that of a contact loaded to "
+                      "the plastic limit, and these contacts are shallower; their cohesion comes mostly from fa",
+                      stacklevel=2)
     return {"contacts": n, "mean": sum(total) / n, "median": 0.5 * (total[(n - 1) // 2] + total[n // 2]),
             "max": total[-1], "fa_share": sum(fa) / sum(total) if sum(total) > 0 else None}
 

@@ -4,6 +4,8 @@
 # box is pulled away slowly: the largest tension of the contact's
 # hysteretic plus adhesive force (the viscous part, gamma v, left out) must equal it to the force
 # the law changes in one step (kc v dt, the sampling of the peak).
+import warnings
+
 from yade import O
 from mesocontact import pair, scene
 from harness import check, finish
@@ -22,6 +24,15 @@ while i.geom.penetrationDepth < 0.1 * 2 * r * 5 / 4 / 3:
 box.state.vel = (0, 0, 0)
 O.step()
 c = scene.contact_cohesion()
+# A requested pull-off that the contacts do not reach is said; one they reach is not.
+
+for requested, warned in ((10 * c["mean"], True), (0.5 * c["mean"], False)):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scene.contact_cohesion(requested=requested)
+    check(bool(caught) == warned, f"requested {requested:.3g} N: {'a warning' if warned else 'no warning'}",
+          str(caught[0].message)[:100] if caught else "")
+
 check(c["contacts"] == 1 and c["fa_share"] < 0.5, "one stuck contact, loaded past elastic: its kc term holds most",
       f"delta0 = {i.phys.delta0:.3g} m, fa's share {c['fa_share']:.3f}")
 box.state.vel = (0, 0, -v)
@@ -35,4 +46,5 @@ tol = mat["kc"] * v * O.dt * 2
 check(abs(most - c["mean"]) <= tol, "the pull the contact resisted is contact_cohesion's",
       f"measured {most:.6g} N, predicted {c['mean']:.6g} N (tolerance {tol:.2g} N)")
 check(abs(c["fa_share"] - mat["fa"] / c["mean"]) < 1e-12, "fa's share", f"{c['fa_share']:.3f}")
+
 finish()
