@@ -81,7 +81,9 @@ def _pull(d, out):
     aff = _st.load_json(d, "affine.json")
     if aff:
         t, z = aff["Dx_to_tensile_limit"], aff["Dx_to_detachment"]
-        out += ["", f"Affine stretch of the test start's contacts (affine.json): {aff['contacts']} contacts, {aff['along_x']} "
+        out += ["", f"Affine stretch of the test start's contacts (affine.json): {aff['contacts']} particle contacts in overlap "
+                "(the totals above count the walls' contacts too; its L0 is the spheres' extent, which reaches into the "
+                f"walls' faces), {aff['along_x']} "
                 f"along x; mean overlap {aff['mean_overlap_d0']:.4f} d0, δmax {aff['mean_deltaMax_d0']:.4f} d0, δ0 "
                 f"{aff['mean_delta0_d0']:.4f} d0, δmin {aff['mean_delta_min_d0']:.4f} d0; the contacts along x reach "
                 f"their tensile limit at Dx = {t['10']:.4f}, {t['25']:.4f}, {t['50']:.4f}, {t['75']:.4f} (10, 25, 50, 75 %) "
