@@ -82,7 +82,8 @@ def depth_buffer(win, pixel):
 def png(path, title="", win=None, pixel=None):
     """Renders the spheres seen from -y (the paper's view) into ``path``: each sphere shaded as a
     sphere (light from the viewer's upper left) and coloured by its centre's distance from the
-    viewer, red -> green -> blue over the sample's depth; the walls in grey. ``win`` (see
+    viewer, red -> green -> blue over the sample's depth (its bulk: 1st to 99th percentile); the
+    walls in grey. ``win`` (see
     window()) fixes the frame, so that a series of panels shares one scale."""
     import matplotlib
     matplotlib.use("Agg")
@@ -92,7 +93,10 @@ def png(path, title="", win=None, pixel=None):
     _, pos, rad = _spheres()
     ybuf, owner, normal = depth_buffer(win, pixel)
     y = pos[:, 1]
-    depth = (y - y.min()) / max(y.max() - y.min(), 1e-300)
+    # the colour spans the bulk's depth (1st to 99th percentile): a few spheres squeezed out of a
+    # compressed sample must not stretch it until the bulk is one colour (Fig. 19's late panels)
+    lo, hi = np.percentile(y, [1, 99])
+    depth = np.clip((y - lo) / max(hi - lo, 1e-300), 0.0, 1.0)
     light = np.array([-0.45, -1.0, 0.55])
     light /= np.linalg.norm(light)
     shade = 0.3 + 0.7 * np.clip(normal @ light, 0.0, 1.0)  # both point towards the viewer's side

@@ -467,7 +467,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
             k = len(snaps)
             label = f"{tag}-{k:02d}"
             _snap.png(os.path.join(bundle.tmp, label + ".png"),
-                      f"({chr(97 + k)}) compression, Dx = {-row[1]:.2f}, F/(kp d0) = {row[2]:+.3g}", win=win)
+                      f"({chr(97 + k)}) compression, Dx = {row[1]:.2f}, F/(kp d0) = {row[2]:+.3g}", win=win)
             _snap.vtk(os.path.join(bundle.tmp, tag), k)
             s = sample.stats()
             wy, wz = _spread_widths()
