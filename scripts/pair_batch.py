@@ -17,6 +17,7 @@ from yade import O, utils
 from mesocontact import batch, outputs, pair, theory
 
 batch.help_requested(sys.argv[1:], sys.argv[0])
+batch.check_descriptions()
 
 utils.readParamsFromTable(k1=100.0, kp=500.0, kc=100.0, phiF=0.05, fa=0.0, kca=100.0, adhesion="none",
                           k2Interpolation="linear", gammaN=0.0, radius=1e-3, density=2500.0, v=0.05,

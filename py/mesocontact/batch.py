@@ -17,10 +17,29 @@ def under_batch():
     return bool(os.environ.get("YADE_BATCH"))
 
 
+def check_descriptions():
+    """Under yade-batch: two lines of one table with one description write one set of result files
+    (the job's name), the second job silently overwriting the first's. Refused (ValueError), naming
+    the lines; nothing outside yade-batch. A job script calls it first (argv does)."""
+    if not under_batch():
+        return
+    from yade.utils import TableParamReader
+    table, _, line = os.environ["YADE_BATCH"].rpartition(":")
+    if not (table and os.path.exists(table)):
+        return
+    rows = TableParamReader(table).paramDict()
+    mine = rows.get(int(line), {}).get("description") if line.isdigit() else None
+    same = sorted(n for n, r in rows.items() if mine is not None and r.get("description") == mine)
+    if len(same) > 1:
+        raise ValueError(f"{table}: lines {', '.join(map(str, same))} share the description {mine!r}: their jobs would "
+                         "write the same result files; give each line its own description")
+
+
 def argv(command_line, positional=None, **columns):
     if not under_batch():
         return list(command_line)
     from yade import utils
+    check_descriptions()
     utils.readParamsFromTable(noTableOk=True, **columns)
     from yade.params import table
     out = []

@@ -63,6 +63,15 @@ class Batch(unittest.TestCase):
         self.assertIn("kq", log)
         self.assertFalse(os.path.exists(os.path.join(d, "results", "batch", "bad.json")))
 
+    def test_shared_description_is_refused(self):
+        # two lines with one description would write one set of files: both jobs stop, naming the lines
+        d = tempfile.mkdtemp()
+        batch("description  kp\ntwin  500\ntwin  600\n", d)
+        with open(os.path.join(d, "job-twin.log")) as f:
+            log = f.read()
+        self.assertIn("lines 2, 3 share the description 'twin'", log)
+        self.assertFalse(os.path.exists(os.path.join(d, "results", "batch", "twin.json")))
+
 
 if __name__ == "__main__":
     unittest.main()
