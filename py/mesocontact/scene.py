@@ -5,6 +5,7 @@ from yade import O
 
 from .scene_names import BRANCHES  # noqa: F401  (MesoPhys.branch's names, in branchIndex order)
 from .checks import is_number
+from . import theory
 
 
 def reset():
@@ -173,10 +174,8 @@ def contact_cohesion(requested=None):
         if not (i.isReal and isinstance(i.phys, w.MesoPhys) and i.geom.penetrationDepth > 0):
             continue
         p = i.phys
-        k2, kc, d0 = p.k2, p.kc, p.delta0
-        contact.append(kc * k2 * d0 / (k2 + kc) if kc > 0 and d0 > 0 else 0.0)
-        acts = p.adhesion == "reversible" or (p.adhesion == "jumpIn" and p.touched)
-        fa.append(p.fa if acts else 0.0)
+        contact.append(theory.largest_pull(p.k2, p.kc, p.delta0))
+        fa.append(-p.adhesiveForce)  # in overlap the law's non-contact part is -fa where it acts, else 0
     if not contact:
         return {"contacts": 0}
     total = sorted(c + f for c, f in zip(contact, fa))

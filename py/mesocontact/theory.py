@@ -213,6 +213,14 @@ def tensile_range(delta_max, k1, kp, kc, phiF, a12, interpolation="linear"):
     return (1.0 - k1 / k2) * delta_max * kc / (k2 + kc)
 
 
+def largest_pull(k2, kc, delta0):
+    """The most tensile force a contact reaches when pulled apart slowly from its present history:
+    where its k2 line k2 (delta - delta0) meets the tensile limit -kc delta, at delta = k2 delta0/(k2
+    + kc), the pull kc k2 delta0/(k2 + kc) [N] (0 without a tensile limit or plastic history).
+    Works elementwise on numbers; no check (the law's own values)."""
+    return kc * k2 * delta0 / (k2 + kc) if kc > 0 and delta0 > 0 else 0.0
+
+
 @_in_range
 def max_tensile_range(kp, kc, phiF, a12):
     """The supremum of tensile_range over delta_max: phiF a12 kc/(kp + kc) [m], reached on the

@@ -25,6 +25,9 @@ import json
 import os
 import sys
 
+from mesocontact import theory
+
+from .measures import retrace
 from .profile import persistent_from
 from .statements import load_json, read_csv
 
@@ -37,9 +40,7 @@ def pull_ratio(kc_new, kc_old=KC_OVER_KP):
     """How much more a contact pulls with kc_new than with kc_old (both over kp): its largest pull
     kc k2 delta0 / (k2 + kc) along its k2 line, k2 between k1 (a contact loaded barely past elastic)
     and kp (one at the plastic limit). Returns (ratio at k2 = k1, ratio at k2 = kp)."""
-    def most(kc, k2):
-        return kc * k2 / (k2 + kc)
-    return tuple(most(kc_new, k2) / most(kc_old, k2) for k2 in (K1_OVER_KP, 1.0))
+    return tuple(theory.largest_pull(k2, kc_new, 1.0) / theory.largest_pull(k2, kc_old, 1.0) for k2 in (K1_OVER_KP, 1.0))
 PAPER_L0 = 0.115  # the paper's sample length [mm]
 
 
@@ -61,7 +62,7 @@ def _cyclic_row(d, name):
     run = load_json(d, name)
     peaks = run["peaks"]
     later = peaks[1:]
-    mean = sum(later) / len(later) if later else None
+    of_first, of_mean = retrace(peaks)
     rows = read_csv(os.path.join(d, name[:-5] + ".csv"))
     turns = run.get("turns")  # cycles back to the start's force: where each stroke ended
     first = [r for r in rows if r[0] <= turns[0][0]] if turns else _first_stroke(rows, run["steps_per_cycle"])
@@ -69,8 +70,7 @@ def _cyclic_row(d, name):
     return {"amplitude": run["amplitude"], "period": run["period_crossings"], "first_peak": peaks[0],
             "first_peak_Dx": min(first, key=lambda r: r[2])[1], "later_peaks": later,
             "turnaround_over_first": turn / peaks[0] if peaks[0] else None,
-            "later_spread": (max(later) - min(later)) / abs(mean) if later and mean else None,
-            "later_spread_of_first": (max(later) - min(later)) / abs(peaks[0]) if later else None,
+            "later_spread": of_mean, "later_spread_of_first": of_first,
             "second_over_first": later[0] / peaks[0] if later else None, "L0": run["L0"],
             "returns_at_Dx": [t[1] for t in turns[1::2]] if turns else None,
             "kc_over_kp": (run.get("tensile_stiffness") or {}).get("kc_over_kp")}

@@ -63,6 +63,17 @@ def permanent_set(cycle, mode, f0=0.0):
     return 0.0
 
 
+def retrace(peaks):
+    """Whether cycles 2, 3, ... of a run retrace one branch: the range (max - min) of their peaks
+    over the first peak and over their own mean, as magnitudes ((None, None) with one cycle)."""
+    later = list(peaks[1:])
+    if not later:
+        return None, None
+    spread = max(later) - min(later)
+    mean = sum(later) / len(later)
+    return abs(spread / peaks[0]), (abs(spread / mean) if mean else None)
+
+
 def cycle_measures(rows, steps_per_cycle, mode, n_cycles=None):
     """peak, loop, elastic, loop/elastic and set of every cycle of a run (see the module); F0 is
     the run's first row's force."""

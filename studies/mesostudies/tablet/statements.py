@@ -344,14 +344,9 @@ def statements(d):
     return out
 
 
-def _retrace(measures):
-    """Whether cycles 2-4 retrace one branch: the range (max - min) of their peaks over the first
-    peak and over their own mean."""
-    later = [c["peak"] for c in measures[1:]]
-    if not later:
-        return None, None
-    spread = max(later) - min(later)
-    return abs(spread / measures[0]["peak"]), abs(spread / (sum(later) / len(later)))
+def _retrace(cycles):
+    """measures.retrace of a run's cycle measures."""
+    return measures.retrace([c["peak"] for c in cycles])
 
 
 def _drift(runs, amps):
