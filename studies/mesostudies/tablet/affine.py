@@ -40,15 +40,18 @@ def summary(dx, force):
             "F_at_0": float(force[0])}
 
 
-def contacts_of_scene():
+def contacts_of_scene(rigid=()):
     """The particle contacts of the scene in YADE as rows (delta, delta0, k2, kc, length, nx2,
     deltaMax, k1), and the sample's length L0 along x. The overlap is taken from the positions
-    (a saved state keeps no geometry)."""
+    (a saved state keeps no geometry). ``rigid``: sets of particle ids moved as one body, whose
+    inner contacts are left out."""
     from yade import O
     rows = []
     for i in O.interactions:
         b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
         if not (i.isReal and hasattr(b1.shape, "radius") and hasattr(b2.shape, "radius")):
+            continue
+        if any(i.id1 in r and i.id2 in r for r in rigid):
             continue
         branch = b2.state.pos - b1.state.pos
         length = branch.norm()

@@ -58,10 +58,12 @@ def persistent_from(records, factor):
     return start
 
 
-def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records=5, progress=True):
+def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records=5, progress=True, grips=None):
     """The pull to Dx = ``until`` on the unconfined start (campaign.prepare with ``protocol``),
     recorded every ``every_records`` records (each 100 steps): writes profile/ in ``outdir``.
-    ``slabs``: how many slabs along x (default: one per d0 of the sample's length)."""
+    ``slabs``: how many slabs along x (default: one per d0 of the sample's length). ``grips``:
+    pulled through glued particles of this thickness [d0] instead of the flat walls (E4; bundle
+    profile-grips<D>/); the contacts inside one grip, which cannot deform, are not counted."""
     import json
     import os
 
@@ -72,9 +74,12 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
     from .campaign.common import PROTOCOL, PULL_SPEED, _csv_text, prepare, root
     from .campaign.runs import _test
 
+    from . import uniaxial
     prepare(outdir, quick, progress, **(protocol or {}))
-    contacts, _ = affine.contacts_of_scene()  # before the test's first step, as affine.run reads them
-    test, _ = _test(progress)
+    members = uniaxial.grip_members(grips) if grips is not None else {}
+    rigid = [set(m) for m in members.values()]
+    contacts, _ = affine.contacts_of_scene(rigid)  # before the test's first step, as affine.run reads them
+    test, _ = _test(progress, grips, members or None)
     ids = sample.sphere_ids()
     lo, hi = sample.inner_box()
     n_slabs = slabs or max(2, int(round((hi[0] - lo[0]) / sample.D0)))
@@ -82,7 +87,8 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
     slab_of = {i: min(n_slabs - 1, max(0, int((x - lo[0]) / (hi[0] - lo[0]) * n_slabs))) for i, x in start.items()}
     members = [[i for i in ids if slab_of[i] == k] for k in range(n_slabs)]
     x0 = [sum(start[i] for i in m) / len(m) for m in members]
-    pairs = {(I.id1, I.id2) for I in O.interactions if I.isReal and I.id1 in start and I.id2 in start}
+    pairs = {(I.id1, I.id2) for I in O.interactions if I.isReal and I.id1 in start and I.id2 in start
+             and not any(I.id1 in r and I.id2 in r for r in rigid)}
     tensile_index = _scene.BRANCHES.index("tensile")
     records, slab_rows = [], []
 
@@ -114,13 +120,14 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
             "particles_per_slab": [len(m) for m in members], "contacts_at_start": len(pairs),
             "peak_Dx": peak[1], "peak_F": peak[2], "localization_first_Dx": first,
             "records": records, "protocol": dict(PROTOCOL, **(protocol or {})), "quick": quick, "speed": PULL_SPEED,
+            "grips": test.grips,
             "definitions": {"local strain": "difference of neighbouring slabs' mean x displacement over their centres' "
                                             "distance, over the affine strain Dx d0 / L0",
                             "measured branches": "the particle contacts of the start: on -kc delta (tensile), in overlap "
                                                  "otherwise (line: k1, kp or k2, compressive or tensile), without "
                                                  "overlap or gone (open)",
                             "affine branches": "the same contacts stretched affinely (affine.py)"}}
-    with outputs.Bundle(os.path.join(root(outdir, quick), "profile")) as b:
+    with outputs.Bundle(os.path.join(root(outdir, quick), "profile" if grips is None else f"profile-grips{grips:g}")) as b:
         b.write_text("profile.csv", _csv_text(rows))
         b.write_text("profile-slabs.csv", _csv_text(slab_rows, "iter,Dx," + ",".join(f"gap{k}" for k in range(n_slabs - 1))))
         b.write_json("profile.json", info)

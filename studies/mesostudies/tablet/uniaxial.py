@@ -160,6 +160,18 @@ def weakest_plane(prof, margin=0.5):
     return {"count": count[k], "from_left_d0": xs[k], "from_right_d0": length - xs[k]}
 
 
+def grip_members(thickness=1.0):
+    """The particles whose centres lie within ``thickness`` d0 of each loading wall's face: {wall
+    id: particle ids}, the grips of Test.use_grips."""
+    if not thickness > 0:
+        raise ValueError(f"thickness = {thickness} is invalid: must be > 0 (in units of d0)")
+    walls = sample.wall_ids()
+    lo, hi = sample.inner_box()
+    ids = sample.sphere_ids()
+    return {walls["left"]: [i for i in ids if O.bodies[i].state.pos[0] - lo[0] < thickness * sample.D0],
+            walls["right"]: [i for i in ids if hi[0] - O.bodies[i].state.pos[0] < thickness * sample.D0]}
+
+
 class _WallWork:
     """The work the loading walls do on the sample, added up every step by a PyRunner after the
     NewtonIntegrator (this step's force on each wall times the velocity it moved with) [nJ]; also
@@ -201,12 +213,36 @@ class Test:
         self._share = share or (lambda x: x)
         walls = sample.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
+        self.grip = {self.left: [self.left], self.right: [self.right]}  # what each end moves: the wall alone
         O.step()  # forces are not saved: one step with the walls at rest restores them
         self.L0 = self.length()
         self.t_cross = crossing_time()
         self.rows = []  # (iter, Dx, F/(kp d0))
         self.branches = []  # (iter, Dx, fraction of the contacts on each scene.BRANCHES), with each row
         self._motion = []
+
+    def use_grips(self, thickness=1.0, members=None):
+        """Loads through glued particles instead of the flat walls (issue #47, E4): the particles
+        of grip_members(thickness) (or ``members``) become each end's grip, moved with its wall as
+        one rigid body (every degree of freedom blocked, the wall's velocity imposed); the walls'
+        contacts are erased and the walls stop touching anything (mask 0), so the sample is held
+        only by its own particle contacts, with the particles' adhesion. Dx keeps its definition
+        (the walls' distance, which moves with the grips); the force is the one on each grip's
+        particles. Returns the grips' sizes."""
+        members = members or grip_members(thickness)
+        for wid in (self.left, self.right):
+            for I in O.bodies[wid].intrs():
+                O.interactions.erase(I.id1, I.id2)
+            O.bodies[wid].mask = 0
+            for i in members[wid]:
+                st = O.bodies[i].state
+                st.blockedDOFs, st.vel, st.angVel = "xyzXYZ", Vector3(0, 0, 0), Vector3(0, 0, 0)
+            self.grip[wid] = list(members[wid]) + [wid]
+        O.step()  # the grips' forces, from the particle contacts alone
+        self.L0 = self.length()
+        n = len(sample.sphere_ids())
+        return {"thickness_d0": thickness, "left": len(members[self.left]), "right": len(members[self.right]),
+                "free": n - len(members[self.left]) - len(members[self.right])}
 
     def track_energy(self):
         """Tracks the energy from now on: O.energy, and the walls' work on the sample every step;
@@ -231,8 +267,12 @@ class Test:
 
     def force(self):
         """Force on the loading walls, > 0 in compression, over kp d0."""
-        f = 0.5 * (O.forces.f(self.right)[0] - O.forces.f(self.left)[0])
+        f = 0.5 * (self._end_force(self.right) - self._end_force(self.left))
         return f / (sample.KP * sample.D0)
+
+    def _end_force(self, wid):
+        grip = self.grip[wid]
+        return O.forces.f(wid)[0] if len(grip) == 1 else sum(O.forces.f(i)[0] for i in grip)
 
     def _install(self, motion, every, on_record):
         """Replaces the previous motion engines and recorder by these."""
@@ -272,7 +312,7 @@ class Test:
         w = 0.5 * amplitude * sample.D0  # each wall moves by w at the peak
         freq = 1.0 / (steps_per_cycle * O.dt)
         phase = -2 * math.pi * freq * O.time  # the cosine starts now
-        motion = [_w.HarmonicMotionEngine(ids=[wid], A=Vector3(a, 0, 0), f=Vector3(freq, 0, 0),
+        motion = [_w.HarmonicMotionEngine(ids=self.grip[wid], A=Vector3(a, 0, 0), f=Vector3(freq, 0, 0),
                                           fi=Vector3(phase, 0, 0), label=f"cycle_{wid}")
                   for wid, a in ((self.right, -0.5 * sign * w), (self.left, 0.5 * sign * w))]
         self.steps_per_cycle = steps_per_cycle
@@ -290,7 +330,7 @@ class Test:
                       f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
         for e in motion:
             e.dead = True
-        for i in (self.left, self.right):
+        for i in self.grip[self.left] + self.grip[self.right]:
             if O.bodies[i]:  # under mpy a worker may not hold both walls
                 O.bodies[i].state.vel = Vector3(0, 0, 0)
         self._record()
@@ -315,7 +355,8 @@ class Test:
         every = every or max(1, self.steps_per_cycle // 400)
         check = max(1, every // 4)
         limit = max_strokes_steps or 4 * self.steps_per_cycle  # a stroke that does not end is an error
-        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(s, 0, 0), velocity=speed, label=f"stroke_{wid}")
+        motion = [_w.TranslationEngine(ids=self.grip[wid], translationAxis=Vector3(s, 0, 0), velocity=speed,
+                                       label=f"stroke_{wid}")
                   for wid, s in ((self.right, 1.0), (self.left, -1.0))]
         self._install(motion, every, on_record)
         self._record()
@@ -343,7 +384,7 @@ class Test:
                           flush=True)
         for e in motion:
             e.dead = True
-        for i in (self.left, self.right):
+        for i in self.grip[self.left] + self.grip[self.right]:
             O.bodies[i].state.vel = Vector3(0, 0, 0)
         self._record()
         return self.rows
@@ -369,7 +410,7 @@ class Test:
             raise ValueError(f"speed = {speed:g} is invalid: the walls would need {need:.3g} steps to reach "
                              f"Dx = {sign * until:g} (at most {self.MAX_STEPS:.0e}; speed >= "
                              f"{until * sample.D0 / (2 * self.MAX_STEPS * O.dt):.3g} mm/us)")
-        motion = [_w.TranslationEngine(ids=[wid], translationAxis=Vector3(sign * s, 0, 0), velocity=speed,
+        motion = [_w.TranslationEngine(ids=self.grip[wid], translationAxis=Vector3(sign * s, 0, 0), velocity=speed,
                                        label=f"pull_{wid}")
                   for wid, s in ((self.right, 1.0), (self.left, -1.0))]
         self._install(motion, every, on_record)

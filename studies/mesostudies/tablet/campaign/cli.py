@@ -59,6 +59,9 @@ OPTIONS = (
     ("--test-kc-over-kp", dict(type=float, default=None,
                                help="fig16: the particles' kc/kp from the unconfined start on, every contact keeping "
                                     "its history (the same sample with another tensile stiffness)")),
+    ("--grips", dict(type=float, default=None, metavar="D",
+                     help="fig16, profile: load through the particles within D d0 of each wall, moved as rigid grips, "
+                          "instead of the flat walls (issue #47, E4)")),
     ("--drag", dict(default="contacts", choices=("contacts", "lab"), help="factors: the background drag's reference in the pull")),
     ("--table", dict(action="store_true", help="factors: only gather the table of the runs made")),
     ("--report", dict(default=None, metavar="DOCS",
@@ -123,6 +126,12 @@ def parse_args(figure, argv):
         _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull or compression in d0")
     if (a.returns != "length" or a.test_kc_over_kp is not None) and figure != "fig16":
         p.error(f"--returns and --test-kc-over-kp: only fig16 runs these variants (not {figure})")
+    if a.grips is not None and figure not in ("fig16", "profile"):
+        p.error(f"--grips: only fig16 and profile load through grips (not {figure})")
+    if a.grips is not None and not (math.isfinite(a.grips) and 0.25 <= a.grips <= 0.25 * side):
+        p.error(f"--grips {a.grips} is invalid: must lie in [0.25, {0.25 * side:.3g}] d0 (a quarter of the sample)")
+    if a.grips is not None and a.mpi is not None:
+        p.error("--grips: without --mpi")
     if a.returns != "length" and a.mpi is not None:
         p.error("--returns force: without --mpi (the turns are decided every few steps from the walls)")
     if a.test_kc_over_kp is not None and not (math.isfinite(a.test_kc_over_kp) and 0 <= a.test_kc_over_kp <= 100):
@@ -187,7 +196,7 @@ JOBS = {
               "the cycles of one amplitude at three periods."),
     "fig16": (lambda a, amps, slow, periods: cyclic("tension", a.out, amps, a.quick, periods, slow_amplitudes=slow,
                                                      protocol=_preparation(a), returns=a.returns,
-                                                     kc_over_kp=a.test_kc_over_kp),
+                                                     kc_over_kp=a.test_kc_over_kp, grips=a.grips),
               "tension cycles (Fig. 16)."),
     "fig17": (lambda a, amps, slow, periods: pull(a.out, a.quick, speed=a.speed, until=a.until or 9.0),
               "the pull to rupture with snapshots (Fig. 17)."),
@@ -199,7 +208,8 @@ JOBS = {
     "factors": (_factors, "one pull of the factor study (a preparation), then its table."),
     "affine": (lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
                "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
-    "profile": (lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a), until=a.until or 0.3),
+    "profile": (lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a), until=a.until or 0.3,
+                                                                  grips=a.grips),
                 "the pull's first part with the strain by slab and the contacts' branches against an affine stretch."),
 }
 FIGURES = tuple(JOBS)

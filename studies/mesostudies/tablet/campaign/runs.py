@@ -23,12 +23,18 @@ from .common import (
 from .plots import plot_compression, plot_cycles, plot_pull, plot_rates
 
 
-def _test(progress):
+def _test(progress, grips=None, members=None):
     """The uni-axial test on the loaded start, serially or, under yade.mpy, split over the ranks
     (the master records, every rank follows its decisions). Returns (test, f0): f0 the first
-    row's force under mpy, read before the split clears the master's forces; None serially."""
+    row's force under mpy, read before the split clears the master's forces; None serially.
+    ``grips``: load through glued particles of this thickness [d0] instead of the flat walls
+    (uniaxial.Test.use_grips; serially only), their sizes in ``test.grips``."""
+    if grips is not None and _mpy() is not None:
+        raise ValueError("grips: without yade.mpy (the grips' force is summed over particles on every rank)")
     if _mpy() is None:
-        return _uni.Test(progress=progress), None
+        test = _uni.Test(progress=progress)
+        test.grips = test.use_grips(grips, members) if grips is not None else None
+        return test, None
     test = _uni.Test(progress=progress, run=lambda n: _mpy().mpirun(n), records=_mpy().rank == 0,
                      share=lambda x: _mpy().comm.bcast(x, root=0))
     f0 = test.force()
@@ -39,15 +45,16 @@ def _test(progress):
 RETURNS = ("length", "force")  # where a tension cycle turns back: at Dx = 0, or at the start's force (E6)
 
 
-def variant_prefix(returns="length", kc_over_kp=None):
+def variant_prefix(returns="length", kc_over_kp=None, grips=None):
     """The name prefix of the cyclic runs of a test variant (none for the campaign's cycles)."""
     if returns not in RETURNS:
         raise ValueError(f"returns = {returns!r} is invalid: one of {RETURNS}")
-    return (f"kc{kc_over_kp:g}-" if kc_over_kp is not None else "") + ("force-return-" if returns == "force" else "")
+    return ((f"grips{grips:g}-" if grips is not None else "") + (f"kc{kc_over_kp:g}-" if kc_over_kp is not None else "")
+            + ("force-return-" if returns == "force" else ""))
 
 
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", dt_factor=None,
-               energy=False, cycles=None, protocol=None, returns="length", kc_over_kp=None):
+               energy=False, cycles=None, protocol=None, returns="length", kc_over_kp=None, grips=None):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
@@ -58,11 +65,12 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     state (named by variant_prefix, recorded in the JSON): ``returns='force'``, tension cycles
     that turn back at the start's force (uniaxial.Test.force_cycles) instead of at Dx = 0;
     ``kc_over_kp``, the particles' kc/kp changed on the unconfined start, every contact keeping
-    its history (sample.set_tensile_stiffness). Returns (description, rows)."""
+    its history (sample.set_tensile_stiffness); ``grips``, loaded through glued particles of this
+    thickness [d0] instead of the flat walls (uniaxial.Test.use_grips). Returns (description, rows)."""
     proto = dict(PROTOCOL, **(protocol or {}))
     if returns == "force" and (mode != "tension" or _mpy() is not None):
         raise ValueError("returns = 'force': tension cycles only, without yade.mpy")
-    prefix = variant_prefix(returns, kc_over_kp) + prefix
+    prefix = variant_prefix(returns, kc_over_kp, grips) + prefix
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
     if _out.complete(where):
@@ -83,7 +91,9 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     if kc_over_kp is not None:
         variant["tensile_stiffness"] = sample.set_tensile_stiffness(kc_over_kp)
     try:
-        test, f0 = _test(progress)
+        test, f0 = _test(progress, grips)
+        if grips is not None:
+            variant["grips"] = test.grips
         if energy:
             test.track_energy()
         if returns == "force":
@@ -122,10 +132,10 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
 
 
 def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=True, slow_amplitudes=None,
-           protocol=None, returns="length", kc_over_kp=None):
+           protocol=None, returns="length", kc_over_kp=None, grips=None):
     """Fig. 16 (tension) or Fig. 18 (compression): cycles at each amplitude and period (crossing
     times, default PERIODS[mode]; thin lines the first, thick the others; the slower periods
-    only for ``slow_amplitudes`` when given; ``protocol``, ``returns``, ``kc_over_kp`` as in
+    only for ``slow_amplitudes`` when given; ``protocol``, ``returns``, ``kc_over_kp``, ``grips`` as in
     run_cycles); writes the figure's bundle (fig16 or fig18, a variant's with its prefix)."""
     _uni.check_mode(mode)
     amplitudes = tuple(amplitudes or (TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES))
@@ -136,10 +146,10 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
             if k > 0 and slow_amplitudes is not None and amplitude not in slow_amplitudes:
                 continue
             info, rows = run_cycles(outdir, mode, amplitude, period, quick, progress, protocol=protocol,
-                                    returns=returns, kc_over_kp=kc_over_kp)
+                                    returns=returns, kc_over_kp=kc_over_kp, grips=grips)
             runs[info["name"]] = info
             data[info["name"]] = rows
-    fig = variant_prefix(returns, kc_over_kp) + ("fig16" if mode == "tension" else "fig18")
+    fig = variant_prefix(returns, kc_over_kp, grips) + ("fig16" if mode == "tension" else "fig18")
     summary = {"mode": mode, "quick": quick, "periods_crossings": list(periods), "amplitudes": list(amplitudes),
                "runs": runs, "wall_clock_s": sum(r["wall_clock_s"] for r in runs.values())}
     if not is_master():
@@ -150,6 +160,7 @@ def cyclic(mode, outdir, amplitudes=None, quick=False, periods=None, progress=Tr
         b.write_json(fig + ".json", summary)
         plot_cycles(mode, amplitudes, periods, runs, data, b.path(fig + ".png"), quick, variant=", ".join(
             ([f"kc/kp = {kc_over_kp:g} on the same sample"] if kc_over_kp is not None else [])
+            + ([f"loaded through glued particles ({grips:g} d0) instead of walls"] if grips is not None else [])
             + (["back to the start's force"] if returns == "force" else [])))
     return summary
 
