@@ -93,7 +93,8 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
 
     material/material2: ``MesoMat`` or dict of its attributes (material2 defaults to material).
     The collider and the geometry functor are set to detect the pair at the gap where the
-    non-contact force starts. dt defaults to the contact time of kp over steps_per_contact.
+    non-contact force starts. dt defaults to params.resolved_step of kp and the pair's reduced
+    mass (the half period of kp over steps_per_contact).
     The scene replaces whatever O holds (O.reset(); O.tags survive).
     """
     _checks.positive("radius1", radius1)
@@ -109,7 +110,8 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
     m_r = _params.reduced_mass(mass1, mass2)
     a12 = _params.reduced_radius(radius1, radius2)
     t_c = _params.contact_time(mixed["kp"], m_r)
-    O.dt = dt if dt is not None else t_c / steps_per_contact
+    O.dt = dt if dt is not None else _params.resolved_step(mixed["kp"], min(mass1, mass2), m_r=m_r,
+                                                           steps_per_contact=steps_per_contact)
     _stable(m1, m2, radius1, radius2, False, dt, steps_per_contact)
 
     start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * v_inf * O.dt
@@ -158,7 +160,7 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     delta_a = mixed["deltaA"]
     mass = _params.sphere_mass(radius, m.density)
     t_c = _params.contact_time(mixed["kp"], mass)
-    O.dt = dt if dt is not None else t_c / steps_per_contact
+    O.dt = dt if dt is not None else _params.resolved_step(mixed["kp"], mass, m_r=mass, steps_per_contact=steps_per_contact)
     _stable(m, w, radius, 0.0, six_d, dt, steps_per_contact)
     start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * max(v_inf, 1e-12) * O.dt
     factor = 1.0 + 1.2 * max(start_gap, -delta_a) / radius

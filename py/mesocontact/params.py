@@ -73,26 +73,30 @@ def contact_time(k, m_r):
 
 
 @_representable
-def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50):
+def resolved_step(kp, m_min, kt=0.0, kr=0.0, ko=0.0, gamma=0.0, steps_per_contact=50, m_r=None):
     """An accuracy step, not a stability bound: the time step that resolves the half period of
     the law's stiffest element by steps_per_contact steps, for the smallest particle mass m_min,
-    in closed form for equal spheres [s]. The tablet uses it (t_c/50). For a scene's O.dt use
-    mesocontact.scene.time_step(safety), a fraction of the stable step of every pair that can
-    meet (walls and mixed materials included); its safety 0.1 gives about 8 steps per half period
-    of the stiffest element where resolved_step gives 50.
+    in closed form [s]; the package's one accuracy recipe (the tablet: t_c/50; the pair drivers:
+    t_c/2000 of kp). For a scene's O.dt use mesocontact.scene.time_step(safety), a fraction of
+    the stable step of every pair that can meet (walls and mixed materials included); its
+    safety 0.05 gives about 16 steps per half period of the stiffest element where
+    resolved_step gives 50.
 
     Highest angular frequencies of a pair of equal spheres (the worst case; a sphere against a
-    wall is slower): normal kp/m_r with m_r = m/2; sliding 3.5 kt/m_r (the spring drags
-    translation and rotation, I = 2/5 m a^2); rolling and torsion about 2.5 k/m with the lever
-    a'12 = a/2 (10 k/m with lever 'a12'; pass 4 kr, 4 ko for that convention). The period of the
-    fastest one is resolved by 2 steps_per_contact steps; gamma: the largest dashpot [kg/s].
+    wall is slower): normal kp/m_r with m_r = m/2 (or the pair's own ``m_r``: unequal spheres,
+    a sphere on a wall with m_r = m); sliding 3.5 kt/m_r (the spring drags translation and
+    rotation, I = 2/5 m a^2); rolling and torsion about 2.5 k/m with the lever a'12 = a/2
+    (10 k/m with lever 'a12'; pass 4 kr, 4 ko for that convention). The period of the fastest
+    one is resolved by 2 steps_per_contact steps; gamma: the largest dashpot [kg/s].
     """
     positive("kp", kp)
     positive("m_min", m_min)
     positive("steps_per_contact", steps_per_contact)
     for name, v in (("kt", kt), ("kr", kr), ("ko", ko), ("gamma", gamma)):
         nonnegative(name, v)
-    m_r = 0.5 * m_min
+    if m_r is None:
+        m_r = 0.5 * m_min
+    positive("m_r", m_r)
     omega2 = max(kp / m_r, 3.5 * kt / m_r, 2.5 * kr / m_min, 2.5 * ko / m_min)
     dt = math.pi / math.sqrt(omega2) / steps_per_contact
     if gamma > 0:

@@ -136,6 +136,17 @@ class TimeStep(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "^kt"):
             params.resolved_step(1e3, m, kt=-1)
 
+    def test_reduced_mass_of_the_pair(self):
+        """The pair drivers' step: the half period of kp with the pair's own reduced mass (a sphere
+        on a wall: its mass) over steps_per_contact, to rounding."""
+        m = params.sphere_mass(1e-3, 2000)
+        for m_r in (m, m / 3, 0.5 * m):
+            dt = params.resolved_step(1e3, m, m_r=m_r, steps_per_contact=2000)
+            self.assertLess(abs(dt / (params.contact_time(1e3, m_r) / 2000) - 1), 4e-16)
+        self.assertEqual(params.resolved_step(1e3, m, m_r=0.5 * m), params.resolved_step(1e3, m))
+        with self.assertRaisesRegex(ValueError, "^m_r"):
+            params.resolved_step(1e3, m, m_r=0.0)
+
 
 class DimensionalForm(unittest.TestCase):
     r = 1.1e-3

@@ -241,5 +241,5 @@ def montage(pngs, path, ncols=4, titles=None):
         ax.imshow(img)
         ax.set_title(f"({chr(97 + k)})" + (f" {titles[k]}" if titles else ""), fontsize=9, loc="left")
     fig.tight_layout(pad=0.2)
-    fig.savefig(path, dpi=130)
+    fig.savefig(path, dpi=130, bbox_inches="tight", pad_inches=0.08)  # the first row's letters inside the picture
     plt.close(fig)
