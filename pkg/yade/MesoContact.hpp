@@ -25,12 +25,10 @@ namespace yade {
 #define MESO_MAT_ATTR(name, def, unit, ok, rule, mix, dest, doc) ((Real, name, def, Attr::triggerPostLoad, doc " [" unit "]."))
 
 class MesoMat : public FrictMat {
-	meso::MaterialParams valid; // the parameters as last validated: what contacts are made from
-	std::string          validAdhesion = "none", validK2Interpolation = "linear";
-	Real                 validFrictionAngle = 0, validDensity = 0, validYoung = 0; // set with valid (constructor, postLoad)
-	bool                 deferChecks = false;                                      // set while the constructor applies its keywords
-	meso::MaterialParams parse() const;                                            // throws std::invalid_argument naming the parameter
-	unsigned long        revisionCount = 0; // counts accepted changes: contacts made before keep the parameters they had
+	meso::MaterialParams valid;               // the attributes parsed and validated: what contacts are made from
+	bool                 deferChecks = false; // set while several keywords are applied before one check
+	meso::MaterialParams parse() const;       // throws std::invalid_argument naming the parameter
+	unsigned long        revisionCount = 0;   // counts accepted changes: contacts made before keep the parameters they had
 
 public:
 	virtual ~MesoMat() = default;
@@ -48,7 +46,16 @@ public:
 	static void                 registerChecked(boost::python::object& cls);      // attributes that name themselves in a type error
 	void                        updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
 	static boost::python::tuple adhesionModes();
-	void                        undoToValid(); // every checked attribute back to its last valid value
+	// Makes a change (set(MesoMat&)) after trying it on a copy: a refused value throws and leaves
+	// this material as it was, so no attribute needs an old value kept beside it.
+	template <class F> void change(F&& set)
+	{
+		MesoMat trial(*this);
+		set(trial);
+		trial.postLoad(trial);
+		set(*this);
+		postLoad(*this);
+	}
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
 		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
@@ -56,7 +63,7 @@ public:
 		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1)."))
 		MESO_TANGENTIAL_PARAMS(MESO_MAT_ATTR)
 		((bool,dominant,false,Attr::triggerPostLoad,"A dominant material imposes its own parameters, unmixed, on contacts with non-dominant materials (two dominant materials mix as usual). For walls whose law is prescribed, e.g. the strongly adhesive loading walls of [Luding2008]_ ($k_c^{wall}/k_p=20$, $\\mu^{wall}=10$), which the harmonic mean would cap at twice the particles' values.")),
-		createIndex(); valid = parse(); validFrictionAngle = frictionAngle; validDensity = density; validYoung = young;,
+		createIndex(); valid = parse();,
 		.add_property("frictionAngle",&MesoMat::getFrictionAngle,&MesoMat::setFrictionAngle,"Sliding friction angle [rad], $\\mu_s=\\tan$ of it, in $[0,\\pi/2)$ (checked on assignment).")
 		.add_property("density",&MesoMat::getDensity,&MesoMat::setDensity,"Density of the material [kg/m³], finite and > 0 (checked on assignment).")
 		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law. :yref:`PWaveTimeStep` reads it but sees none of the law's stiffnesses: set O.dt with ``mesocontact.scene.time_step()``.")

@@ -6,6 +6,7 @@
 #include <boost/python.hpp>
 #include <boost/shared_ptr.hpp>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -14,6 +15,14 @@ namespace yade {
 namespace pychecks {
 
 	enum class Kind { Number, Text, Flag, Integer };
+
+	inline std::string digits(double v) // all digits: a rejected 1e-20 must not read "0.000000"
+	{
+		std::ostringstream out;
+		out.precision(17);
+		out << v;
+		return out.str();
+	}
 
 	inline std::string describe(const boost::python::object& v)
 	{
