@@ -255,7 +255,7 @@ public:
 };
 REGISTER_SERIALIZABLE(Ip2_MesoMat_MesoMat_MesoPhys);
 
-struct MesoKinematics; // of one contact's tangential elements (MesoContact.cpp)
+struct MesoKinematics; // of one contact's tangential elements (MesoLaw2.cpp)
 
 class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	// YADE's EnergyTracker looks a new name up without a lock: threads that meet it first at the same
@@ -270,7 +270,7 @@ class Law2_ScGeom_MesoPhys_Meso : public LawFunctor {
 	bool              dropForeign(shared_ptr<IPhys>& ip, const Interaction* I); // a MesoPhys not made by the Ip2
 	std::atomic<bool> borrowedWarned { false };
 	bool              adopt(shared_ptr<IPhys>& ip, Interaction* I); // a phys met on this interaction for the first time
-	// The steps of go(), in MesoContact.cpp: the normal force (with its energy when tracked), then
+	// The steps of go(), in MesoLaw2.cpp: the normal force (with its energy when tracked), then
 	// sliding, rolling and torsion from the contact's kinematics.
 	meso::NormalForce normalStep(MesoPhys& phys, const meso::PairParams& p, Real delta, Real vn);
 	void
