@@ -49,4 +49,34 @@ inline Eigen::Vector3d nearestOnTriangle(const Eigen::Vector3d& p, const Eigen::
 	return a + (vb / denom) * ab + (vc / denom) * ac; // inside the face
 }
 
+// Whether p (a point of the triangle) lies on one of its edges, within tol: only such a point can be
+// another facet's too, unless the facets overlap.
+inline bool onTriangleEdge(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double tol)
+{
+	const double t2 = tol * tol;
+	return (nearestOnSegment(p, a, b) - p).squaredNorm() <= t2 || (nearestOnSegment(p, b, c) - p).squaredNorm() <= t2
+	        || (nearestOnSegment(p, c, a) - p).squaredNorm() <= t2;
+}
+
+// Whether a facet's contact at p (its nearest point to a sphere's centre) is left to another facet
+// (a, b, c) of the same sphere: only if p lies on that facet too (within tol), which then holds the
+// contact at its own nearest point q: nearer when q is not p (a sphere over one facet near the edge
+// it shares with this one), or the same point (a sphere over the shared edge or a convex edge),
+// where the smaller id keeps it. One contact per surface that is flat or convex there, as one large
+// facet would give; facets meeting in a valley touch the sphere at separate points and keep both.
+inline bool leftToOtherFacet(
+        const Eigen::Vector3d& p,
+        int                    id,
+        const Eigen::Vector3d& centre,
+        const Eigen::Vector3d& a,
+        const Eigen::Vector3d& b,
+        const Eigen::Vector3d& c,
+        int                    otherId,
+        double                 tol)
+{
+	if ((nearestOnTriangle(p, a, b, c) - p).squaredNorm() > tol * tol) return false;
+	const Eigen::Vector3d q = nearestOnTriangle(centre, a, b, c);
+	return (q - p).squaredNorm() > tol * tol || otherId < id;
+}
+
 } // namespace meso

@@ -2,6 +2,7 @@
 #include "../core/SurfaceDistance.hpp"
 #include "PyRelease.hpp"
 
+#include <core/BodyContainer.hpp>
 #include <core/Interaction.hpp>
 #include <core/Scene.hpp>
 #include <cmath>
@@ -65,6 +66,44 @@ namespace {
 	}
 }
 
+namespace {
+	// How near two points computed in two facets' frames count as one (their rounding, with margin).
+	double edgeTolerance(Real radius, const Vector3r& centre) { return 1e-9 * double(radius + centre.norm()); }
+
+	// The facet's vertices in global coordinates.
+	void corners(const Facet& f, const State& s, Eigen::Vector3d (&out)[3])
+	{
+		const Matrix3r r = s.ori.toRotationMatrix();
+		for (int k = 0; k < 3; ++k)
+			out[k] = toEigen(s.pos + r * f.vertices[k]);
+	}
+}
+
+bool Ig2_Facet_Sphere_MesoScGeom::leftToOtherFacet(const Vector3r& p, const Vector3r& centre, Real radius, const Vector3r& shift2, const Interaction& c) const
+{
+	const shared_ptr<Body>& b1       = Body::byId(c.getId1(), scene);
+	const bool              facet1   = b1 && dynamic_cast<const Facet*>(b1->shape.get());
+	const Body::id_t        facetId  = facet1 ? c.getId1() : c.getId2();
+	const Body::id_t        sphereId = facet1 ? c.getId2() : c.getId1();
+	const shared_ptr<Body>& sphere   = Body::byId(sphereId, scene);
+	if (!sphere) return false;
+	const double tol = edgeTolerance(radius, centre);
+	for (const auto& [otherId, other] : sphere->intrs) {
+		if (otherId == facetId || !other) continue;
+		const shared_ptr<Body>& b = Body::byId(otherId, scene);
+		const auto*             f = b ? dynamic_cast<const Facet*>(b->shape.get()) : nullptr;
+		if (!f) continue;
+		// The sphere as the other facet sees it (periodic cells: that interaction's own image).
+		Vector3r shift = Vector3r::Zero();
+		if (scene->isPeriodic) shift = (other->getId1() == sphereId ? -1. : 1.) * scene->cell->intrShiftPos(other->cellDist);
+		Eigen::Vector3d v[3];
+		corners(*f, *b->state, v);
+		const Eigen::Vector3d move = toEigen(shift - shift2);
+		if (meso::leftToOtherFacet(toEigen(p) + move, facetId, toEigen(centre) + move, v[0], v[1], v[2], otherId, tol)) return true;
+	}
+	return false;
+}
+
 bool Ig2_Facet_Sphere_MesoScGeom::geometry(
         const Facet& facet, Real radius, const State& s1, const State& s2, const Vector3r& shift2, bool force, const shared_ptr<Interaction>& c, bool sixD)
 {
@@ -78,6 +117,10 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	const Real     dist     = branch.norm();
 	const Real     overlap  = radius - dist;
 	if (!c->isReal() && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
+	// One contact per surface: a point on an edge may be another facet's, which then holds it.
+	if (meso::onTriangleEdge(toEigen(nearest), toEigen(v[0]), toEigen(v[1]), toEigen(v[2]), edgeTolerance(radius, centre))
+	    && leftToOtherFacet(s1.pos + toGlobal * nearest, centre, radius, shift2, *c))
+		return false;
 	if (dist > 1e-12 * radius) branch /= dist;
 	else { // the centre on the facet: the facet's own normal, toward the side the sphere came from
 		branch = (v[1] - v[0]).cross(v[2] - v[1]).normalized();

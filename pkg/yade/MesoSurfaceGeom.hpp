@@ -61,6 +61,9 @@ protected:
 	        bool                           force,
 	        const shared_ptr<Interaction>& c,
 	        bool                           sixD);
+	// Whether another facet of the sphere holds this contact (meso::leftToOtherFacet): p the nearest
+	// point, centre the sphere's, both in this pair's image of the sphere (shift2).
+	bool leftToOtherFacet(const Vector3r& p, const Vector3r& centre, Real radius, const Vector3r& shift2, const Interaction& c) const;
 
 public:
 	MESO_SURFACE_GO
@@ -70,7 +73,10 @@ public:
 		"Create/update a :yref:`ScGeom` of a :yref:`Facet` and a :yref:`Sphere` (yade-meso): YADE's "
 		":yref:`Ig2_Facet_Sphere_ScGeom` (shrinkFactor 0, not hertzian) with a detection distance, for the pull-in of reversible "
 		"adhesion. The normal points from the facet's nearest point to the sphere's centre; the overlap is the radius minus "
-		"that distance (negative across a gap); radius1 = 2 radius, radius2 = radius.",
+		"that distance (negative across a gap); radius1 = 2 radius, radius2 = radius. One contact per surface: a sphere over the "
+		"edge two facets share (coplanar, or a convex edge), or over one facet near that edge, touches the mesh at one point, "
+		"which only one facet holds (the nearer; of two at the same point the smaller id), as one large facet would; facets "
+		"meeting in a valley touch the sphere at separate points and keep a contact each.",
 		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC))
 	);
 	// clang-format on

@@ -84,3 +84,62 @@ TEST(NearestOnTriangle, DegenerateTrianglesAreTheirEdges)
 		EXPECT_TRUE(meso::nearestOnTriangle(p, a, a, a).isApprox(a)); // a point
 	}
 }
+
+// One contact per surface (meso::leftToOtherFacet): which facets of a mesh keep a sphere's contact.
+namespace {
+struct Tri {
+	V   a, b, c;
+	int id;
+};
+// The facets that keep the contact of a sphere at `centre`: those whose nearest point no other
+// facet in range takes (each facet's own view, as the functor decides it).
+std::vector<int> keepers(const V& centre, const std::vector<Tri>& mesh, double range)
+{
+	std::vector<int> kept;
+	for (const Tri& f : mesh) {
+		const V p = meso::nearestOnTriangle(centre, f.a, f.b, f.c);
+		if ((centre - p).norm() > range) continue;
+		bool left = false;
+		for (const Tri& g : mesh)
+			if (g.id != f.id && meso::leftToOtherFacet(p, f.id, centre, g.a, g.b, g.c, g.id, 1e-12)) left = true;
+		if (!left) kept.push_back(f.id);
+	}
+	return kept;
+}
+} // namespace
+
+TEST(LeftToOtherFacet, OneContactOverAFlatSquareOfTwoTriangles)
+{
+	// The unit square z = 0 as two triangles sharing the diagonal (0,0)-(1,1), as geom.facetBox makes it.
+	const std::vector<Tri> square = { { V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), 7 }, { V(0, 0, 0), V(1, 1, 0), V(0, 1, 0), 3 } };
+	EXPECT_EQ(keepers(V(0.5, 0.5, 0.1), square, 0.2), std::vector<int>({ 3 }));         // over the diagonal: the smaller id
+	EXPECT_EQ(keepers(V(0.6, 0.5, 0.1), square, 0.2), std::vector<int>({ 7 }));         // over 7 near the diagonal: 7 only
+	EXPECT_EQ(keepers(V(0.5, 0.6, 0.1), square, 0.2), std::vector<int>({ 3 }));         // over 3 near it: 3 only
+	EXPECT_EQ(keepers(V(0.5 + 1e-13, 0.5, 0.1), square, 0.2), std::vector<int>({ 3 })); // within rounding of the edge: one
+	EXPECT_EQ(keepers(V(0, 0, 0.1), square, 0.2), std::vector<int>({ 3 }));             // over the shared vertex
+	EXPECT_EQ(keepers(V(1.05, 0.5, 0.05), square, 0.2), std::vector<int>({ 7 }));       // beside the outer edge: 7's edge only
+}
+
+TEST(LeftToOtherFacet, ConvexEdgeOnceValleyTwice)
+{
+	// Two faces meeting at the x axis at 90 degrees: y = 0 (z >= 0) and z = 0 (y >= 0).
+	const Tri              wallY0 { V(0, 0, 0), V(2, 0, 0), V(0, 0, 2), 1 }, floorZ0 { V(0, 0, 0), V(0, 2, 0), V(2, 0, 0), 2 };
+	const std::vector<Tri> corner = { wallY0, floorZ0 };
+	EXPECT_EQ(keepers(V(1, 0.1, 0.1), corner, 0.2), std::vector<int>({ 1, 2 })); // in the valley: a contact on each face
+	EXPECT_EQ(keepers(V(1, -0.1, -0.1), corner, 0.2), std::vector<int>({ 1 }));  // outside the ridge: one, on the edge
+	EXPECT_EQ(keepers(V(1, -0.1, 0.05), corner, 0.2), std::vector<int>({ 1 }));  // against the wall's face from outside
+	// A facet far away keeps its own contact (the sphere's point is not on it).
+	const std::vector<Tri> apart = { floorZ0, { V(0, 0, 0.3), V(0, 2, 0.3), V(2, 0, 0.3), 5 } };
+	EXPECT_EQ(keepers(V(0.5, 0.5, 0.15), apart, 0.2), std::vector<int>({ 2, 5 }));
+}
+
+TEST(OnTriangleEdge, EdgesAndVerticesNotTheFace)
+{
+	const V a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+	EXPECT_TRUE(meso::onTriangleEdge(V(0.5, 0, 0), a, b, c, 1e-12));    // edge ab
+	EXPECT_TRUE(meso::onTriangleEdge(V(0.5, 0.5, 0), a, b, c, 1e-12));  // edge bc
+	EXPECT_TRUE(meso::onTriangleEdge(c, a, b, c, 1e-12));               // a vertex
+	EXPECT_FALSE(meso::onTriangleEdge(V(0.2, 0.2, 0), a, b, c, 1e-12)); // the face
+	EXPECT_FALSE(meso::onTriangleEdge(V(0.5, 1e-9, 0), a, b, c, 1e-12));
+	EXPECT_TRUE(meso::onTriangleEdge(V(0.5, 1e-13, 0), a, b, c, 1e-12));
+}

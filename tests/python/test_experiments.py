@@ -73,6 +73,11 @@ class Experiments(unittest.TestCase):
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
                     "protocol": {"packing": "frictionless"}})
             _write(os.path.join(t, "profile", "tested", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.19,-0.03\n3,0.2,-0.01\n")
+            # E4: the same pull through grips, listed after the walls' pull of its sample
+            _write(os.path.join(t, "profile", "tested-grips1", "profile.json"),
+                   {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
+                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8}})
+            _write(os.path.join(t, "profile", "tested-grips1", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.2,-0.02\n")
             one = experiments.e1(t)
             three, five_six = experiments.e3(t), experiments.e56(t, one)
         self.assertEqual(one[0]["first_peak_Dx"], 0.05)
@@ -81,7 +86,9 @@ class Experiments(unittest.TestCase):
         self.assertEqual((v["variant"], v["first_peak_Dx"], v["returns_at_Dx"]), ("force-return", 0.06, [0.04, 0.05]))
         self.assertAlmostEqual(v["turnaround_over_first"], 0.4, places=12)  # the out stroke ends at -0.02
         self.assertEqual(v["E1"]["first_peak"], -0.06)
-        (p,) = three
+        p, g = three
+        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0", "tested-grips1"))
+        self.assertAlmostEqual(g["F02_over_peak"], 0.4, places=12)
         self.assertEqual((p["sinter"], p["seed"], p["record_Dx"], p["max_tensile_affine"]), (0.02, 1, 0.03, 0.4))
         self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)
         self.assertEqual((p["strain_at_peak"], p["strain_2x_from_Dx"]), (1.5, 0.06))

@@ -17,6 +17,9 @@ from a campaign tree's committed files):
 - E3, non-affinity up to the peak (``profile/<sample>/``, mesostudies.tablet.profile): the pull's
   peak, F(0.2)/F_peak, where the largest local strain first reaches 2x the affine one, and the
   start's contacts on the tensile branch and open at the peak, measured against the affine stretch.
+- E4, the same pulls and cycles loaded through glued particles instead of the flat walls (grips
+  of 1 d0, ``grips1-``; uniaxial.Test.use_grips): the profiles in ``profile/<sample>-grips1/``
+  (E3's measures), the cycles in ``variants/<sample>/`` beside E1's.
 - E5 and E6, test variants on the same states (``variants/<sample>/``): kc/kp 0.5 instead of 0.2
   (``kc0.5-`` runs), and cycles back to the start's force instead of Dx = 0 (``force-return-``
   runs), each beside the E1 run of its sample, amplitude and period.
@@ -129,15 +132,16 @@ def e3(tree):
         f02 = _force_at(pull, 0.2)
         at_peak = min(info["records"], key=lambda r: abs(r["Dx"] - info["peak_Dx"]))
         proto = info["protocol"]
+        grips = info.get("grips")
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
-                     "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                     "loading": f"grips {grips['thickness_d0']:g} d0" if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
                      "strain_2x_from_Dx": persistent_from(info["records"], 2.0),
                      "strain_at_peak": at_peak["max_strain_over_affine"], "strain_at_peak_where_d0": at_peak["at_d0"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
-    return sorted(rows, key=lambda r: (r["sinter"], r["seed"]))
+    return sorted(rows, key=lambda r: (r["sinter"], r["seed"], r["loading"] != "walls"))
 
 
 def e56(tree, one):
@@ -188,22 +192,23 @@ def markdown(one, two, label, three=(), five_six=()):
                   f"{_f(r['last_chain_Dx'], '{:.2f}')} | {_f(r['crack_from_wall_d0'], '{:.2f}')} | {_f(r['affine_peak_Dx'], '{:.3f}')} | "
                   f"{_f(r['affine_F02_over_peak'], '{:.2f}')} |")
     if three:
-        md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`)", "",
-               "| sample | d0 p_s/kp | seed | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
+        md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`), and E4's pulls through grips", "",
+               "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
                "(where, from the left face [d0]) | stays >= 2x affine from Dx "
                "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
                "| most on -kc delta: measured / affine |",
-               "|---|---|---|---|---|---|---|---|---|---|---|"]
+               "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
-            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f} | "
+            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f} | "
                       f"{_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['strain_at_peak'], '{:.1f}')} "
                       f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
                       f"{r['measured']['tensile']:.1%} / {r['affine']['tensile']:.1%} | "
                       f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
                       f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")
     if five_six:
-        md += ["", "## E5 and E6: the same states, kc/kp 0.5 (kc0.5) and cycles back to the start's force "
-               "(force-return); in brackets the E1 run of the same sample, amplitude and period", "",
+        md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1), kc/kp 0.5 "
+               "(kc0.5) and cycles back to the start's force (force-return); in brackets the E1 run of the same sample, "
+               "amplitude and period", "",
                "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
                "(k2 = k1 to kp) | at Dx | F at the first turn / first peak "
                "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
