@@ -76,7 +76,7 @@ class Experiments(unittest.TestCase):
             # E4: the same pull through grips, listed after the walls' pull of its sample
             _write(os.path.join(t, "profile", "tested-grips1", "profile.json"),
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
-                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8}})
+                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8, "free": 40}})
             _write(os.path.join(t, "profile", "tested-grips1", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.2,-0.02\n")
             one = experiments.e1(t)
             three, five_six = experiments.e3(t), experiments.e56(t, one)
@@ -87,7 +87,7 @@ class Experiments(unittest.TestCase):
         self.assertAlmostEqual(v["turnaround_over_first"], 0.4, places=12)  # the out stroke ends at -0.02
         self.assertEqual(v["E1"]["first_peak"], -0.06)
         p, g = three
-        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0", "tested-grips1"))
+        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0 (9 + 8 of 57 particles)", "tested-grips1"))
         self.assertAlmostEqual(g["F02_over_peak"], 0.4, places=12)
         self.assertEqual((p["sinter"], p["seed"], p["record_Dx"], p["max_tensile_affine"]), (0.02, 1, 0.03, 0.4))
         self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)

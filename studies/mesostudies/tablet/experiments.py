@@ -134,14 +134,15 @@ def e3(tree):
         proto = info["protocol"]
         grips = info.get("grips")
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
-                     "loading": f"grips {grips['thickness_d0']:g} d0" if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                     "loading": (f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
+                                 f"{grips['left'] + grips['right'] + grips['free']} particles)") if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
                      "strain_2x_from_Dx": persistent_from(info["records"], 2.0),
                      "strain_at_peak": at_peak["max_strain_over_affine"], "strain_at_peak_where_d0": at_peak["at_d0"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
-    return sorted(rows, key=lambda r: (r["sinter"], r["seed"], r["loading"] != "walls"))
+    return sorted(rows, key=lambda r: (r["sinter"], r["seed"], r["loading"] != "walls"))  # E4's beside E3's
 
 
 def e56(tree, one):
