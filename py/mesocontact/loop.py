@@ -5,13 +5,20 @@ A PyRunner runs a command string in yade's ``__main__``. ``runner(fn, period, la
 there, so no name is left in ``builtins`` or ``__main__``, and the callable may be a closure over
 its own state. ``register`` changes what a label's runner calls (e.g. a driver's next phase).
 
+A callable that raises does not leave a half-applied step (YADE stops at the failing engine, so
+the engines before it would run twice when the run resumes): the step is completed, the error is
+printed at once, and the run stops at the start of the next step with a ``RuntimeError`` that
+names the runner, the iteration and the error, before any engine of that step acts. Resuming
+after a fix (``register`` or ``runner`` again, then ``O.run``) repeats no step.
+
 A scene saved with such a runner and loaded in another process finds its label unregistered; the
-runner then stops the run with a ``RuntimeError`` that names the label (install it again after
-``O.load``).
+runner then stops the run the same way, naming the label (install it again after ``O.load``).
 """
 
 _CALLBACKS = {}
 _COMMAND = "__import__('mesocontact.loop').loop.call(%r)"
+_RAISE = "__import__('mesocontact.loop').loop.raise_pending()"
+_PENDING = []  # (label, iteration, error) of a callback that failed: raised at the next step's start
 
 
 def runner(fn, period, label):
@@ -58,9 +65,48 @@ def call(label):
     try:
         fn = _CALLBACKS[label]
     except KeyError:
-        raise RuntimeError(f"PyRunner {label!r}: no callable registered under this label in this process "
-                           f"(a scene loaded from a file? install its runner again with mesocontact.loop.runner)") from None
-    fn()
+        _defer(label, RuntimeError(f"PyRunner {label!r}: no callable registered under this label in this process "
+                                   f"(a scene loaded from a file? install its runner again with mesocontact.loop.runner)"))
+        return
+    try:
+        fn()
+    except Exception as exc:  # noqa: BLE001 - any error of the user's callable is deferred, none is lost
+        _defer(label, exc)
+
+
+def _defer(label, exc):
+    """Prints the error now and puts a runner first in O.engines that raises it at the start of the
+    next step (this step's other engines still act)."""
+    import sys
+    import traceback
+    from yade import O
+    from yade import wrapper as w
+    print(f"mesocontact.loop: the runner {label!r} raised at iteration {O.iter}; this step is completed and the run "
+          f"stops before the next:", file=sys.stderr)
+    traceback.print_exception(type(exc), exc, exc.__traceback__, file=sys.stderr)
+    if not _PENDING:
+        O.engines = [w.PyRunner(iterPeriod=1, command=_RAISE)] + [e for e in O.engines if not _is_raiser(e)]
+    _PENDING.append((label, O.iter, exc))
+
+
+def _is_raiser(engine):
+    from yade import wrapper as w
+    return isinstance(engine, w.PyRunner) and engine.command == _RAISE
+
+
+def raise_pending():
+    """The first engine of the step after a callback failed: removes itself and raises the error
+    (a scene saved with it and loaded elsewhere, with nothing pending, just removes it)."""
+    from yade import O
+    O.engines = [e for e in O.engines if not _is_raiser(e)]
+    if not _PENDING:
+        return
+    (label, it, exc), rest = _PENDING[0], len(_PENDING) - 1
+    _PENDING.clear()
+    more = f" (and {rest} more error{'s' if rest > 1 else ''} in that step, printed then)" if rest else ""
+    raise RuntimeError(f"the runner {label!r} raised at iteration {it}: {type(exc).__name__}: {exc}{more}. That step "
+                       f"was completed; the run stopped before iteration {O.iter}: fix the callable (loop.register) "
+                       f"and run on, no step is repeated") from exc
 
 
 def registered():

@@ -9,7 +9,8 @@
 #   refuses it;
 # - interactionDetectionFactor of the surface functors below 1 or not finite: spheres passed through;
 # - facets with two coincident vertices (slivers) were never detected;
-# - loop.runner took labels that replace O or sphere, and periods that never run or fail unnamed.
+# - loop.runner took labels that replace O or sphere, and periods that never run or fail unnamed;
+# - a loop callback that raised left a half-applied step, which resuming ran twice (item10).
 import math
 import sys
 
@@ -286,9 +287,51 @@ def item9():
     check(store.restore() == 1 and O.interactions[0, 1].phys.kc == 100, "the same materials restore")
 
 
+# 10. (the item 7) A loop callback that raises: YADE stopped at the failing engine, so the
+#    step was half applied (O.iter not advanced) and resuming ran its first engines again (x off
+#    by one step). Now the step is completed, the run stops before the next step with an error
+#    naming the runner, and resuming after a fix gives the run without the failure, to the bit.
+def item10():
+    from mesocontact import loop
+    seen = []
+
+    def run(fail_at):
+        pair(six=True, tangential=True)
+        seen.clear()
+
+        def callback():
+            if O.iter == fail_at:
+                raise ValueError("probe failure")
+            seen.append(O.iter)
+        O.engines = O.engines + [loop.runner(callback, 1, "probeFailing")]
+        until_touch(1)  # the runner after Newton; the contact's springs load every step
+        start = O.iter
+        try:
+            with Stderr() as err:
+                O.run(40, True)
+            error = None
+        except RuntimeError as e:
+            error = str(e)
+        return start, error, err.text
+
+    start, error, _ = run(None)
+    reference = outcome() + [(O.iter,)]
+    fail = start + 10
+    _, error, text = run(fail)
+    check(error is not None and "'probeFailing' raised at iteration %d" % fail in error and "probe failure" in error,
+          "a raising callback stops the run with an error naming the runner, the iteration and the error", str(error)[:160])
+    check(O.iter == fail + 1, "the failing step was completed (O.iter advanced past it)", f"O.iter {O.iter}, failed at {fail}")
+    check("probe failure" in text, "the error is printed when it happens", text[:120])
+    loop.register("probeFailing", lambda: seen.append(O.iter))  # the fix
+    O.run(start + 40 - O.iter, True)
+    check(outcome() + [(O.iter,)] == reference, "resuming after the fix repeats no step: the run without the failure, to the bit")
+    check([e for e in O.engines if isinstance(e, w.PyRunner) and "raise_pending" in e.command] == [],
+          "the engine that raised the error is gone")
+
+
 # All items, or those named on the command line (item1 ... item7), e.g. to show one before a fix:
 #   yade -n -x tests/yade/test_reliability.py item2
-ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7, item8, item9)}
+ITEMS = {f.__name__: f for f in (item1, item2, item3, item4, item5, item6, item7, item8, item9, item10)}
 for name in [a for a in sys.argv[1:] if a in ITEMS] or list(ITEMS):
     ITEMS[name]()
 finish()
