@@ -76,7 +76,8 @@ class Experiments(unittest.TestCase):
             # E4: the same pull through grips, listed after the walls' pull of its sample
             _write(os.path.join(t, "profile", "tested-grips1", "profile.json"),
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
-                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8, "free": 40}})
+                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8, "free": 40},
+                    "L0": 0.1})
             _write(os.path.join(t, "profile", "tested-grips1", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.2,-0.02\n")
             one = experiments.e1(t)
             three, five_six = experiments.e3(t), experiments.e56(t, one)
@@ -87,8 +88,12 @@ class Experiments(unittest.TestCase):
         self.assertAlmostEqual(v["turnaround_over_first"], 0.4, places=12)  # the out stroke ends at -0.02
         self.assertEqual(v["E1"]["first_peak"], -0.06)
         p, g = three
-        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0 (9 + 8 of 57 particles)", "tested-grips1"))
+        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0 (9 + 8 of 57 particles; free 0.80 of L0)", "tested-grips1"))
         self.assertAlmostEqual(g["F02_over_peak"], 0.4, places=12)
+        # L0 = 10 d0, grips of 1 d0: 8 d0 free; the recorded 1.5 at the peak is 1.2 of the free part's even
+        # stretch, and "2x the free part's" is 2.5 recorded: first and for good at Dx 0.06 (2.5 >= 2.5)
+        self.assertAlmostEqual(g["strain_at_peak"], 1.2, places=12)
+        self.assertEqual(g["strain_2x_from_Dx"], 0.06)
         self.assertEqual((p["sinter"], p["seed"], p["record_Dx"], p["max_tensile_affine"]), (0.02, 1, 0.03, 0.4))
         self.assertAlmostEqual(p["F02_over_peak"], 0.2, places=12)
         self.assertEqual((p["strain_at_peak"], p["strain_2x_from_Dx"]), (1.5, 0.06))

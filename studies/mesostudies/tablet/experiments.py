@@ -45,6 +45,7 @@ def pull_ratio(kc_new, kc_old=KC_OVER_KP):
     and kp (one at the plastic limit). Returns (ratio at k2 = k1, ratio at k2 = kp)."""
     return tuple(theory.largest_pull(k2, kc_new, 1.0) / theory.largest_pull(k2, kc_old, 1.0) for k2 in (K1_OVER_KP, 1.0))
 PAPER_L0 = 0.115  # the paper's sample length [mm]
+D0_MM = 0.01  # the primaries' mean diameter [mm] (mesostudies.tablet.sample.D0)
 
 
 def e1(tree):
@@ -133,12 +134,16 @@ def e3(tree):
         at_peak = min(info["records"], key=lambda r: abs(r["Dx"] - info["peak_Dx"]))
         proto = info["protocol"]
         grips = info.get("grips")
+        # The profile divides the local strain by Dx d0 / L0; through grips only L0 - 2 t d0 is free
+        # to stretch, whose even stretch is L0 / (L0 - 2 t d0) times that: the strains below are the free part's.
+        free = 1.0 if not grips else 1.0 - 2 * grips["thickness_d0"] * D0_MM / info["L0"]
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
                      "loading": (f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
-                                 f"{grips['left'] + grips['right'] + grips['free']} particles)") if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                                 f"{grips['left'] + grips['right'] + grips['free']} particles; free {free:.2f} of L0)")
+                     if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
-                     "strain_2x_from_Dx": persistent_from(info["records"], 2.0),
-                     "strain_at_peak": at_peak["max_strain_over_affine"], "strain_at_peak_where_d0": at_peak["at_d0"],
+                     "free_fraction": free, "strain_2x_from_Dx": persistent_from(info["records"], 2.0 / free),
+                     "strain_at_peak": at_peak["max_strain_over_affine"] * free if at_peak["max_strain_over_affine"] else None, "strain_at_peak_where_d0": at_peak["at_d0"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
@@ -194,6 +199,10 @@ def markdown(one, two, label, three=(), five_six=()):
                   f"{_f(r['affine_F02_over_peak'], '{:.2f}')} |")
     if three:
         md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`), and E4's pulls through grips", "",
+               "Through grips of thickness t only L0 - 2 t d0 is free to stretch: the local strains are given against "
+               "the free part's even stretch (the recorded ratio times (L0 - 2 t d0)/L0); the affine contact counts "
+               "remain those of a stretch Dx d0/L0 of every contact outside the grips, which understates the free "
+               "part's (free fraction in the loading column).", "",
                "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
                "(where, from the left face [d0]) | stays >= 2x affine from Dx "
                "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
