@@ -17,15 +17,23 @@ def reset():
         O.tags[k] = v
 
 
-def engines(gravity=(0, 0, -9.81)):
+def engines(gravity=(0, 0, -9.81), sorted_loop=False):
     """The engine loop of a scene of spheres and boxes with the meso law, the collider and the
-    integrator labelled as yade.mpy looks them up (``collider``, ``newton``)."""
+    integrator labelled as yade.mpy looks them up (``collider``, ``newton``). ``sorted_loop``:
+    visit the contacts in (id1, id2) order every step (YADE's
+    ``InteractionLoop.loopOnSortedInteractions``), so that a run continued from a saved file is
+    the uninterrupted run to the bit with any law (YADE saves no potential interaction, and the
+    collider makes them again in another order); it costs 2.6 times the step (2000 spheres on a
+    floor, scripts/restart_check.py and docs/usage.md)."""
     from yade import wrapper as w
+    if not isinstance(sorted_loop, bool):
+        raise TypeError(f"sorted_loop = {sorted_loop!r} is invalid: must be True or False")
     return [
         w.ForceResetter(),
         w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()], label="collider"),
         w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
-                          [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                          [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()],
+                          loopOnSortedInteractions=sorted_loop),
         w.NewtonIntegrator(damping=0, gravity=gravity, label="newton"),
     ]
 
