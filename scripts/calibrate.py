@@ -70,11 +70,39 @@ def parse(argv):
     p.add_argument("--no-yade-check", action="store_true", help="skip the YADE pair collisions")
     p.add_argument("--truth", default=None, help=argparse.SUPPRESS)  # synthetic studies: a JSON of the true parameters, drawn
     p.add_argument("--yade-check", default=None, help=argparse.SUPPRESS)  # internal: run inside YADE on this JSON
-    a = p.parse_args(argv)
+    # "--radius -1e-3": argparse takes a negative number for an option unless it looks like one of its
+    # own; join such values to their option, so that the value is refused by name below, not read as missing.
+    argv = list(argv)
+    for k in range(len(argv) - 1):
+        if argv[k] is not None and argv[k + 1] is not None and argv[k].startswith("--") and "=" not in argv[k] \
+                and argv[k + 1].startswith("-") and _is_number(argv[k + 1]):
+            argv[k], argv[k + 1] = argv[k] + "=" + argv[k + 1], None
+    a = p.parse_args([x for x in argv if x is not None])
     for n in ("starts", "bootstrap"):
         if getattr(a, n) < (1 if n == "starts" else 0):
             p.error(f"--{n} {getattr(a, n)} is invalid: must be >= {1 if n == 'starts' else 0}")
+    for n, what in (("radius", "a particle radius [m]"), ("density", "a density [kg/m^3]")):
+        v = getattr(a, n)
+        if not (math.isfinite(v) and v > 0):
+            p.error(f"--{n} {v!r} is invalid: must be {what}, finite and > 0")
+    # The output folder and the YADE launcher are checked now, not after a fit of seconds to minutes.
+    if os.path.exists(a.out) and not os.path.isdir(a.out):
+        p.error(f"--out {a.out}: exists and is not a directory")
+    try:
+        os.makedirs(a.out, exist_ok=True)
+    except OSError as e:
+        p.error(f"--out {a.out}: cannot be made ({e.strerror})")
+    if not a.no_yade_check and a.yade is not None and not (os.access(a.yade, os.X_OK) or shutil.which(a.yade)):
+        p.error(f"--yade {a.yade}: not an executable (or pass --no-yade-check)")
     return a
+
+
+def _is_number(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
 
 
 def yade_side(path):

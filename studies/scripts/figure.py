@@ -6,6 +6,7 @@
 # tablet of Appendix F, hours of computing, runs cached in --tablet-out); short: Figs. 5-6 of "Sticking
 # of adhesive particles in elasto-plastic collisions". --quick: a few points per figure.
 import argparse
+import os
 import sys
 
 from mesocontact import batch
@@ -25,6 +26,9 @@ a = p.parse_args(batch.argv(sys.argv[1:], positional="number", number=None, pape
                             all=False, no_tablet=False, quick=False, tablet_out=None))
 if a.all == (a.number is not None):
     p.error("give a figure number or --all (not both)")
+for option, path in (("--out", a.out), ("--tablet-out", a.tablet_out)):
+    if path and os.path.exists(path) and not os.path.isdir(path):  # found now, not after the first figure's runs
+        p.error(f"{option} {path}: exists and is not a directory")
 if not a.all:
     try:
         atlas.known(a.paper, a.number)

@@ -11,14 +11,22 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 LANES=2 YADE=build/yade-meso OUT=results/tablet TABLE=studies/batch/tablet-campaign.table DOCS=campaigns/tablet/chosen
+fail() { echo "tablet_campaign.sh: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
-    --lanes) LANES=$2 ;; --yade) YADE=$2 ;; --out) OUT=$2 ;; --table) TABLE=$2 ;; --docs) DOCS=$2 ;;
-    *) echo "tablet_campaign.sh: unknown option $1 (--lanes, --yade, --out, --table, --docs)" >&2; exit 2 ;;
+    --lanes|--yade|--out|--table|--docs)
+      [ $# -ge 2 ] && [ -n "$2" ] && [ "${2#--}" = "$2" ] || fail "$1 needs a value"
+      case "$1" in --lanes) LANES=$2 ;; --yade) YADE=$2 ;; --out) OUT=$2 ;; --table) TABLE=$2 ;; --docs) DOCS=$2 ;; esac
+      shift 2 ;;
+    *) fail "unknown option $1 (--lanes, --yade, --out, --table, --docs)" ;;
   esac
-  shift 2
 done
-case "$LANES" in ''|*[!0-9]*|0) echo "tablet_campaign.sh: --lanes $LANES is invalid: a positive integer" >&2; exit 2 ;; esac
+# Everything checked before the sample's preparation (minutes), not after it.
+case "$LANES" in ''|*[!0-9]*|0) fail "--lanes $LANES is invalid: a positive integer" ;; esac
+[ -f "$TABLE" ] || fail "--table $TABLE: no such file"
+[ -x "$YADE" ] || command -v "$YADE" > /dev/null || fail "--yade $YADE: not an executable"
+case "$OUT" in *[\'\"\\]*|*[[:space:]]*) fail "--out $OUT is invalid: no quotes, backslashes or blanks (it becomes a cell of the yade-batch table)" ;; esac
+[ "$(realpath -m "$OUT")" != "$(realpath -m "$DOCS")" ] || fail "--docs $DOCS is --out: the data would be copied onto themselves"
 BATCH=${YADE_BATCH_COMMAND:-yade-batch}  # the yade-batch that matches YADE (Debian's: yade-batch)
 mkdir -p "$OUT"
 start=$(date +%s)

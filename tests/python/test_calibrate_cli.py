@@ -71,6 +71,25 @@ class Cli(unittest.TestCase):
             self.assertIn(words, r.stderr, args)
             self.assertNotIn("Traceback", r.stderr, args)
 
+    def test_refused_before_the_fit(self):
+        """A negative radius is named (argparse read it as a missing value), and an --out that is a file
+        or a --yade that does not exist are refused before the fit, not after its seconds."""
+        import time
+        data = self.write("ok.csv", "v,e,sigma\n0.1,0.9,0.01\n0.2,0.5,0.01\n0.3,0.4,0.01\n0.4,0.35,0.01\n")
+        afile = self.write("afile", "")
+        base = [data, "--density", "2500", "--k1", "100"]
+        for args, words in (([*base, "--radius", "-1e-3"], "--radius -0.001 is invalid"),
+                            ([*base, "--radius", "1e-3", "--out", afile], "exists and is not a directory"),
+                            ([*base, "--radius", "1e-3", "--out", os.path.join(afile, "x")], "cannot be made"),
+                            ([*base, "--radius", "1e-3", "--out", os.path.join(self.dir, "y"), "--yade", "/no/yade"],
+                             "--yade /no/yade: not an executable")):
+            t0 = time.time()
+            r = run(*args)
+            self.assertEqual(r.returncode, 2, args)
+            self.assertIn(words, r.stderr, args)
+            self.assertNotIn("fit", r.stdout.lower(), args)  # nothing of the fit was printed
+            self.assertLess(time.time() - t0, 5.0, args)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -89,5 +89,16 @@ for args, says in ((["4"], "figure 4 of the long paper"), (["7", "--paper", "sho
     print(("ok   " if ok else "FAIL ") + f"figure.py {' '.join(args)}: rc {rc}, {secs:.0f} s: {says!r} in the message", flush=True)
     if not ok:
         failures.append(f"figure.py {' '.join(args)}")
+# An output path that is a file: named at once, no traceback (issue #49 item 10).
+afile = os.path.join(tmp, "a-file")
+open(afile, "w").close()
+for script, args, says in (("figure.py", ["5", "--out", afile], "--out " + afile + ": exists and is not a directory"),
+                           ("tablet_restore.py", [os.path.join(ROOT, "campaigns", "tablet", "chosen"), afile],
+                            "a file, not a directory")):
+    rc, text, secs = run(script, *args)
+    ok = rc != 0 and says in text and "Traceback" not in text and "[atlas]" not in text
+    print(("ok   " if ok else "FAIL ") + f"{script} with a file for its output: rc {rc}: {says!r} in the message", flush=True)
+    if not ok:
+        failures.append(f"{script} output file")
 
 finish()

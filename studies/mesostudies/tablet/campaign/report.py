@@ -237,6 +237,8 @@ def restore(docsdir, outdir):
         raise ValueError(f"docsdir = {docsdir!r} is invalid: not a directory (the committed runs' folder)")
     if os.path.realpath(docsdir) == os.path.realpath(outdir):
         raise ValueError(f"outdir = {outdir!r} is invalid: the committed folder itself (restore into a results tree)")
+    if os.path.exists(outdir) and not os.path.isdir(outdir):
+        raise ValueError(f"outdir = {outdir!r} is invalid: a file, not a directory (the results tree to restore into)")
     restored = []
     for js in sorted(glob.glob(os.path.join(docsdir, "*.json"))):
         name = os.path.basename(js)[:-5]
