@@ -2,7 +2,9 @@
 # their types (constructor and assignment), the Ip2 and the background drag, the theory
 # functions, damaged save files and the tablet scripts' command-line values. Each input ends in
 # one of (categories 7-12 added for issue #32: updateAttrs with mixed keys, edited save files of
-# every class, contact bytes, extreme finite values, the Ip2's methods, a foreign IPhys): rejected clearly (ValueError/TypeError or argparse's error naming what is wrong),
+# every class, contact bytes, extreme finite values, the Ip2's methods, a foreign IPhys; 13-17 for
+# issue #49: phys and geometry assigned from Python, the contact store across geometry classes, the
+# surface functors' detection factor, degenerate and extreme facets and walls, the loop registry): rejected clearly (ValueError/TypeError or argparse's error naming what is wrong),
 # accepted and ran clean (finite state after a short collision, or a finite result), or other
 # (anything else: the count that must be 0). A crash ends the script (the count is then moot).
 #   yade -j1 -n -x scripts/fuzz_inputs.py [--n N] [--seed S] [--out FILE.json]
@@ -359,6 +361,144 @@ with quiet_fd2():
         kind = rng.choice(kinds)
         O.interactions[0, 1].phys = kind()
         count("phys replaced", "accepted and ran clean" if runs_clean(rng.choice([1, 20, 100])) else "other", f"{kind.__name__}")
+
+
+def falling_onto(surface, functor, v=0.05, steps=400):
+    """A sphere falling at v onto ``surface`` (a body) through ``functor``: finite throughout, and
+    whether it ever touched (a contact with the surface was real)."""
+    O.reset()
+    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=20, phiF=0.1, density=2000.0))
+    surface.material = O.materials[m]
+    sid = O.bodies.append(surface)
+    ball = O.bodies.append(utils.sphere((0, 0, 1.0e-3 + 2e-6), 1e-3, material=m))  # 40 steps from touching
+    O.bodies[ball].state.vel = (0, 0, -v)
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
+                 w.InteractionLoop([functor, w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]), w.NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    touched = False
+    for _ in range(steps // 20):
+        O.run(20, True)
+        touched = touched or (O.interactions.has(sid, ball) and O.interactions[sid, ball].isReal)
+    b = O.bodies[ball].state  # the sphere's state (a facet given a NaN vertex has a NaN position of its own)
+    return all(math.isfinite(x) for x in tuple(b.pos) + tuple(b.vel) + tuple(b.angVel)), touched
+
+
+with quiet_fd2():
+    # 13. Phys and geometry assigned from Python on live contacts (their own, another contact's, new
+    #     or of another class), then O.run: the run goes on clean, or the law remakes them.
+    for _ in range(args.n):
+        every_mechanism_pair(drag=rng.random() < 0.5)
+        O.bodies.append(utils.sphere((-2e-3 + 2e-5, 0, 0), 1e-3, material=0))
+        O.run(5, True)
+        i, j = O.interactions[0, 1], (O.interactions[0, 2] if O.interactions.has(0, 2) else O.interactions[0, 1])
+        what = rng.choice(["own phys", "other's phys", "new MesoPhys", "own geom", "other's geom", "new ScGeom",
+                           "new ScGeom6D", "phys of another class"])
+        if what == "own phys":
+            i.phys = i.phys
+        elif what == "other's phys":
+            i.phys = j.phys
+        elif what == "new MesoPhys":
+            i.phys = w.MesoPhys()
+        elif what == "own geom":
+            i.geom = i.geom
+        elif what == "other's geom":
+            i.geom = j.geom
+        elif what == "new ScGeom":
+            i.geom = w.ScGeom()
+        elif what == "new ScGeom6D":
+            i.geom = w.ScGeom6D()
+        else:
+            i.phys = rng.choice([w.FrictPhys, w.ViscElPhys, w.IPhys])()
+        del i, j
+        count("phys/geom from Python", "accepted and ran clean" if runs_clean(rng.choice([1, 30, 200])) else "other", what)
+    # 14. Contacts exported where the loop makes one geometry class, restored where it makes another.
+    geoms = {"ScGeom": w.Ig2_Sphere_Sphere_ScGeom, "ScGeom6D": w.Ig2_Sphere_Sphere_ScGeom6D}
+    for _ in range(args.n // 2):
+        a, b = rng.choice(sorted(geoms)), rng.choice(sorted(geoms))
+        every_mechanism_pair(drag=False)
+        O.engines[2].geomDispatcher.functors = [geoms[a]()]
+        O.interactions.clear()
+        O.run(5, True)
+        store = w.MesoContactStore()
+        data = store.exportContacts([0, 1])
+        every_mechanism_pair(drag=False)
+        O.engines[2].geomDispatcher.functors = [geoms[b]()]
+        O.interactions.clear()
+        O.engines[1]()
+        store.importContacts(data)
+        try:
+            store.restore()
+        except ValueError as e:
+            count("store across geometry classes", "rejected clearly" if a in str(e) and b in str(e) else "other", f"{a}->{b}: {e}")
+            continue
+        count("store across geometry classes", "accepted and ran clean" if a == b and runs_clean(50) else "other",
+              f"{a}->{b}: restored")
+    # 15. The surface functors' detection factor: refused by name, or a falling sphere is caught.
+    functors = [w.Ig2_Facet_Sphere_MesoScGeom, w.Ig2_Facet_Sphere_MesoScGeom6D, w.Ig2_Wall_Sphere_MesoScGeom]
+    for _ in range(args.n):
+        kind = rng.choice(functors)
+        val = rng.choice(BAD + [0.999, 1.0, 1.0 + 1e-12, 1.5, 10.0, rng.uniform(-2, 3)])
+        f = kind()
+        try:
+            f.interactionDetectionFactor = val
+        except (ValueError, TypeError) as e:
+            count("functor attributes", "rejected clearly" if "interactionDetectionFactor" in str(e) else "other",
+                  f"{kind.__name__} {val!r}: {e}")
+            continue
+        surface = (utils.wall(0, axis=2, sense=0) if "Wall" in kind.__name__
+                   else utils.facet([(-3e-3, -3e-3, 0), (3e-3, -3e-3, 0), (0, 3e-3, 0)], fixed=True))
+        ok, touched = falling_onto(surface, f)
+        count("functor attributes", "accepted and ran clean" if ok and touched else "other", f"{kind.__name__} {val!r}")
+    # 16. Degenerate and extreme facets and walls: a falling sphere, finite throughout; an invalid
+    #     wall axis makes no contact and is said (the functor warns; set_detection refuses it).
+    for _ in range(args.n):
+        if rng.random() < 0.3:
+            axis, sense = rng.choice([-1, 0, 1, 2, 3, 7]), rng.choice([-1, 0, 1])
+            ok, touched = falling_onto(utils.wall(0, axis=2, sense=sense), w.Ig2_Wall_Sphere_MesoScGeom())
+            O.bodies[0].shape.axis = axis
+            ok = ok and finite_scene() and runs_clean(50)
+            count("facets and walls", "accepted and ran clean" if ok else "other", f"wall axis {axis}")
+            continue
+        a, b, c = [rng.uniform(-3e-3, 3e-3) for _ in range(3)], [rng.uniform(-3e-3, 3e-3) for _ in range(3)], \
+            [rng.uniform(-3e-3, 3e-3) for _ in range(3)]
+        how = rng.choice(["coincident", "collinear", "nan", "huge", "tiny", "flat", "regular"])
+        if how == "coincident":
+            b = list(a)
+        elif how == "collinear":
+            c = [2 * b[k] - a[k] for k in range(3)]
+        elif how == "nan":
+            c[rng.randrange(3)] = float("nan")
+        elif how == "huge":
+            c = [x * 1e200 for x in c]
+        elif how == "tiny":
+            b, c = [a[k] + 1e-200 for k in range(3)], [a[k] - 1e-200 for k in range(3)]
+        elif how == "flat":
+            a[2] = b[2] = c[2] = 0.0
+        try:
+            surface = utils.facet([tuple(a), tuple(b), tuple(c)], fixed=True)
+        except Exception as e:  # noqa: BLE001 - YADE's own refusal of the vertices
+            count("facets and walls", "rejected clearly", f"{how}: {type(e).__name__}")
+            continue
+        ok, touched = falling_onto(surface, rng.choice(functors[:2])())
+        count("facets and walls", "accepted and ran clean" if ok else "other", f"{how}: non-finite state")
+    # 17. The loop registry: labels and periods of every kind; refused by name, or a runner that calls.
+    from mesocontact import loop
+    names = ["O", "sphere", "len", "__import__", "wrapper", "utils", "probe_a", "probeB", "two words", "1x", "", "None", 5, None]
+    for _ in range(args.n):
+        label = rng.choice(names) if rng.random() < 0.6 else "fz" + "".join(rng.choice("abc_") for _ in range(4))
+        period = rng.choice(WRONG + [1, 2, 7, 1.0, "3"])
+        calls = []
+        try:
+            O.reset()
+            O.engines = [loop.runner(lambda: calls.append(O.iter), period, label)]
+        except (ValueError, TypeError) as e:
+            count("loop registry", "rejected clearly" if ("label" in str(e) or "period" in str(e) or "fn" in str(e)) else "other",
+                  f"{label!r} {period!r}: {e}")
+            continue
+        O.run(7, True)
+        count("loop registry", "accepted and ran clean" if len(calls) == len(range(period, 7, period)) else "other",
+              f"{label!r} {period!r}: {len(calls)} calls")
 
 total = {k: sum(v[k] for v in tally.values()) for k in ("rejected clearly", "accepted and ran clean", "other")}
 summary = {"command": "yade -j1 -n -x scripts/fuzz_inputs.py " + " ".join(sys.argv[1:]), "seed": args.seed,

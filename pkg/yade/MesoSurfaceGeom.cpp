@@ -112,10 +112,16 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	const Vector3r centre   = s2.pos + shift2;
 	const Vector3r local    = toGlobal.transpose() * (centre - s1.pos);
 	const auto&    v        = facet.vertices;
-	const Vector3r nearest  = fromEigen(meso::nearestOnTriangle(toEigen(local), toEigen(v[0]), toEigen(v[1]), toEigen(v[2])));
-	Vector3r       branch   = local - nearest;
-	const Real     dist     = branch.norm();
-	const Real     overlap  = radius - dist;
+	if (!(v[0].allFinite() && v[1].allFinite() && v[2].allFinite() && s1.pos.allFinite())) [[unlikely]] {
+		if (!vertexWarned.exchange(true)) // no exception may leave YADE's OpenMP loop
+			std::cerr << "WARNING Ig2_Facet_Sphere_MesoScGeom: facet #" << (c->getId1()) << " has a vertex or a position that is not "
+			          << "finite (NaN or inf): it makes no contacts. (Warned once.)" << std::endl;
+		return false;
+	}
+	const Vector3r nearest = fromEigen(meso::nearestOnTriangle(toEigen(local), toEigen(v[0]), toEigen(v[1]), toEigen(v[2])));
+	Vector3r       branch  = local - nearest;
+	const Real     dist    = branch.norm();
+	const Real     overlap = radius - dist;
 	if (!c->isReal() && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
 	// One contact per surface: a point on an edge may be another facet's, which then holds it.
 	if (meso::onTriangleEdge(toEigen(nearest), toEigen(v[0]), toEigen(v[1]), toEigen(v[2]), edgeTolerance(radius, centre))

@@ -3,6 +3,7 @@
 // Ig2_Wall_Sphere_ScGeom make a contact only in overlap). In overlap they give YADE's geometry
 // (facets: shrinkFactor 0, walls: as YADE). mesocontact.scene.set_detection() puts them in place.
 #pragma once
+#include "PyChecks.hpp"
 #include <core/Dispatching.hpp>
 #include <pkg/common/Facet.hpp>
 #include <pkg/common/Sphere.hpp>
@@ -48,6 +49,7 @@ struct MesoDetectionCheck {
 
 class Ig2_Facet_Sphere_MesoScGeom : public IGeomFunctor {
 	MesoDetectionCheck detection;
+	std::atomic<bool>  vertexWarned { false };
 
 protected:
 	// The geometry of a sphere against a facet, made (isNew) or updated; false when the pair is not
@@ -69,7 +71,7 @@ public:
 	MESO_SURFACE_GO
 	void postLoad(Ig2_Facet_Sphere_MesoScGeom&) { detection.check("Ig2_Facet_Sphere_MesoScGeom", interactionDetectionFactor); }
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Facet_Sphere_MesoScGeom, IGeomFunctor,
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Facet_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Facet` and a :yref:`Sphere` (yade-meso): YADE's "
 		":yref:`Ig2_Facet_Sphere_ScGeom` (shrinkFactor 0, not hertzian) with a detection distance, for the pull-in of reversible "
 		"adhesion. The normal points from the facet's nearest point to the sphere's centre; the overlap is the radius minus "
@@ -77,7 +79,10 @@ public:
 		"edge two facets share (coplanar, or a convex edge), or over one facet near that edge, touches the mesh at one point, "
 		"which only one facet holds (the nearer; of two at the same point the smaller id), as one large facet would; facets "
 		"meeting in a valley touch the sphere at separate points and keep a contact each.",
-		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC))
+		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC)),
+		/* ctor */,
+		/* a wrong type named with the attribute, not Boost's "None.None(...)" */;
+		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Facet_Sphere_MesoScGeom::interactionDetectionFactor)
 	);
 	// clang-format on
 	FUNCTOR2D(Facet, Sphere);
@@ -106,11 +111,14 @@ public:
 	MESO_SURFACE_GO
 	void postLoad(Ig2_Wall_Sphere_MesoScGeom&) { detection.check("Ig2_Wall_Sphere_MesoScGeom", interactionDetectionFactor); }
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Ig2_Wall_Sphere_MesoScGeom, IGeomFunctor,
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Wall_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Wall` and a :yref:`Sphere` (yade-meso): YADE's "
 		":yref:`Ig2_Wall_Sphere_ScGeom` (not hertzian) with a detection distance, for the pull-in of reversible adhesion.",
 		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC))
-		((bool, noRatch, true, , "Avoid granular ratcheting (as :yref:`Ig2_Wall_Sphere_ScGeom.noRatch`)."))
+		((bool, noRatch, true, , "Avoid granular ratcheting (as :yref:`Ig2_Wall_Sphere_ScGeom.noRatch`).")),
+		/* ctor */,
+		;
+		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Wall_Sphere_MesoScGeom::interactionDetectionFactor)
 	);
 	// clang-format on
 	FUNCTOR2D(Wall, Sphere);

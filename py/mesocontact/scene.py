@@ -70,6 +70,10 @@ def set_detection(margin=1.2):
     for b in O.bodies:  # YADE takes any integer; its own Bo1_Wall_Aabb aborts on another
         if b is not None and isinstance(b.shape, w.Wall) and b.shape.axis not in (0, 1, 2):
             raise ValueError(f"set_detection: body #{b.id}'s Wall.axis = {b.shape.axis} is invalid: must be 0, 1 or 2 (x, y, z)")
+        if b is not None and isinstance(b.shape, w.Facet) and not all(
+                math.isfinite(x) for v in list(b.shape.vertices) + [b.state.pos] for x in v):
+            raise ValueError(f"set_detection: body #{b.id} is a Facet with a vertex that is not finite (NaN or inf): "
+                             f"no collider or functor can find it")
     gap = adhesion_range()
     radii = [b.shape.radius for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere)]
     if gap <= 0:

@@ -176,6 +176,13 @@ def item5():
         real = O.interactions.has(0, 1) and O.interactions[0, 1].isReal
         check(real and abs(O.interactions[0, 1].geom.penetrationDepth - 0.1e-3) < 1e-9, f"facet with {label}: detected with its overlap",
               f"real {real}")
+    # A vertex that is not finite: no collider finds the facet (its box is NaN); set_detection says so.
+    on_facet(w.Ig2_Facet_Sphere_MesoScGeom(), ((-2e-3, -2e-3, 0), (2e-3, -2e-3, 0), (0, float("nan"), 0)))
+    try:
+        scene.set_detection()
+        check(False, "a facet with a NaN vertex: set_detection refuses it")
+    except ValueError as e:
+        check("#0" in str(e) and "not finite" in str(e), "a facet with a NaN vertex: set_detection refuses it, naming the body", str(e))
 
 
 # 6. Wall.axis outside 0-2: no contact, a warning naming the value; set_detection refuses it.
@@ -223,6 +230,14 @@ def item7():
         f.interactionDetectionFactor = 1.0
         check(len(refused) == 14 and f.interactionDetectionFactor == 1.0, f"{cls}.interactionDetectionFactor: 7 bad values refused on "
               "assignment and in the constructor, the old value kept; 1 accepted", f"refused {len(refused)} of 14")
+        named = []  # wrong types name the attribute (Boost said "None.None(..., complex) did not match C++ signature")
+        for bad in (None, 3 + 0j, "1.2", [1.2]):
+            try:
+                f.interactionDetectionFactor = bad
+            except TypeError as e:
+                if "interactionDetectionFactor" in str(e) and f.interactionDetectionFactor == 1.0:
+                    named.append(bad)
+        check(len(named) == 4, f"{cls}.interactionDetectionFactor: a wrong type is named", f"{len(named)} of 4")
 
 
 # 8. loop.runner: a label that already names something (O, sphere, a builtin) is refused, since YADE
