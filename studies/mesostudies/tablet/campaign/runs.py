@@ -469,7 +469,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
     test, f0 = _test(progress)
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
     marks, snaps = list(dx_marks), []
-    # Room for the lateral spread: compressed by 3 d0 the sample widened by 3.8 d0 (y) and 5.9 d0 (z)
+    # Room for the lateral spread: compressed by 3 d0 the sample widened by 4.0 d0 (y) and 4.0 d0 (z)
     # on each side (chosen/fig19.json); 0.3 until clipped the panels from (e) on.
     win = _snap.window(margin=1.5 + 2.5 * until)
 
