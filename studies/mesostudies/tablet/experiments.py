@@ -18,8 +18,9 @@ from a campaign tree's committed files):
   peak, F(0.2)/F_peak, where the largest local strain first reaches 2x the affine one, and the
   start's contacts on the tensile branch and open at the peak, measured against the affine stretch.
 - E4, the same pulls and cycles loaded through glued particles instead of the flat walls (grips
-  of 1 d0, ``grips1-``; uniaxial.Test.use_grips): the profiles in ``profile/<sample>-grips1/``
-  (E3's measures), the cycles in ``variants/<sample>/`` beside E1's.
+  of 1 and 2 d0, ``grips1-``, ``grips2-``; uniaxial.Test.use_grips): the profiles in
+  ``profile/<sample>-grips1|2/`` (E3's measures, with the free length's share), the cycles in
+  ``variants/<sample>/`` beside E1's.
 - E5 and E6, test variants on the same states (``variants/<sample>/``): kc/kp 0.5 instead of 0.2
   (``kc0.5-`` runs), and cycles back to the start's force instead of Dx = 0 (``force-return-``
   runs), each beside the E1 run of its sample, amplitude and period.
@@ -137,7 +138,10 @@ def e3(tree):
         # The profile divides the local strain by Dx d0 / L0; through grips only L0 - 2 t d0 is free
         # to stretch, whose even stretch is L0 / (L0 - 2 t d0) times that: the strains below are the free part's.
         free = 1.0 if not grips else 1.0 - 2 * grips["thickness_d0"] * D0_MM / info["L0"]
+        f02_free = _force_at(pull, 0.2 * free)  # the same strain of the free part as Dx = 0.2 through walls
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
+                     "peak_Dx_free": info["peak_Dx"] / free,
+                     "F02_free_over_peak": f02_free / info["peak_F"] if f02_free is not None and info["peak_F"] else None,
                      "loading": (f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
                                  f"{grips['left'] + grips['right'] + grips['free']} particles; free {free:.2f} of L0)")
                      if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
@@ -202,21 +206,26 @@ def markdown(one, two, label, three=(), five_six=()):
                "Through grips of thickness t only L0 - 2 t d0 is free to stretch: the local strains are given against "
                "the free part's even stretch (the recorded ratio times (L0 - 2 t d0)/L0); the affine contact counts "
                "remain those of a stretch Dx d0/L0 of every contact outside the grips, which understates the free "
-               "part's (free fraction in the loading column).", "",
+               "part's (free fraction in the loading column). In brackets, for grips: the peak's Dx over the free "
+               "fraction, and the force at Dx = 0.2 times the free fraction over the peak (the walls' Dx of the same "
+               "strain of the free part).", "",
                "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
                "(where, from the left face [d0]) | stays >= 2x affine from Dx "
                "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
                "| most on -kc delta: measured / affine |",
                "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
-            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f} | "
-                      f"{_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['strain_at_peak'], '{:.1f}')} "
+            grip = r["loading"] != "walls"
+            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f}"
+                      + (f" ({r['peak_Dx_free']:.3f})" if grip else "") + " | "
+                      f"{_f(r['F02_over_peak'], '{:.2f}')}" + (f" ({_f(r['F02_free_over_peak'], '{:.2f}')})" if grip else "")
+                      + f" | {_f(r['strain_at_peak'], '{:.1f}')} "
                       f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
                       f"{r['measured']['tensile']:.1%} / {r['affine']['tensile']:.1%} | "
                       f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
                       f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")
     if five_six:
-        md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1), kc/kp 0.5 "
+        md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1, grips2: 1 and 2 d0), kc/kp 0.5 "
                "(kc0.5) and cycles back to the start's force (force-return); in brackets the E1 run of the same sample, "
                "amplitude and period", "",
                "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
