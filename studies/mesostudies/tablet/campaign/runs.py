@@ -2,7 +2,6 @@
 study, the drag share, the pull (Fig. 17), the large compression (Fig. 19) and the factor study's
 pulls (inside ``yade``)."""
 import json
-import math
 import os
 import time
 
