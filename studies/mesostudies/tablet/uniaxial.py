@@ -322,7 +322,8 @@ class Test:
         chunk = max(every, steps_per_cycle // 4 // every * every)
         start = O.iter
         while O.iter - start < total:
-            k = min(chunk, total - (O.iter - start))
+            left = total - (O.iter - start)
+            k = left if left < chunk + chunk // 2 else chunk  # a short tail joins the last chunk: one last progress line
             self._run(k)
             Test.steps_run += k
             if self.progress:
