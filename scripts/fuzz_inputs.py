@@ -388,6 +388,14 @@ def falling_onto(surface, functor, v=0.05, steps=400):
     return all(math.isfinite(x) for x in tuple(b.pos) + tuple(b.vel) + tuple(b.angVel)), touched
 
 
+# What category 13 assigns to a live contact i (j: another contact, or i itself when there is none).
+ASSIGNED = {"own phys": ("phys", lambda i, j: i.phys), "other's phys": ("phys", lambda i, j: j.phys),
+            "new MesoPhys": ("phys", lambda i, j: w.MesoPhys()), "own geom": ("geom", lambda i, j: i.geom),
+            "other's geom": ("geom", lambda i, j: j.geom), "new ScGeom": ("geom", lambda i, j: w.ScGeom()),
+            "new ScGeom6D": ("geom", lambda i, j: w.ScGeom6D()),
+            "phys of another class": ("phys", lambda i, j: rng.choice([w.FrictPhys, w.ViscElPhys, w.IPhys])())}
+
+
 with quiet_fd2():
     # 13. Phys and geometry assigned from Python on live contacts (their own, another contact's, new
     #     or of another class), then O.run: the run goes on clean, or the law remakes them.
@@ -396,24 +404,8 @@ with quiet_fd2():
         O.bodies.append(utils.sphere((-2e-3 + 2e-5, 0, 0), 1e-3, material=0))
         O.run(5, True)
         i, j = O.interactions[0, 1], (O.interactions[0, 2] if O.interactions.has(0, 2) else O.interactions[0, 1])
-        what = rng.choice(["own phys", "other's phys", "new MesoPhys", "own geom", "other's geom", "new ScGeom",
-                           "new ScGeom6D", "phys of another class"])
-        if what == "own phys":
-            i.phys = i.phys
-        elif what == "other's phys":
-            i.phys = j.phys
-        elif what == "new MesoPhys":
-            i.phys = w.MesoPhys()
-        elif what == "own geom":
-            i.geom = i.geom
-        elif what == "other's geom":
-            i.geom = j.geom
-        elif what == "new ScGeom":
-            i.geom = w.ScGeom()
-        elif what == "new ScGeom6D":
-            i.geom = w.ScGeom6D()
-        else:
-            i.phys = rng.choice([w.FrictPhys, w.ViscElPhys, w.IPhys])()
+        what, (attr, make) = rng.choice(sorted(ASSIGNED.items()))
+        setattr(i, attr, make(i, j))
         del i, j
         count("phys/geom from Python", "accepted and ran clean" if runs_clean(rng.choice([1, 30, 200])) else "other", what)
     # 14. Contacts exported where the loop makes one geometry class, restored where it makes another.

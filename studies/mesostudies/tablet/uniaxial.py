@@ -214,6 +214,7 @@ class Test:
         walls = sample.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
         self.grip = {self.left: [self.left], self.right: [self.right]}  # what each end moves: the wall alone
+        self.grips = None  # use_grips' description of the grips, when the test loads through them
         O.step()  # forces are not saved: one step with the walls at rest restores them
         self.L0 = self.length()
         self.t_cross = crossing_time()
@@ -228,7 +229,7 @@ class Test:
         contacts are erased and the walls stop touching anything (mask 0), so the sample is held
         only by its own particle contacts, with the particles' adhesion. Dx keeps its definition
         (the walls' distance, which moves with the grips); the force is the one on each grip's
-        particles. Returns the grips' sizes."""
+        particles. Returns the grips' sizes (also kept as ``self.grips``)."""
         members = members or grip_members(thickness)
         for wid in (self.left, self.right):
             for I in O.bodies[wid].intrs():
@@ -241,8 +242,9 @@ class Test:
         O.step()  # the grips' forces, from the particle contacts alone
         self.L0 = self.length()
         n = len(sample.sphere_ids())
-        return {"thickness_d0": thickness, "left": len(members[self.left]), "right": len(members[self.right]),
-                "free": n - len(members[self.left]) - len(members[self.right])}
+        self.grips = {"thickness_d0": thickness, "left": len(members[self.left]), "right": len(members[self.right]),
+                      "free": n - len(members[self.left]) - len(members[self.right])}
+        return self.grips
 
     def track_energy(self):
         """Tracks the energy from now on: O.energy, and the walls' work on the sample every step;

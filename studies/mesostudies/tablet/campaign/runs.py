@@ -32,7 +32,8 @@ def _test(progress, grips=None, members=None):
         raise ValueError("grips: without yade.mpy (the grips' force is summed over particles on every rank)")
     if _mpy() is None:
         test = _uni.Test(progress=progress)
-        test.grips = test.use_grips(grips, members) if grips is not None else None
+        if grips is not None:
+            test.use_grips(grips, members)
         return test, None
     test = _uni.Test(progress=progress, run=lambda n: _mpy().mpirun(n), records=_mpy().rank == 0,
                      share=lambda x: _mpy().comm.bcast(x, root=0))
