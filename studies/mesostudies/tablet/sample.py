@@ -129,11 +129,11 @@ def _radii(n, rel_std, rng):
     return out
 
 
-def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF", kc_over_kp=None):
-    """A loose random gas of n spheres in a cubic box of six smooth walls (ids 0-5, spheres
-    after), particles of parameter set ``material`` (kc_over_kp overrides its kc/kp). The
-    Gaussian size distribution is narrow (relative std rel_std, cut at 2 sigma) to avoid
-    monodisperse crystallisation."""
+def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF", kc_over_kp=None, aspect=(1, 1, 1)):
+    """A loose random gas of n spheres in a box of six smooth walls (ids 0-5, spheres after),
+    cubic or with sides in the ratios ``aspect`` (x, y, z), particles of parameter set
+    ``material`` (kc_over_kp overrides its kc/kp). The Gaussian size distribution is narrow
+    (relative std rel_std, cut at 2 sigma) to avoid monodisperse crystallisation."""
     changes = {}
     if kc_over_kp is not None:
         if not (0 <= kc_over_kp < math.inf):
@@ -146,15 +146,18 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF"
         raise ValueError(f"rel_std = {rel_std} is invalid: must lie in [0, 0.3)")
     if not 0 < solid_fraction <= 0.3:
         raise ValueError(f"solid_fraction = {solid_fraction} is invalid: the random gas needs (0, 0.3]")
+    if not (len(aspect) == 3 and all(isinstance(a, (int, float)) and 0.1 <= a <= 10 for a in aspect)):
+        raise ValueError(f"aspect = {aspect!r} is invalid: three side ratios in [0.1, 10]")
     rng = random.Random(seed)
     radii = _radii(int(n), rel_std, rng)
     volume = sum(4.0 / 3.0 * math.pi * r ** 3 for r in radii)
-    side = (volume / solid_fraction) ** (1.0 / 3.0)
+    side = (volume / solid_fraction / (aspect[0] * aspect[1] * aspect[2])) ** (1.0 / 3.0)
+    sides = [side * a for a in aspect]
     _scene.reset()
     O.materials.append(_w.MesoMat(**mould_material(material)))
     O.materials.append(_w.MesoMat(**particles))
     thick = 0.5 * D0
-    lo, hi = (0.0, 0.0, 0.0), (side, side, side)
+    lo, hi = (0.0, 0.0, 0.0), tuple(sides)
     walls = _utils.aabbWalls([lo, hi], thickness=thick, oversizeFactor=1.5, material="walls")
     O.bodies.append(walls)
     # Random sequential placement, largest first (no overlaps; the gas is far from jamming).
@@ -163,7 +166,7 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF"
     grid = {}
     for r in sorted(radii, reverse=True):
         for _ in range(100000):
-            c = tuple(rng.uniform(r, side - r) for _ in range(3))
+            c = tuple(rng.uniform(r, sides[k] - r) for k in range(3))
             key = tuple(int(x / cell) for x in c)
             near = [placed[j] for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
                     for j in grid.get((key[0] + dx, key[1] + dy, key[2] + dz), ())]
@@ -175,8 +178,11 @@ def build(n=1728, rel_std=0.05, solid_fraction=0.2, seed=1, material="appendixF"
             raise RuntimeError("could not place the random gas; lower solid_fraction")
     O.bodies.append([_utils.sphere(c, r, material="particles") for c, r in placed])
     O.dt = contact_step(min(radii))
-    return {"n": int(n), "radii": (min(radii), max(radii)), "side0": side, "dt": O.dt, "material": material,
-            "kc_over_kp": particles["kc"] / KP, "seed": seed, "rel_std": rel_std}
+    out = {"n": int(n), "radii": (min(radii), max(radii)), "side0": side, "dt": O.dt, "material": material,
+           "kc_over_kp": particles["kc"] / KP, "seed": seed, "rel_std": rel_std}
+    if tuple(aspect) != (1, 1, 1):
+        out["aspect"] = list(aspect)
+    return out
 
 
 def sphere_ids():
@@ -428,7 +434,7 @@ def _compact(goal, speed, progress, chunk=500, max_steps=200000):
 
 def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, seed=1, tol_stress=0.01,
             tol_ke=1e-4, compaction_speed=COMPACTION_SPEED, release_steps=RELEASE_STEPS, progress=True,
-            packing="full", glue="loading", sinter=SINTER):
+            packing="full", glue="loading", sinter=SINTER, aspect=(1, 1, 1)):
     """Makes the released tablet with the full law (adhesion, friction, rolling, torsion) from
     the start: a gas of the particles is compacted by the six walls (at up to
     ``compaction_speed`` [mm/us], without background drag) until they carry d0 p_s/kp = 0.02,
@@ -444,7 +450,8 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     keeping its history; ``glue='all'`` makes all six walls adhesive after sintering, ``'sinter'``
     before it (the four lateral ones are removed with the unconfined start, uniaxial.make_unconfined).
     ``sinter``: the sintering stress d0 p_s/kp (the paper's 0.02); the packing's and the release's
-    stresses stay those of the paper, so that only the sintering depth changes."""
+    stresses stay those of the paper, so that only the sintering depth changes. ``aspect``: the
+    box's side ratios (build; the agglomerate study sinters a block of two cubes)."""
     if not (isinstance(sinter, (int, float)) and math.isfinite(sinter) and sinter > 0):
         raise ValueError(f"sinter = {sinter!r} is invalid: the sintering stress d0 p_s/kp must be a positive number")
     p_s = sinter * KP / D0
@@ -453,7 +460,7 @@ def prepare(path, n=1728, material="appendixF", kc_over_kp=None, rel_std=0.05, s
     if glue not in GLUES:
         raise ValueError(f"glue = {glue!r} is invalid: one of {GLUES}")
     t0 = time.time()
-    info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp)}
+    info = {"built": build(n, rel_std=rel_std, seed=seed, material=material, kc_over_kp=kc_over_kp, aspect=aspect)}
     info["built"].update(packing=packing, glue=glue, **({"sinter": sinter} if sinter != SINTER else {}))
     O.engines = engines(_controller(p_s, SINTER_SPEED), reference="lab")
     if packing == "frictionless":  # packed to rest at PACKING_RATIO p_s, then the full law and p_s

@@ -1,0 +1,199 @@
+"""The agglomerates: a block pressure-sintered as the tablet is, and two spheres carved from it
+(inside ``yade``).
+
+The block is the tablet's preparation (``tablet.sample.prepare`` with the campaign's protocol:
+packed without friction, sintered against six adhesive walls at d0 p_s/kp = 0.02, released to
+p_r/p_s = 1e-3) in a box of two cubes side by side along x. Each cube's centre is the centre of
+one agglomerate: the particles that lie wholly within ``radius`` of it (default: the largest
+sphere that keeps MARGIN d0, 1 d0 (quick: 0.5), from the block's walls, whose flat faces order the layers next to
+them) are kept with their contacts and sintering history, everything else is erased, and the
+largest connected cluster of each sphere is what the agglomerate is (particles cut loose by the
+carving are removed and counted). The two are relaxed apart, with the background drag relative
+to each particle's contacts, until static, and saved with their description:
+
+    from mesostudies.agglomerate import make
+    info = make.ensure("results/agglomerate", quick=True)   # made once, then loaded
+    print(info["agglomerates"][0]["n"], info["agglomerates"][0]["radius"])
+
+Each agglomerate's radius R is that of the smallest sphere about its centre of mass that holds
+all its particles (the outer surface: the first point another body can touch, whatever the
+direction); the meso-overlap of two is delta = R1 + R2 - |x1 - x2| of their centres of mass.
+"""
+import json
+import math
+import os
+import time
+
+from yade import O
+from yade import Vector3
+
+from mesostudies.tablet import sample
+from mesostudies.tablet.campaign import common
+
+ASPECT = (2, 1, 1)   # two cubes along x
+N_FULL = 5400        # about 600 primaries per agglomerate (the released block holds 1.4 per d0^3)
+N_QUICK = 600        # about 45 per agglomerate, for the pipeline's test
+MARGIN = {False: 1.0, True: 0.5}  # d0 between a carved sphere and the block's walls (full, quick)
+
+
+def path(outdir, stage, quick=False):
+    return os.path.join(outdir, f"{stage}{'-quick' if quick else ''}.yade.gz")
+
+
+def _block(outdir, quick, seed, progress):
+    """The sintered, released block loaded into O (prepared first if ``outdir`` lacks it)."""
+    p = path(outdir, "block", quick)
+    n = N_QUICK if quick else N_FULL
+    if os.path.exists(p) and os.path.exists(p + ".json"):
+        with open(p + ".json") as f:
+            info = json.load(f)
+        built = info["built"]
+        if (built["n"], built["seed"], built.get("aspect")) != (n, seed, list(ASPECT)):
+            raise ValueError(f"{p} holds a block of {built['n']} particles, seed {built['seed']}, aspect "
+                             f"{built.get('aspect')}: not the one asked for (use another output directory)")
+        O.load(p)
+        return info
+    os.makedirs(outdir, exist_ok=True)
+    if progress:
+        print(f"preparing the sintered block {p} ({n} particles, sides {ASPECT})", flush=True)
+    return sample.prepare(p, n=n, seed=seed, aspect=ASPECT, progress=progress, **common.PROTOCOL)
+
+
+def _clusters(ids):
+    """The connected clusters of ``ids`` through contacts in overlap, largest first."""
+    ids = set(ids)
+    links = {i: [] for i in ids}
+    for i in ids:
+        for I in O.bodies[i].intrs():
+            j = I.id2 if I.id1 == i else I.id1
+            if j in ids and I.isReal and I.geom.penetrationDepth > 0:
+                links[i].append(j)
+    seen, out = set(), []
+    for i in sorted(ids):
+        if i in seen:
+            continue
+        stack, part = [i], []
+        seen.add(i)
+        while stack:
+            k = stack.pop()
+            part.append(k)
+            for j in links[k]:
+                if j not in seen:
+                    seen.add(j)
+                    stack.append(j)
+        out.append(sorted(part))
+    return sorted(out, key=len, reverse=True)
+
+
+def centre_of_mass(ids):
+    m, x = 0.0, Vector3(0, 0, 0)
+    for i in ids:
+        s = O.bodies[i].state
+        m += s.mass
+        x += s.mass * s.pos
+    return x / m, m
+
+
+def velocity(ids):
+    """The velocity of the centre of mass of ``ids``."""
+    m, v = 0.0, Vector3(0, 0, 0)
+    for i in ids:
+        s = O.bodies[i].state
+        m += s.mass
+        v += s.mass * s.vel
+    return v / m
+
+
+def outer_radius(ids, centre):
+    return max((O.bodies[i].state.pos - centre).norm() + O.bodies[i].shape.radius for i in ids)
+
+
+def describe(ids):
+    """An agglomerate's state: n, mass, centre of mass, radius R (outer_radius), solid fraction of
+    its core (the sphere volume, contact lenses halved, of the particles whose centres lie within
+    R - d0, over that sphere's volume), coordination (2 x contacts in overlap / n, its own
+    particles), rattlers (particles with fewer than 2 contacts), the mean deltaMax of its
+    contacts over their plastic limit."""
+    ids = sorted(ids)
+    own = set(ids)
+    c, m = centre_of_mass(ids)
+    radius = outer_radius(ids, c)
+    core = radius - sample.D0
+    count = dict.fromkeys(ids, 0)
+    solid, depth, n_contacts = 0.0, [], 0
+    for i in ids:
+        b = O.bodies[i]
+        inside = (b.state.pos - c).norm() <= core
+        if inside:
+            solid += 4.0 / 3.0 * math.pi * b.shape.radius ** 3
+        for I in b.intrs():
+            j = I.id2 if I.id1 == i else I.id1
+            if j not in own or not I.isReal or I.geom.penetrationDepth <= 0:
+                continue
+            count[i] += 1
+            if inside:
+                other = O.bodies[j]
+                solid -= 0.5 * sample._lens(b.shape.radius, other.shape.radius, (b.state.pos - other.state.pos).norm())
+            if i < j:
+                n_contacts += 1
+                dmp = I.phys.deltaMaxP if hasattr(I.phys, "deltaMaxP") else None
+                if dmp:
+                    depth.append(I.phys.deltaMax / dmp)
+    return {"n": len(ids), "mass": m, "centre": list(c), "radius": radius, "radius_d0": radius / sample.D0,
+            "solid_fraction_core": solid / (4.0 / 3.0 * math.pi * core ** 3),
+            "coordination": 2.0 * n_contacts / len(ids), "rattlers": sum(1 for k in count.values() if k < 2),
+            "mean_depth": sum(depth) / len(depth) if depth else None}
+
+
+def _carve(radius, margin):
+    """Keeps, about each cube's centre, the largest connected cluster of the particles wholly
+    within ``radius``; erases the rest and the walls. Returns (members, carved radius, removed)."""
+    lo, hi = sample.inner_box()
+    sides = [hi[k] - lo[k] for k in range(3)]
+    if radius is None:
+        radius = min(sides[0] / 4, sides[1] / 2, sides[2] / 2) - margin * sample.D0
+    centres = [Vector3(lo[0] + f * sides[0], lo[1] + sides[1] / 2, lo[2] + sides[2] / 2) for f in (0.25, 0.75)]
+    inside = [[i for i in sample.sphere_ids()
+               if (O.bodies[i].state.pos - c).norm() + O.bodies[i].shape.radius <= radius] for c in centres]
+    members = [_clusters(part)[0] for part in inside]
+    loose = sum(len(part) for part in inside) - sum(len(m) for m in members)
+    keep = set(members[0]) | set(members[1])
+    for b in list(O.bodies):
+        if b is not None and b.id not in keep:
+            O.bodies.erase(b.id)
+    return members, radius, loose
+
+
+def ensure(outdir, quick=False, seed=1, radius=None, progress=True, tol_ke=1e-4, max_steps=400000):
+    """The carved, relaxed pair of agglomerates loaded into O (made first, from the block, if
+    ``outdir`` lacks it); returns its description ('agglomerates': describe() of each, 'members':
+    their ids, 'block': the block's description, 'carve_radius', 'removed_loose')."""
+    p = path(outdir, "agglomerates", quick)
+    if os.path.exists(p) and os.path.exists(p + ".json"):
+        with open(p + ".json") as f:
+            info = json.load(f)
+        O.load(p)
+        return info
+    t0 = time.time()
+    block = _block(outdir, quick, seed, progress)
+    members, r_carve, loose = _carve(radius, MARGIN[bool(quick)])
+    O.engines = sample.engines(reference="contacts")
+    scale = sample.energy_scale(len(members[0]) + len(members[1]))
+
+    def measure():
+        ke = sample.kinetic_energy() / scale
+        return ke < tol_ke, f"E_kin/E_ref = {ke:.2e}", ke
+    steps, ke = sample.run_until_static(measure, "carved agglomerates", max_steps=max_steps, progress=progress)
+    info = {"block": block, "carve_radius": r_carve, "carve_radius_d0": r_carve / sample.D0,
+            "removed_loose": loose, "relax_steps": steps, "kinetic_energy_ratio": ke,
+            "members": members, "agglomerates": [describe(m) for m in members],
+            "definitions": {"radius": "smallest sphere about the centre of mass holding every particle",
+                            "delta": "R1 + R2 - |x1 - x2| of the centres of mass"},
+            "units": "mm, us, mg", "d0": sample.D0, "kp": sample.KP, "wall_clock_s": time.time() - t0}
+    sample.save_atomic(p, info)
+    if progress:
+        for k, a in enumerate(info["agglomerates"]):
+            print(f"agglomerate {k}: {a['n']} particles, R = {a['radius_d0']:.3f} d0, solid fraction "
+                  f"{a['solid_fraction_core']:.3f}, coordination {a['coordination']:.2f}, rattlers {a['rattlers']}",
+                  flush=True)
+    return info
