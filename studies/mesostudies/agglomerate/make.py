@@ -104,6 +104,35 @@ def velocity(ids):
     return v / m
 
 
+def touch_shift(first, second):
+    """How far ``second`` must move along x towards ``first`` until a particle of one first
+    touches a particle of the other (the agglomerates' surfaces, not their outer spheres): the
+    smallest, over pairs less than r_i + r_j apart sideways, of their x distance minus the x
+    distance at which they would touch."""
+    import numpy as np
+    pos = [np.array([list(O.bodies[i].state.pos) for i in ids]) for ids in (first, second)]
+    rad = [np.array([O.bodies[i].shape.radius for i in ids]) for ids in (first, second)]
+    side = 1.0 if pos[1][:, 0].mean() > pos[0][:, 0].mean() else -1.0
+    best = np.inf
+    for p, r in zip(pos[0], rad[0]):
+        lateral = np.hypot(pos[1][:, 1] - p[1], pos[1][:, 2] - p[2])
+        reach = r + rad[1]
+        near = lateral < reach
+        if near.any():
+            gap = side * (pos[1][near, 0] - p[0]) - np.sqrt(reach[near] ** 2 - lateral[near] ** 2)
+            best = min(best, float(gap.min()))
+    return best
+
+
+def move_to_gap(first, second, gap):
+    """Moves ``second`` along x so that it touches ``first`` after moving ``gap`` [mm] towards it."""
+    c = [centre_of_mass(m)[0][0] for m in (first, second)]
+    side = 1.0 if c[1] > c[0] else -1.0
+    shift = Vector3(side * (gap - touch_shift(first, second)), 0, 0)
+    for i in second:
+        O.bodies[i].state.pos += shift
+
+
 def outer_radius(ids, centre):
     return max((O.bodies[i].state.pos - centre).norm() + O.bodies[i].shape.radius for i in ids)
 
@@ -176,6 +205,7 @@ def ensure(outdir, quick=False, seed=1, radius=None, progress=True, tol_ke=1e-4,
         return info
     t0 = time.time()
     block = _block(outdir, quick, seed, progress)
+    O.step()  # a loaded state's contact geometry (penetrationDepth) is made by a step: carve after one, either way
     members, r_carve, loose = _carve(radius, MARGIN[bool(quick)])
     O.engines = sample.engines(reference="contacts")
     scale = sample.energy_scale(len(members[0]) + len(members[1]))

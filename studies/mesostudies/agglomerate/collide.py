@@ -1,0 +1,125 @@
+"""Head-on collisions of the two agglomerates (inside ``yade``).
+
+From the carved, relaxed pair (make.ensure) the second agglomerate is moved along x until its
+surface lies ``gap`` d0 from the first's (make.move_to_gap) and each is given half the relative speed towards the other, every particle the
+same velocity and no spin. There is no background drag: a collision's losses are the contacts'
+own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
+``quiet`` of the touch's duration so far and the fragments move apart, or after ``max_time`` (then
+the agglomerates are read as stuck together if still joined).
+
+Read at the end: the fragments (connected clusters through contacts in overlap); the two
+largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
+their centres of mass along x after)/(before), 0 when one fragment holds most of both; the mass
+that broke off (everything but the two largest fragments, or the largest when stuck) over the
+total; the contact time, from the first to the last step a contact joined the two agglomerates.
+"""
+import time
+
+from yade import O
+from yade import Vector3
+from yade import wrapper as _w
+
+from mesocontact import loop as _loop
+from mesostudies.tablet import sample
+from mesostudies.tablet import snapshots as _snapshots
+from . import make
+
+APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
+
+
+def _clusters_all(ids):
+    return make._clusters(ids)
+
+
+class Collision:
+    def __init__(self, members, radii, every=20):
+        self.members = [list(m) for m in members]
+        self.radii = list(radii)
+        self.owner = {i: k for k, m in enumerate(self.members) for i in m}
+        self.every = every
+        self.first = self.last = None
+        O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
+        engines = list(O.engines)
+        at = next(k for k, e in enumerate(engines) if isinstance(e, _w.NewtonIntegrator))
+        O.engines = engines[:at] + [_loop.runner(self._watch, every, "agg_watch")] + engines[at:]
+        self.rows = []
+
+    def delta(self):
+        c = [make.centre_of_mass(m)[0] for m in self.members]
+        return self.radii[0] + self.radii[1] - (c[0] - c[1]).norm()
+
+    def joined(self):
+        other = set(self.members[1])
+        return any(I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other
+                   for i in self.members[0] for I in O.bodies[i].intrs())
+
+    def _watch(self):
+        if self.joined():
+            if self.first is None:
+                self.first = O.time
+            self.last = O.time
+        v = [make.velocity(m)[0] for m in self.members]
+        self.rows.append((O.iter, O.time, self.delta(), v[0], v[1]))
+
+    def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None):
+        """One collision at relative speed v_rel [mm/us]; returns its outcome (a dict). The gap is
+        at most what the pair crosses in APPROACH us. ``snapshot``: a PNG of the end state."""
+        d0 = sample.D0
+        c = [make.centre_of_mass(m)[0] for m in self.members]
+        side = 1.0 if c[1][0] > c[0][0] else -1.0
+        make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH))
+        for k, m in enumerate(self.members):
+            v = Vector3(side * (0.5 if k == 0 else -0.5) * v_rel, 0, 0)
+            for i in m:
+                O.bodies[i].state.vel, O.bodies[i].state.angVel = v, Vector3(0, 0, 0)
+        t0, start_time = time.time(), O.time
+        approach = min(gap * d0, v_rel * APPROACH) / v_rel
+        max_time = max_time if max_time is not None else approach + 200 * self._t_scale()
+        chunk = max(self.every, int(0.25 * approach / O.dt) // self.every * self.every or self.every)
+        state = "approach"
+        while O.time - start_time < max_time:
+            O.run(chunk, True)
+            if self.first is not None:
+                touch = self.last - self.first
+                apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
+                state = "apart" if apart else "joined"
+                if apart and self._separating(side):
+                    break
+            if progress:
+                print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  delta = {self.delta() / d0:+.4f} d0  "
+                      f"({time.time() - t0:.0f} s)", flush=True)
+        out = self._outcome(v_rel, side, start_time, time.time() - t0)
+        if snapshot:
+            _snapshots.png(snapshot, title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, broken off {out['broken_mass_fraction']:.3f}")
+        return out
+
+    def _t_scale(self):
+        """A primary pair's contact time pi sqrt(m/(2 kp)), the scale of the waits."""
+        m = min(O.bodies[i].state.mass for m in self.members for i in m)
+        return 3.1416 * (0.5 * m / sample.KP) ** 0.5
+
+    def _separating(self, side):
+        v = [make.velocity(m)[0] for m in self.members]
+        return side * (v[1] - v[0]) > 0
+
+    def _outcome(self, v_rel, side, start_time, seconds):
+        ids = [i for m in self.members for i in m]
+        parts = _clusters_all(ids)
+        mass = {i: O.bodies[i].state.mass for i in ids}
+        total = sum(mass.values())
+        frag = []
+        for p in parts[:2]:
+            share = [sum(mass[i] for i in p if self.owner[i] == k) for k in (0, 1)]
+            frag.append({"ids": p, "mass": sum(share), "from": 0 if share[0] >= share[1] else 1,
+                         "mixed": min(share) / sum(share), "v": make.velocity(p)[0]})
+        stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
+        if stuck:
+            e, broken = 0.0, 1.0 - frag[0]["mass"] / total
+        else:
+            a, b = sorted(frag, key=lambda f: f["from"])
+            e = side * (b["v"] - a["v"]) / v_rel
+            broken = 1.0 - (a["mass"] + b["mass"]) / total
+        return {"v_rel": v_rel, "e": e, "stuck": stuck, "broken_mass_fraction": broken,
+                "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
+                "contact_time": (self.last - self.first) if self.first is not None else None,
+                "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}

@@ -1,0 +1,70 @@
+"""The meso-particle law fitted to the agglomerates' cycles, and collisions compared (plain Python;
+``meso_collisions`` needs YADE).
+
+Units: the study's (mm, us, mg) inside; the library's functions take SI, converted here.
+"""
+import math
+
+from mesocontact import calibrate
+from mesocontact import theory
+
+MM, US, MG = 1e-3, 1e-6, 1e-6     # in m, s, kg
+FORCE = MG * MM / US ** 2          # the study's force unit in N (1e3)
+SPEED = MM / US                    # the study's speed unit in m/s (1e3)
+FREE = ("k1", "kp", "kc", "phiF")
+
+
+def geometry(info):
+    """(a12 [m], m_r [kg], radii [m], masses [kg]) of the two agglomerates of make.ensure's description."""
+    radii = [a["radius"] * MM for a in info["agglomerates"]]
+    masses = [a["mass"] * MG for a in info["agglomerates"]]
+    return (radii[0] * radii[1] / (radii[0] + radii[1]), masses[0] * masses[1] / (masses[0] + masses[1]),
+            radii, masses)
+
+
+def fit(rows, info, free=FREE):
+    """The law fitted to cycle rows (iter, delta [mm], F [study units]) with a free overlap shift
+    (the meso-overlap of the outer spheres is not where the surfaces touch): calibrate.fit_cycles
+    in SI. Returns its result."""
+    a12 = geometry(info)[0]
+    delta = [r[1] * MM for r in rows]
+    force = [r[2] * FORCE for r in rows]
+    return calibrate.fit_cycles(delta, force, a12, free=free, shift=True)
+
+
+def law_curve(params, rows, a12):
+    """The fitted law's force [study units] along the rows' overlaps."""
+    delta = [r[1] * MM - params.get("shift", 0.0) for r in rows]
+    f = theory.normal_force_path(delta, params["k1"], params["kp"], params["kc"], params["phiF"], a12)
+    return [x / FORCE for x in f]
+
+
+def theory_e(params, info, speeds):
+    """The closed form's e at each relative speed [mm/us] (no viscosity, no adhesion beyond kc)."""
+    a12, m_r = geometry(info)[:2]
+    return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).e
+            for v in speeds]
+
+
+def meso_material(params, radius, mass):
+    """MesoMat keywords (SI) of one meso-particle: the fitted normal law, the agglomerate's mass
+    (density from its outer radius), no viscosity, friction or rolling (head-on collisions)."""
+    density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
+    return dict(density=density, k1=params["k1"], kp=params["kp"], kc=params["kc"], phiF=params["phiF"],
+                gammaN=0.0, frictionAngle=0.0)
+
+
+def meso_collisions(params, info, speeds, progress=True):
+    """e of two meso-particles of the fitted law (YADE, mesocontact.pair) at each relative speed
+    [mm/us]; replaces the scene in O."""
+    from mesocontact import pair
+    from yade import wrapper as _w
+    a12, m_r, radii, masses = geometry(info)
+    out = []
+    for v in speeds:
+        mats = [_w.MesoMat(**meso_material(params, r, m)) for r, m in zip(radii, masses)]
+        s = pair.build(radii[0], v * SPEED, material=mats[0], radius2=radii[1], material2=mats[1])
+        out.append(pair.collide(s).e)
+        if progress:
+            print(f"  meso pair at {v * SPEED:g} m/s: e = {out[-1]:.4f}", flush=True)
+    return out

@@ -1,0 +1,139 @@
+"""Two agglomerates pressed together and pulled apart under displacement control (inside ``yade``).
+
+Each agglomerate is held at its far cap: the particles whose centres lie beyond ``grip`` R from
+its centre of mass, on the side away from the other, move as one rigid body (every degree of
+freedom blocked, the velocity imposed), as the tablet's grips do; the rest of it is free. The two
+caps move towards or away from each other at ``speed`` each. Recorded every ``every`` steps: the
+meso-overlap delta = R1 + R2 - |x1 - x2| of the centres of mass (all particles) and the force F
+between the agglomerates, read on the caps: (f_x of the right cap - f_x of the left cap)/2, > 0
+when they push each other apart. With the caps at rest it is the force across the contact; while
+they move it carries the free parts' inertia and drag too, which the rate check (4x slower)
+measures.
+
+The cycles (``Pair.cycles``): approach until the agglomerates first touch (a contact in overlap
+joins them; delta_touch), then for each amplitude a: load to delta_touch + a d0 and unload to
+delta_touch - BELOW_TOUCH d0, through the pull-off and the tension after it (a fixed turning
+point: a force criterion would turn on the force's ringing); after the last amplitude pull apart
+until no contact joins the two (or MAX_PULL d0 below delta_touch). A stroke's end is checked
+inside the loop every ``check`` steps and pauses it there.
+"""
+
+import time
+
+from yade import O
+from yade import Vector3
+from yade import wrapper as _w
+
+from mesocontact import loop as _loop
+from mesostudies.tablet import sample
+from . import make
+
+BELOW_TOUCH = 0.2  # d0 below the first touch where an unloading turns
+MAX_PULL = 1.5     # d0 below the first touch at which the last stroke apart ends in any case
+
+
+class Pair:
+    """The loaded pair of agglomerates (make.ensure), gripped at their far caps."""
+
+    def __init__(self, members, radii, grip=0.5, progress=True, every=50, check=10):
+        if not 0 < grip < 1:
+            raise ValueError(f"grip = {grip!r} is invalid: the caps start at a fraction of R in (0, 1)")
+        self.members = [list(m) for m in members]
+        self.radii = list(radii)
+        self.progress, self.every, self.check = progress, int(every), int(check)
+        c = [make.centre_of_mass(m)[0] for m in self.members]
+        side = [-1.0, 1.0] if c[0][0] < c[1][0] else [1.0, -1.0]  # the far side of each
+        self.grips = [[i for i in m if side[k] * (O.bodies[i].state.pos[0] - c[k][0]) > grip * self.radii[k]]
+                      for k, m in enumerate(self.members)]
+        self.side = side
+        for g in self.grips:
+            for i in g:
+                st = O.bodies[i].state
+                st.blockedDOFs, st.vel, st.angVel = "xyzXYZ", Vector3(0, 0, 0), Vector3(0, 0, 0)
+        self.grip_fraction = grip
+        self.rows = []
+        self.events = []
+        self._motion = [_w.TranslationEngine(ids=g, translationAxis=Vector3(-side[k], 0, 0), velocity=0.0,
+                                             label=f"cap{k}") for k, g in enumerate(self.grips)]
+        engines = list(O.engines)
+        at = next(k for k, e in enumerate(engines) if isinstance(e, _w.NewtonIntegrator))
+        runners = [_loop.runner(self._record, self.every, "agg_recorder"), _loop.runner(lambda: None, self.check, "agg_check")]
+        O.engines = engines[:at] + self._motion + runners + engines[at:]
+
+    def set_gap(self, gap):
+        """Moves the second agglomerate along x until its surface lies ``gap`` [mm] from the first's
+        (make.move_to_gap; its contacts move with it); returns delta then."""
+        make.move_to_gap(self.members[0], self.members[1], gap)
+        return self.delta()
+
+    def delta(self):
+        c = [make.centre_of_mass(m)[0] for m in self.members]
+        return self.radii[0] + self.radii[1] - (c[0] - c[1]).norm()
+
+    def force(self):
+        f = [sum(O.forces.f(i)[0] for i in g) for g in self.grips]
+        return 0.5 * (self.side[1] * f[1] + self.side[0] * f[0])
+
+    def touching(self):
+        """Contacts in overlap between the two agglomerates."""
+        other = set(self.members[1])
+        return sum(1 for i in self.members[0] for I in O.bodies[i].intrs()
+                   if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
+
+    def _record(self):
+        self.rows.append((O.iter, self.delta(), self.force()))
+
+    def _move(self, speed):
+        """Each cap moves towards the other at ``speed`` (< 0: apart)."""
+        for e in self._motion:
+            e.velocity = speed
+
+    def stroke(self, speed, until, limit_steps):
+        """Moves the caps at ``speed`` (> 0 together) until ``until(delta, F)``, checked every
+        ``check`` steps inside the loop; returns (delta, F) there."""
+        hit = []
+
+        def check():
+            d, f = self.delta(), self.force()
+            if until(d, f):
+                hit.append((d, f))
+                O.pause()
+        self._move(speed)
+        _loop.register("agg_check", check)
+        try:
+            O.run(int(limit_steps), True)
+        finally:
+            _loop.register("agg_check", lambda: None)
+            self._move(0.0)
+        if not hit:
+            raise RuntimeError(f"stroke at speed {speed:g} did not end in {limit_steps} steps "
+                               f"(delta = {self.delta():.4g}, F = {self.force():.4g})")
+        return hit[0]
+
+    def cycles(self, amplitudes, speed, gap=0.05, max_steps=10 ** 7):
+        """The protocol of the module's docstring; amplitudes in d0 beyond the first touch, speed
+        of each cap [mm/us]. Returns the rows (iter, delta [mm], F [mg mm/us^2]); ``events`` holds
+        (what, iter, delta, F) at each turn."""
+        d0 = sample.D0
+        t0 = time.time()
+        self.set_gap(gap * d0)
+        self._record()
+
+        def note(what, d, f):
+            self.events.append((what, O.iter, d, f))
+            if self.progress:
+                print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (sample.KP * d0):+.4e}  "
+                      f"({O.iter} steps, {time.time() - t0:.0f} s)", flush=True)
+        d, f = self.stroke(speed, lambda d, f: self.touching() > 0, max_steps)
+        touch = d
+        note("touch", d, f)
+        for a in amplitudes:
+            d, f = self.stroke(speed, lambda d, f, a=a: d >= touch + a * d0, max_steps)
+            note(f"loaded to {a:g} d0", d, f)
+            d, f = self.stroke(-speed, lambda d, f: d <= touch - BELOW_TOUCH * d0, max_steps)
+            note("unloaded", d, f)
+        d, f = self.stroke(-speed, lambda d, f: self.touching() == 0 or d <= touch - MAX_PULL * d0, max_steps)
+        note("apart" if self.touching() == 0 else f"still joined at {MAX_PULL:g} d0", d, f)
+        self._record()
+        self.touch = touch
+        return self.rows

@@ -1,0 +1,138 @@
+"""The agglomerate study's jobs behind one command line (inside ``yade``; studies/scripts/agglomerate.py).
+
+    prepare   the sintered block and the two carved agglomerates (make.ensure)
+    cycles    their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)
+    collide   head-on collisions at each speed (collide.Collision)
+    compare   the law fitted to the slower cycles, the meso-particle pair and the closed form at the
+              same speeds, the summary agglomerate-vs-meso.json, cycles.png and restitution.png
+    all       the four in turn
+
+Each job loads the saved agglomerates afresh; its results go to --out (default results/agglomerate;
+--quick: <out>/quick, the small agglomerates of the pipeline's test).
+"""
+import argparse
+import json
+import os
+import time
+
+from yade import O
+
+from mesocontact import outputs
+from mesostudies.tablet import sample
+from . import collide, compare, drive, make, plots
+
+JOBS = ("prepare", "cycles", "collide", "compare", "all")
+AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
+SPEEDS = {False: (0.03, 0.1, 0.3, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 40.0), True: (0.1, 1.0, 10.0)}  # relative, m/s
+CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
+SLOWER = 4
+
+
+def _parser():
+    p = argparse.ArgumentParser(prog="yade -n -x studies/scripts/agglomerate.py", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("job", choices=JOBS)
+    p.add_argument("--out", default="results/agglomerate")
+    p.add_argument("--quick", action="store_true", help="small agglomerates (about 45 primaries), few speeds")
+    p.add_argument("--speeds", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
+                   help="relative collision speeds [m/s], comma-separated")
+    p.add_argument("--amplitudes", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
+                   help="cycle amplitudes beyond the first touch [d0], comma-separated")
+    return p
+
+
+def _check(a, p):
+    for name in ("speeds", "amplitudes"):
+        v = getattr(a, name)
+        if v is not None and (not v or any(not (x > 0 and x < float("inf")) for x in v)):
+            p.error(f"--{name} {','.join(map(str, v))} is invalid: positive finite numbers")
+
+
+def _dir(a):
+    return os.path.join(a.out, "quick") if a.quick else a.out
+
+
+def _write(path, obj):
+    outputs.write_atomic(path, json.dumps(obj, indent=1))
+
+
+def prepare(a):
+    return make.ensure(_dir(a), quick=a.quick)
+
+
+def cycles(a):
+    info = prepare(a)
+    out = {}
+    for factor in (1,) if a.quick else (1, SLOWER):  # quick: the pipeline, no rate check
+        info = make.ensure(_dir(a), quick=a.quick)
+        speed = CAP_SPEED / factor
+        print(f"cycles at {speed * 1e3:g} m/s per cap", flush=True)
+        t0, it0 = time.time(), O.iter
+        pair = drive.Pair(info["members"], [g["radius"] for g in info["agglomerates"]])
+        rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed)
+        name = f"cycles-v{speed * 1e3:g}"
+        outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
+                             "iter,delta_mm,F\n" + "".join(f"{r[0]},{r[1]!r},{r[2]!r}\n" for r in rows))
+        out[name] = {"speed_per_cap_m_s": speed * 1e3, "touch_delta_mm": pair.touch, "events": pair.events,
+                     "grip_fraction": pair.grip_fraction, "grip_particles": [len(g) for g in pair.grips],
+                     "steps": O.iter - it0, "wall_clock_s": time.time() - t0, "dt": O.dt,
+                     "units": "delta mm, F mg mm/us^2 (1e3 N)"}
+    _write(os.path.join(_dir(a), "cycles.json"), out)
+    return out
+
+
+def collisions(a):
+    out = []
+    for v in a.speeds or SPEEDS[a.quick]:
+        info = make.ensure(_dir(a), quick=a.quick)
+        c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]])
+        print(f"collision at {v:g} m/s", flush=True)
+        r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision-v{v:g}.png"))
+        print(f"  e = {r['e']:.4f}  stuck {r['stuck']}  broken off {r['broken_mass_fraction']:.3f}  "
+              f"contact time {r['contact_time']}", flush=True)
+        out.append(dict(r, v_rel_m_s=v))
+    _write(os.path.join(_dir(a), "collisions.json"), out)
+    return out
+
+
+def main(argv):
+    p = _parser()
+    a = p.parse_args(argv)
+    _check(a, p)
+    t0 = time.time()
+    jobs = ("prepare", "cycles", "collide", "compare") if a.job == "all" else (a.job,)
+    for job in jobs:
+        {"prepare": prepare, "cycles": cycles, "collide": collisions, "compare": lambda a: compare_job(a)}[job](a)
+    print(f"agglomerate {a.job}: done in {time.time() - t0:.0f} s", flush=True)
+
+
+def compare_job(a):
+    d = _dir(a)
+    with open(make.path(d, "agglomerates", a.quick) + ".json") as f:
+        info = json.load(f)
+    with open(os.path.join(d, "cycles.json")) as f:
+        runs = json.load(f)
+    names = sorted(runs, key=lambda n: runs[n]["speed_per_cap_m_s"])
+    rows = {n: [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, n + ".csv")).read().split("\n")[1:] if line]
+            for n in names}
+    fitted = compare.fit(rows[names[0]], info)
+    with open(os.path.join(d, "collisions.json")) as f:
+        hits = json.load(f)
+    speeds = [h["v_rel_m_s"] for h in hits]
+    params = fitted.params
+    e_theory = compare.theory_e(params, info, [v / 1e3 for v in speeds])
+    e_meso = compare.meso_collisions(params, info, [v / 1e3 for v in speeds])
+    summary = {"preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
+               "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
+               "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
+               "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
+               "d0_mm": sample.D0}
+    _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
+    a12 = compare.geometry(info)[0]
+    force_scale = sample.KP * sample.D0
+    plots.cycles({n: rows[n] for n in names}, compare.law_curve(params, rows[names[0]], a12), os.path.join(d, "cycles.png"),
+                 sample.D0, force_scale, runs[names[0]]["touch_delta_mm"])
+    plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
+                      os.path.join(d, "restitution.png"))
+    print(fitted.report(), flush=True)
+    return summary
