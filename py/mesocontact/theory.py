@@ -248,6 +248,16 @@ def normal_force_path(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
     bad = np.flatnonzero(~np.isfinite(d))
     if bad.size:
         raise ValueError(f"delta[{bad[0]}] = {d[bad[0]]!r} is invalid: must be finite")
+    f = _force_path(d, k1, kp, kc, phiF, a12, interpolation, np)[0]
+    if not np.all(np.isfinite(f)):
+        raise ValueError(f"normal_force_path: arguments (k1={k1!r}, kp={kp!r}, kc={kc!r}, phiF={phiF!r}, a12={a12!r}) "
+                         "out of floating-point range: the force is not finite")
+    return f
+
+
+def _force_path(d, k1, kp, kc, phiF, a12, interpolation, np):
+    """normal_force_path on checked arguments (d a float array): (force, deltaMax after each
+    sample, whether the sample is on the tensile limit, 1/deltaMax^p)."""
     touch = d > 0
     inv = (kp - k1) / (kp * phiF * a12) if kp > k1 else 0.0  # as MesoParams.cpp's pairGeometry
     lo = np.where(touch, d, 0.0)
@@ -269,10 +279,7 @@ def normal_force_path(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
         d0 = np.where(x >= 1, (1 - k1 / kp) * (1 / inv if inv > 0 else 0.0), (1 - k1 / k2) * dm)
     f = np.where(tensile, -kc * d, k2 * (d - d0))
     f[~touch] = 0.0
-    if not np.all(np.isfinite(f)):
-        raise ValueError(f"normal_force_path: arguments (k1={k1!r}, kp={kp!r}, kc={kc!r}, phiF={phiF!r}, a12={a12!r}) "
-                         "out of floating-point range: the force is not finite")
-    return f
+    return f, dm, tensile, inv
 
 
 def _deltamax_through(delta, k1, kp, kc, inv, interpolation, np):
