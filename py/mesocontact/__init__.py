@@ -2,12 +2,15 @@
 after Luding 2008) for YADE. The modules, by layer:
 
 Theory and parameters (plain Python, no YADE):
-- ``theory``: closed-form restitution, sticking limits and overlaps;
+- ``theory``: closed-form restitution, sticking limits and overlaps; the quasi-static force along
+  a path of overlaps;
 - ``params``: parameters from dimensionless groups and from measured quantities, time steps;
-- ``calibrate``: the normal parameters fitted to measured restitution e(v), a subpackage split by
-  job: ``data`` (the measured points), ``problem`` (the model against them), ``identify`` (what
-  the data can tell), ``profile`` (profile intervals), ``fitting`` (multi-start and bootstrap),
-  ``groups`` (the dimensionless groups), ``verify`` (a fit checked by YADE pair collisions);
+- ``calibrate``: the normal parameters fitted to measured restitution e(v) or to force-displacement
+  cycles, a subpackage split by job: ``data`` (the measured points), ``problem`` (the model
+  against them), ``identify`` (what the data can tell), ``profile`` (profile intervals),
+  ``fitting`` (multi-start and bootstrap), ``cycles`` and ``cycles_identify`` (the fit to F(delta)
+  and what it can tell), ``groups`` (the dimensionless groups), ``verify`` (a fit checked by YADE
+  pair collisions);
 - ``outputs``, ``scene_names``: result files that are whole or absent; names shared with readers.
 
 Scenes and drivers (inside ``yade``):

@@ -1,7 +1,8 @@
 """Closed-form theory of the meso-particle contact model (Singh, Magnanimo & Luding).
 
 Equation numbers are those of the long paper ("A contact model for sticking of adhesive
-meso-particles"); see docs/model.md §6. Plain Python (math only): importable anywhere.
+meso-particles"); see docs/model.md §6. Plain Python (math only): importable anywhere;
+normal_force_path alone imports numpy, when called.
 
 Two layers:
 - dimensionless forms for fa = 0 (Eqs. 32-40, Appendix A, C, D) in terms of the plasticity
@@ -219,6 +220,86 @@ def largest_pull(k2, kc, delta0):
     + kc), the pull kc k2 delta0/(k2 + kc) [N] (0 without a tensile limit or plastic history).
     Works elementwise on numbers; no check (the law's own values)."""
     return kc * k2 * delta0 / (k2 + kc) if kc > 0 and delta0 > 0 else 0.0
+
+
+def normal_force_path(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
+    """The hysteretic normal force (> 0 repulsive) along the overlaps ``delta`` (a sequence, any
+    consistent units; the force in those of k1 times delta), from a fresh contact: docs/model.md §3
+    as pkg/core/NormalLaw.hpp computes it, the same arithmetic (no viscous term, no non-contact
+    adhesion: quasi-static and fa = 0). Returns a numpy array.
+
+    The history is deltaMax alone: each sample first raises it to delta (loading: k1 delta, the
+    limit branch kp (delta - phiF a12) beyond deltaMax^p), then lowers it to the deltaMax whose k2
+    line passes through (delta, -kc delta) if its own line lies below the tensile limit there (the
+    force is then -kc delta); delta <= 0 ends the contact (force 0, deltaMax 0). Each sample's
+    update is a clamp of deltaMax to [lo, hi] (lo = delta, hi = that deltaMax), and clamps compose
+    to clamps, so the history is a prefix scan in log2(n) vectorised steps, not a loop."""
+    import numpy as np  # theory itself stays plain Python: only this function needs numpy
+    check_law(k1, kp, phiF, a12)
+    nonnegative("kc", kc)
+    if interpolation not in K2_INTERPOLATIONS:
+        raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
+    try:
+        d = np.asarray(delta, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"delta = {delta!r} is invalid: must be a sequence of numbers") from None
+    if d.ndim != 1:
+        raise ValueError(f"delta is invalid: must be a one-dimensional sequence (got shape {d.shape})")
+    bad = np.flatnonzero(~np.isfinite(d))
+    if bad.size:
+        raise ValueError(f"delta[{bad[0]}] = {d[bad[0]]!r} is invalid: must be finite")
+    f = _force_path(d, k1, kp, kc, phiF, a12, interpolation, np)[0]
+    if not np.all(np.isfinite(f)):
+        raise ValueError(f"normal_force_path: arguments (k1={k1!r}, kp={kp!r}, kc={kc!r}, phiF={phiF!r}, a12={a12!r}) "
+                         "out of floating-point range: the force is not finite")
+    return f
+
+
+def _force_path(d, k1, kp, kc, phiF, a12, interpolation, np):
+    """normal_force_path on checked arguments (d a float array): (force, deltaMax after each
+    sample, whether the sample is on the tensile limit, 1/deltaMax^p)."""
+    touch = d > 0
+    inv = (kp - k1) / (kp * phiF * a12) if kp > k1 else 0.0  # as MesoParams.cpp's pairGeometry
+    lo = np.where(touch, d, 0.0)
+    hi = np.where(touch, np.inf, 0.0)
+    if inv > 0:
+        through = _deltamax_through(d[touch], k1, kp, kc, inv, interpolation, np)
+        hi[touch] = np.where(through * inv < 1, through, np.inf)  # beyond deltaMax^p the limit line is one line
+    a, b = lo.copy(), hi.copy()  # prefix composition: clamp(., a[i], b[i]) = the updates of samples 0..i
+    s = 1
+    while s < len(d):
+        a[s:], b[s:] = np.clip(a[:-s], a[s:], b[s:]), np.clip(b[:-s], a[s:], b[s:])
+        s *= 2
+    dm = a  # clamp(0, a, b) = a, as a >= 0
+    before = np.concatenate(([0.0], dm[:-1]))
+    tensile = touch & (hi < np.maximum(before, d))
+    x = dm * inv
+    k2 = np.where(x >= 1, kp, k1 + (kp - k1) * (np.sqrt(np.minimum(x, 1.0)) if interpolation == "sqrt" else x))
+    with np.errstate(divide="ignore", invalid="ignore"):  # k2 > 0; 0 x inf where kp == k1 is discarded
+        d0 = np.where(x >= 1, (1 - k1 / kp) * (1 / inv if inv > 0 else 0.0), (1 - k1 / k2) * dm)
+    f = np.where(tensile, -kc * d, k2 * (d - d0))
+    f[~touch] = 0.0
+    return f, dm, tensile, inv
+
+
+def _deltamax_through(delta, k1, kp, kc, inv, interpolation, np):
+    """deltaMaxThrough of NormalLaw.hpp, elementwise on delta > 0: the deltaMax whose k2 line passes
+    through (delta, -kc delta), the root of (k2(dm) - k1) dm = (k2(dm) + kc) delta in closed form
+    (a quadratic for 'linear', a cubic in sqrt(dm) for 'sqrt'), unrestricted to dm < deltaMax^p."""
+    dmp = 1 / inv
+    x = delta * inv
+    q = (k1 + kc) / (kp - k1)
+    if interpolation == "linear":
+        return dmp * (0.5 * x + np.sqrt(0.25 * x * x + q * x))
+    P, Q = -x, -q * x  # s^3 + P s + Q = 0 with dm = deltaMax^p s^2
+    D = 0.25 * Q * Q + P * P * P / 27
+    r = np.sqrt(np.maximum(D, 0.0))
+    with np.errstate(invalid="ignore"):  # each formula evaluated where the other is used too
+        cardano = np.cbrt(-0.5 * Q + r) + np.cbrt(-0.5 * Q - r)
+        trig = 2 * np.sqrt(-P / 3) * np.cos(np.arccos(1.5 * Q / P * np.sqrt(-3 / P)) / 3)
+    s = np.where(D >= 0, cardano, trig)
+    s = s - (s * s * s + P * s + Q) / (3 * s * s + P)  # one Newton step polishes rounding
+    return dmp * s * s
 
 
 @_in_range

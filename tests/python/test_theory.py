@@ -311,3 +311,131 @@ class TensileRange(unittest.TestCase):
                 theory.tensile_range(*args)
         with self.assertRaisesRegex(ValueError, "phiF"):
             theory.max_tensile_range(1.0, 0.2, 0.0, 0.5)
+
+
+def force_path_loop(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
+    """normal_force_path as a loop over the samples, transcribed from pkg/core/NormalLaw.hpp
+    (hystereticForce, setUnloadingLine, deltaMaxThrough) with Python's math."""
+    inv = (kp - k1) / (kp * phiF * a12) if kp > k1 else 0.0
+    dmp = 1 / inv if inv > 0 else math.inf
+
+    def k2_of(dm):
+        x = dm * inv
+        return kp if x >= 1 else k1 + (kp - k1) * (math.sqrt(x) if interpolation == "sqrt" else x)
+
+    def line(dm):  # (deltaMax, delta0) of the k2 line of dm
+        return dm, (1 - k1 / kp) * dmp if dm * inv >= 1 else (1 - k1 / k2_of(dm)) * dm
+
+    def through(d):
+        x, q = d * inv, (k1 + kc) / (kp - k1)
+        if interpolation == "linear":
+            return dmp * (0.5 * x + math.sqrt(0.25 * x * x + q * x))
+        P, Q = -x, -q * x
+        D = 0.25 * Q * Q + P * P * P / 27
+        if D >= 0:
+            r = math.sqrt(D)
+            s = math.copysign(abs(-0.5 * Q + r) ** (1 / 3), -0.5 * Q + r) + math.copysign(abs(-0.5 * Q - r) ** (1 / 3), -0.5 * Q - r)
+        else:
+            s = 2 * math.sqrt(-P / 3) * math.cos(math.acos(1.5 * Q / P * math.sqrt(-3 / P)) / 3)
+        s -= (s * s * s + P * s + Q) / (3 * s * s + P)
+        return dmp * s * s
+
+    dm = d0 = 0.0
+    out = []
+    for d in delta:
+        if d <= 0:
+            dm = d0 = 0.0
+            out.append(0.0)
+            continue
+        if d > dm:
+            dm, d0 = line(d)
+        f = k2_of(dm) * (d - d0)
+        if f < -kc * d:
+            dm, d0 = line(through(d))
+            f = -kc * d
+        out.append(f)
+    return out
+
+
+class NormalForcePath(unittest.TestCase):
+    """theory.normal_force_path (the YADE comparison is yade.normal_path)."""
+    law = (100.0, 500.0, 100.0, 0.1, 1e-3)  # k1, kp, kc, phiF, a12: deltaMax^p = 1.25e-4 m
+
+    def test_against_a_loop_on_random_paths(self):
+        import numpy as np
+        rng = np.random.default_rng(1)
+        worst = {"linear": 0.0, "sqrt": 0.0}
+        for _ in range(100):
+            k1 = 10 ** rng.uniform(1, 3)
+            kp, kc, phiF = k1 * (1 + 10 ** rng.uniform(-1, 2)), k1 * rng.choice([0, 0.1, 1, 5]), rng.uniform(0.01, 1)
+            dmp = theory.delta_max_p(k1, kp, phiF, 1e-3)
+            d = np.clip(np.cumsum(rng.normal(0, 0.05 * dmp, 400)) + rng.uniform(0, dmp), -0.3 * dmp, 3 * dmp)
+            for interp in worst:
+                got = theory.normal_force_path(d, k1, kp, kc, phiF, 1e-3, interp)
+                want = np.array(force_path_loop(d, k1, kp, kc, phiF, 1e-3, interp))
+                worst[interp] = max(worst[interp], float(np.max(np.abs(got - want)) / np.max(np.abs(want))))
+        self.assertEqual(worst["linear"], 0.0)  # the same operations: the same bits
+        self.assertLess(worst["sqrt"], 1e-12)   # numpy's cos/arccos/cbrt against libm's
+
+    def test_branches(self):
+        k1, kp, kc, phiF, a12 = self.law
+        dmp = theory.delta_max_p(k1, kp, phiF, a12)
+        up = [0.2 * dmp, 0.6 * dmp]
+        f = theory.normal_force_path(up + [0.5 * dmp, 0.05 * dmp, 0.0, 0.3 * dmp, 2 * dmp, 1.9 * dmp], *self.law)
+        k2 = k1 + (kp - k1) * 0.6
+        self.assertAlmostEqual(f[0], k1 * 0.2 * dmp, delta=1e-15)           # loading k1 delta
+        self.assertAlmostEqual(f[2] - f[1], -k2 * 0.1 * dmp, delta=1e-15)   # unloading along k2
+        self.assertEqual(f[3], -kc * 0.05 * dmp)                            # the tensile limit
+        self.assertEqual(f[4], 0.0)
+        self.assertAlmostEqual(f[5], k1 * 0.3 * dmp, delta=1e-15)           # delta <= 0 ended the contact
+        self.assertAlmostEqual(f[6], kp * (2 * dmp - phiF * a12), delta=1e-15)  # the limit branch
+        self.assertAlmostEqual(f[6] - f[7], kp * 0.1 * dmp, delta=1e-15)
+
+    def test_reloading_from_the_tensile_branch(self):
+        """Down the -kc branch the contact forgets: re-loaded, it follows the k2 line through its
+        last tensile point and joins k1 delta at that line's deltaMax, below the first maximum."""
+        k1, kp, kc, phiF, a12 = self.law
+        dmp = theory.delta_max_p(k1, kp, phiF, a12)
+        d = [0.6 * dmp, 0.1 * dmp, 0.2 * dmp, 0.5 * dmp]
+        f = theory.normal_force_path(d, *self.law)
+        dm = 0.1 * dmp * 0.5 + math.sqrt((0.1 * dmp) ** 2 / 4 + (k1 + kc) * dmp / (kp - k1) * 0.1 * dmp)  # the quadratic's root
+        self.assertTrue(0.2 * dmp < dm < 0.5 * dmp)
+        self.assertAlmostEqual(f[3], k1 * 0.5 * dmp, delta=1e-15)  # back on k1 delta before the first maximum 0.6
+        k2 = k1 + (kp - k1) * dm / dmp
+        self.assertAlmostEqual(f[2], k2 * (0.2 * dmp - (1 - k1 / k2) * dm), delta=1e-15)
+        self.assertAlmostEqual(theory.normal_force_path(d[:2], *self.law)[1], -kc * 0.1 * dmp, delta=1e-18)
+
+    def test_largest_pull(self):
+        """Unloading slowly from deltaMax, the most tensile force is largest_pull's."""
+        import numpy as np
+        k1, kp, kc, phiF, a12 = self.law
+        dmp = theory.delta_max_p(k1, kp, phiF, a12)
+        for dm in (0.3 * dmp, 0.8 * dmp, 1.5 * dmp):
+            step = dm / 200000
+            d = np.concatenate([np.linspace(0, dm, 50)[1:], np.linspace(dm, 0, 200001)[1:]])
+            f = theory.normal_force_path(d, *self.law)
+            k2 = kp if dm >= dmp else k1 + (kp - k1) * dm / dmp
+            d0 = phiF * a12 if dm >= dmp else (1 - k1 / k2) * dm
+            self.assertAlmostEqual(-f.min(), theory.largest_pull(k2, kc, d0), delta=(kp + kc) * step)  # sampled kink
+
+    def test_elastic_and_no_tension(self):
+        import numpy as np
+        d = np.array([1e-4, 3e-4, 1e-4, 2e-4])
+        np.testing.assert_array_equal(theory.normal_force_path(d, 100.0, 100.0, 0.0, 0.1, 1e-3), 100.0 * d)
+        f = theory.normal_force_path([1e-4, 1e-6, 5e-5], 100.0, 500.0, 0.0, 0.1, 1e-3)
+        self.assertEqual(f[1], 0.0)  # kc = 0: the tensile limit is zero force
+        self.assertEqual(len(theory.normal_force_path([], *self.law)), 0)
+
+    def test_bad_input_names_argument(self):
+        k1, kp, kc, phiF, a12 = self.law
+        for args, kw, name in (((([1e-4, math.nan]), k1, kp, kc, phiF, a12), {}, r"delta\[1\]"),
+                               ((([[1e-4]]), k1, kp, kc, phiF, a12), {}, "delta"),
+                               ((("ab",), k1, kp, kc, phiF, a12), {}, "delta"),
+                               (([1e-4], 0.0, kp, kc, phiF, a12), {}, "k1"),
+                               (([1e-4], k1, 50.0, kc, phiF, a12), {}, "kp"),
+                               (([1e-4], k1, kp, -1.0, phiF, a12), {}, "kc"),
+                               (([1e-4], k1, kp, kc, 1.5, a12), {}, "phiF"),
+                               (([1e-4], k1, kp, kc, phiF, -1.0), {}, "a12"),
+                               (([1e-4], k1, kp, kc, phiF, a12), {"interpolation": "cubic"}, "interpolation")):
+            with self.assertRaisesRegex(ValueError, name):
+                theory.normal_force_path(*args, **kw)

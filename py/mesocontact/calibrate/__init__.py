@@ -1,5 +1,6 @@
-"""Calibration: the law's normal parameters from measured restitution e(v) (plain Python with
-numpy and scipy; no YADE). docs/calibration.md explains the method and what it showed.
+"""Calibration: the law's normal parameters from measured restitution e(v), or from
+force-displacement cycles F(delta) (``fit_cycles``); plain Python with numpy and scipy, no YADE.
+docs/calibration.md explains the method and what it showed.
 
     from mesocontact import calibrate
     d = calibrate.load_data("drops.csv")                       # columns v, e[, sigma] (SI)
@@ -16,11 +17,13 @@ logarithms of the free parameters, and says so.
 The package, by job: ``data`` (the data and the collisions they come from), ``problem`` (the
 least-squares problem, its starts and solves), ``identify`` (what the Jacobian says the data
 determine), ``profile`` (profile-likelihood intervals, the bootstrap), ``fitting`` (``fit`` and
-its result ``Fit``), ``groups`` (parameters from dimensionless groups, from e and a contact time),
-``verify`` (the fit through YADE, its picture). Every public name is reachable here.
+its result ``Fit``), ``cycles`` (``fit_cycles`` on F(delta), its result ``CycleFit``), ``groups``
+(parameters from dimensionless groups, from e and a contact time), ``verify`` (the fit through
+YADE, its picture). Every public name is reachable here.
 """
 from .data import AGAINST, PARAMETERS, Data, DataError, Setup, check_data, geometry, load_data  # noqa: F401
 from .fitting import RESTARTS, Fit, fit  # noqa: F401
+from .cycles import CYCLE_PARAMETERS, CYCLE_STARTS, CycleFit, fit_cycles  # noqa: F401
 from .groups import contact_duration, from_groups, from_restitution_and_contact_time, material  # noqa: F401
 from .identify import NULL_RCOND, UNDETERMINED_FACTOR, Z95  # noqa: F401
 from .problem import EXPLORE_KEPT, EXPLORE_NFEV, SCREEN_CANDIDATES, SCREEN_POLISHED  # noqa: F401

@@ -39,9 +39,10 @@ def _log_jacobian(names, p, setup, data, w):
     return np.array(cols).T, at_zero
 
 
-def _identify(names, p, setup, data, w, s2):
-    """Covariance of the log parameters, 95 % intervals, correlation, the undetermined and why."""
-    J, at_zero = _log_jacobian(names, p, setup, data, w)
+def _log_covariance(J, s2):
+    """From the Jacobian J of the residuals in the fit's log coordinates and the noise variance s2:
+    the standard deviations (inf along a direction the data cannot see), the correlation (a tiny
+    ridge keeps it finite), the singular values and the right singular vectors."""
     U, sv, Vt = np.linalg.svd(J, full_matrices=False)
     null = sv < NULL_RCOND * max(sv.max(), 1e-300)
     # var(log p_i) = s2 sum_k V_ki^2 / sv_k^2; a null direction makes it infinite for the
@@ -52,9 +53,33 @@ def _identify(names, p, setup, data, w, s2):
     var = s2 * terms.sum(axis=0)
     sd = np.sqrt(var)
     ridge = 1e-12 * max(float(np.max(sv)) ** 2, 1e-300)
-    C = np.linalg.inv(J.T @ J + ridge * np.eye(len(names)))
+    C = np.linalg.inv(J.T @ J + ridge * np.eye(J.shape[1]))
     d = np.sqrt(np.diag(C))
     corr = (C / np.outer(d, d)).tolist()
+    return sd, corr, sv, Vt
+
+
+def _combinations(names, sv, Vt, s2, what):
+    """Plain sentences on the weak directions: where moving the log parameters changes the data's
+    model (``what``, e.g. "e(v)") by less than the noise over the interval factor."""
+    statements = []
+    weak = [k for k in range(len(sv)) if sv[k] == 0 or math.sqrt(s2) / sv[k] * Z95 > math.log(UNDETERMINED_FACTOR)]
+    for k in weak:
+        v = Vt[k]
+        involved = [(names[i], v[i]) for i in range(len(names)) if abs(v[i]) > 0.05 * np.abs(v).max()]
+        if len(involved) < 2:
+            continue
+        ref = max(involved, key=lambda t: abs(t[1]))[1]
+        moves = ", ".join(f"{n} x lambda^{c / ref:+.2f}" for n, c in involved)
+        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; {what} stays the same "
+                          f"(to the noise) along {moves}; fix one of them")
+    return statements
+
+
+def _identify(names, p, setup, data, w, s2):
+    """Covariance of the log parameters, 95 % intervals, correlation, the undetermined and why."""
+    J, at_zero = _log_jacobian(names, p, setup, data, w)
+    sd, corr, sv, Vt = _log_covariance(J, s2)
     ci, undetermined = {}, []
     for i, n in enumerate(names):
         if at_zero[i]:  # d/d(value/scale): the interval's upper end from the linear sd
@@ -77,18 +102,7 @@ def _identify(names, p, setup, data, w, s2):
     for i, n in enumerate(names):
         if n in undetermined and colnorm[i] <= 1e-6 * max(colnorm.max(), 1e-300):
             statements.append(f"{n}: e(v) does not depend on it at the data's speeds (no point where it acts)")
-    # the weak directions: where moving the log parameters changes e by less than the noise over
-    # the interval factor
-    weak = [k for k in range(len(sv)) if sv[k] == 0 or math.sqrt(s2) / sv[k] * Z95 > math.log(UNDETERMINED_FACTOR)]
-    for k in weak:
-        v = Vt[k]
-        involved = [(names[i], v[i]) for i in range(len(names)) if abs(v[i]) > 0.05 * np.abs(v).max()]
-        if len(involved) < 2:
-            continue
-        ref = max(involved, key=lambda t: abs(t[1]))[1]
-        moves = ", ".join(f"{n} x lambda^{c / ref:+.2f}" for n, c in involved)
-        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; e(v) stays the same "
-                          f"(to the noise) along {moves}; fix one of them")
+    statements += _combinations(names, sv, Vt, s2, "e(v)")
     return ci, corr, undetermined, statements
 
 
