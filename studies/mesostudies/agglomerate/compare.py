@@ -6,6 +6,7 @@ Units: the study's (mm, us, mg) inside; the library's functions take SI, convert
 import math
 
 from mesocontact import calibrate
+from mesocontact import params as _params
 from mesocontact import theory
 
 MM, US, MG = 1e-3, 1e-6, 1e-6     # in m, s, kg
@@ -15,11 +16,11 @@ FREE = ("k1", "kp", "kc", "phiF")
 
 
 def geometry(info):
-    """(a12 [m], m_r [kg], radii [m], masses [kg]) of the two agglomerates of make.ensure's description."""
+    """(a12 [m], m_r [kg], radii [m], masses [kg]) of the two agglomerates of make.ensure's description
+    (a12 = 2 R1 R2/(R1 + R2), the law's, as YADE's Ip2 computes it)."""
     radii = [a["radius"] * MM for a in info["agglomerates"]]
     masses = [a["mass"] * MG for a in info["agglomerates"]]
-    return (radii[0] * radii[1] / (radii[0] + radii[1]), masses[0] * masses[1] / (masses[0] + masses[1]),
-            radii, masses)
+    return _params.reduced_radius(*radii), _params.reduced_mass(*masses), radii, masses
 
 
 def fit(rows, info, free=FREE):
