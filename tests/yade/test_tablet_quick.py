@@ -341,4 +341,17 @@ for bad in (0.0, -0.02, float("nan")):
     except ValueError as e:
         check(str(e).startswith("sinter"), f"bad sinter rejected: {e}")
 
+# 8. Issue #50: a test records each iteration once (it recorded its start twice, explicitly and by
+#    its recorder in the next step at the same iter): no CSV written here has two rows at one iter.
+tables, repeated = 0, []
+for p in sorted(glob.glob(os.path.join(out, "**", "*.csv"), recursive=True)):
+    with open(p) as f:
+        lines = f.read().split("\n")
+    if lines[0].startswith("iter,"):
+        tables += 1
+        iters = [ln.split(",", 1)[0] for ln in lines[1:] if ln]
+        repeated += [f"{os.path.relpath(p, out)} (iter {a})" for a, b in zip(iters, iters[1:]) if a == b]
+check(tables >= 20 and not repeated, f"{tables} CSVs with an iter column, one row per iter",
+      f"repeated: {repeated[:4]}{' ...' if len(repeated) > 4 else ''}" if repeated else "")
+
 finish()

@@ -93,7 +93,9 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
     records, slab_rows = [], []
 
     def hook(t, row):
-        if (len(t.rows) - 1) % every_records:
+        # The start, then every every_records-th record counted as before #50 (the start was recorded
+        # twice): the records the committed profiles hold.
+        if len(t.rows) > 1 and len(t.rows) % every_records:
             return
         u = [sum(O.bodies[i].state.pos[0] - start[i] for i in m) / len(m) for m in members]
         counts = {"line": 0, "tensile": 0}

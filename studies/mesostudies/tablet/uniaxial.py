@@ -285,7 +285,11 @@ class Test:
         _before_newton(motion + [_loop.runner(self._record, every, "recorder")])
 
     def _record(self):
-        if not self.records:
+        """Records (iter, Dx, F), the branch fractions and the plot data, once per iteration: a test
+        records its start explicitly, and the recorder installed with it runs in the next step at
+        the same O.iter (engines run before the step is counted); that second record is left out,
+        the first kept (force_cycles' f_start reads it)."""
+        if not self.records or (self.rows and self.rows[-1][0] == O.iter):
             return
         row = (O.iter, self.dx(), self.force())
         self.rows.append(row)

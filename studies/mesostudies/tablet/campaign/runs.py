@@ -399,7 +399,9 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         if row[2] < peak[0]:
             peak[0] = row[2]
             events["planes_at_peak"] = dict(_uni.crossing_profile(), Dx=dx, F=row[2])
-        if len(t.rows) % check_every == 0:
+        # Every check_every-th record, counted from 2 as before #50 (the start was recorded twice,
+        # the hook called twice): the records the committed pulls checked.
+        if (len(t.rows) + 1) % check_every == 0:
             if not events["gap_area"] or events["gap_area"][-1][1] < 2 * GAP_AREA:  # up to twice the criterion
                 area = _snap.visible_gap()
                 events["gap_area"].append((dx, area))
