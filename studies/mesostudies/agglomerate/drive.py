@@ -81,6 +81,8 @@ class Pair:
                    if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
 
     def _record(self):
+        if self.rows and self.rows[-1][0] == O.iter:  # the explicit start record and the recorder's at one step
+            return
         self.rows.append((O.iter, self.delta(), self.force()))
 
     def _move(self, speed):

@@ -1,0 +1,108 @@
+# ctest (inside yade): the agglomerate study's pipeline on small agglomerates (about 35 primaries;
+# studies/scripts/agglomerate.py all --quick): the carving, the surfaces' first touch, the cycles'
+# turning points and rigid caps, collisions that conserve momentum and lose energy, the fitted law's
+# residual recomputed from the CSV, and the meso-particle pair against the closed form.
+import json
+import math
+import os
+import tempfile
+
+import numpy as np
+from yade import O
+from mesostudies.agglomerate import compare, make, study
+from mesostudies.tablet import sample
+from harness import check, finish
+
+D0 = sample.D0
+out = tempfile.mkdtemp(prefix="agglomerate-")
+study.main(["all", "--quick", "--out", out])
+d = os.path.join(out, "quick")
+
+# 1. The carved pair: two connected agglomerates, R the outer sphere about the centre of mass.
+info = make.ensure(d, quick=True, progress=False)
+check(info["block"]["built"].get("aspect") == [2, 1, 1], "the block is two cubes", str(info["block"]["built"].get("aspect")))
+for k, (ids, a) in enumerate(zip(info["members"], info["agglomerates"])):
+    pos = np.array([list(O.bodies[i].state.pos) for i in ids])
+    rad = np.array([O.bodies[i].shape.radius for i in ids])
+    mass = np.array([O.bodies[i].state.mass for i in ids])
+    c = (mass[:, None] * pos).sum(0) / mass.sum()
+    r_out = float((np.linalg.norm(pos - c, axis=1) + rad).max())
+    check(len(ids) >= 20, f"agglomerate {k}: {len(ids)} primaries")
+    check(abs(r_out - a["radius"]) < 1e-12 * a["radius"], f"agglomerate {k}: R = {a['radius'] / D0:.4f} d0 is the outer sphere about the centre of mass",
+          f"recomputed {r_out / D0:.6f}")
+    check(a["radius"] <= info["carve_radius"] * 1.01 + 0.01 * D0, f"agglomerate {k}: within the carved sphere (grown by relaxing at most 1 %)")
+
+O.step()  # the loaded state's contact geometry
+for k, ids in enumerate(info["members"]):
+    check(len(make._clusters(ids)) == 1, f"agglomerate {k}: one connected cluster")
+
+# 2. move_to_gap: the surfaces (not the outer spheres) are gap apart along x: brute force over all pairs.
+A, B = info["members"]
+gap = 0.05 * D0
+make.move_to_gap(A, B, gap)
+pa = np.array([list(O.bodies[i].state.pos) for i in A])
+pb = np.array([list(O.bodies[i].state.pos) for i in B])
+ra = np.array([O.bodies[i].shape.radius for i in A])
+rb = np.array([O.bodies[i].shape.radius for i in B])
+side = 1.0 if pb[:, 0].mean() > pa[:, 0].mean() else -1.0
+
+
+def surface_gap(t):
+    """The smallest surface distance of any pair with B moved t towards A along x."""
+    q = pb - np.array([side * t, 0, 0])
+    return float((np.linalg.norm(pa[:, None, :] - q[None, :, :], axis=2) - ra[:, None] - rb[None, :]).min())
+
+
+check(surface_gap(0.0) > 0 and abs(surface_gap(gap)) < 1e-9 * D0, "move_to_gap: the surfaces touch after moving the gap",
+      f"gap {surface_gap(0.0) / D0:.4f} d0 apart, {surface_gap(gap) / D0:.2e} d0 after moving {gap / D0} d0")
+
+# 3. The cycles: turning points where asked, force > 0 at each loaded turn, caps rigid.
+cyc = json.load(open(os.path.join(d, "cycles.json")))
+check(len(cyc) == 1, "quick: one cycle run (no rate check)", str(list(cyc)))
+run = next(iter(cyc.values()))
+touch = run["touch_delta_mm"]
+loaded = [e for e in run["events"] if e[0].startswith("loaded to")]
+check(len(loaded) == len(study.AMPLITUDES[True]), "one loaded turn per amplitude")
+for e, a in zip(loaded, study.AMPLITUDES[True]):
+    over = (e[2] - touch) / D0 - a
+    check(0 <= over < 0.01 and e[3] > 0, f"loaded to {a} d0: delta - delta_touch = {(e[2] - touch) / D0:.4f} d0, F = {e[3]:.3e} > 0")
+unloaded = [e for e in run["events"] if e[0] == "unloaded"]
+check(all(-0.21 < (e[2] - touch) / D0 <= -0.2 for e in unloaded), "each unloading turns 0.2 d0 below the first touch")
+rows = [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, "cycles-v2.5.csv")).read().split("\n")[1:] if line]
+check(len({r[0] for r in rows}) == len(rows), f"cycles CSV: {len(rows)} rows, one per iteration")
+
+# 4. The fit's residual recomputed from the CSV and the fitted law (compare.law_curve: units, shift, a12).
+summary = json.load(open(os.path.join(d, "agglomerate-vs-meso.json")))
+fit = summary["fit"]
+a12 = compare.geometry(info)[0]
+law = compare.law_curve(fit, rows, a12)
+res = np.array([r[2] for r in rows]) - np.array(law)
+scale = max(abs(r[2]) for r in rows)
+rms = float(np.sqrt(np.mean(res ** 2))) / scale
+check(abs(rms - fit["rms_relative"]) < 1e-6 * fit["rms_relative"], f"fit residual {fit['rms_relative']:.4f} of the force scale, recomputed {rms:.4f}")
+check(abs(fit["a12"] - a12) < 1e-15 * a12, "the fit used the law's a12 = 2 R1 R2/(R1 + R2)")
+
+# 5. Collisions: no external force (momentum kept), energy lost, e in [0, 1]; meso pair = closed form.
+hits = json.load(open(os.path.join(d, "collisions.json")))
+for h in hits:
+    check(h["touched"] and 0 <= h["e"] <= 1 and h["contact_time"] > 0, f"collision at {h['v_rel_m_s']} m/s: e = {h['e']:.4f}, contact time {h['contact_time']:.3g} us")
+for v, em, et in zip(summary["speeds"], summary["e_meso"], summary["e_theory"]):
+    check(abs(em - et) < 1e-4, f"meso pair at {v} m/s: e = {em:.6f} (YADE) against {et:.6f} (closed form)")
+info = make.ensure(d, quick=True, progress=False)
+from mesostudies.agglomerate import collide  # noqa: E402
+c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]])
+masses = [sum(O.bodies[i].state.mass for i in m) for m in info["members"]]
+v = 1.0 / 1e3
+r = c.run(v, progress=False)
+p = sum(O.bodies[i].state.mass * O.bodies[i].state.vel[0] for m in info["members"] for i in m)
+s = 1.0 if make.centre_of_mass(info["members"][1])[0][0] > make.centre_of_mass(info["members"][0])[0][0] else -1.0
+p0 = s * 0.5 * v * (masses[0] - masses[1])
+check(abs(p - p0) < 1e-9 * sum(masses) * v, "collision: momentum along x kept (no external force)", f"{p:.6e} against {p0:.6e}")
+ke = sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm() for m in info["members"] for i in m)
+ke0 = 0.5 * sum(masses) * (0.5 * v) ** 2
+check(ke < ke0 and math.isfinite(ke), f"collision: kinetic energy {ke / ke0:.3f} of the start's")
+
+for f in ("cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
+    check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")
+check(all(k in summary for k in ("fit", "speeds", "e_agglomerate", "e_meso", "e_theory", "fragmented")), "summary keys")
+finish()
