@@ -36,7 +36,7 @@ from .profile import persistent_from
 from .statements import load_json, read_csv
 
 E1_SAMPLES = (("chosen", 0.02), ("mid", 0.05), ("deep", 0.1))
-VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep"}  # variants/<sample> -> its E1 folder
+VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep", "0.1-seed2": None}  # variants/<sample> -> its E1 folder (None: no E1 run)
 K1_OVER_KP, KC_OVER_KP = 0.5, 0.2  # the Appendix F particles' k1/kp and kc/kp (mesostudies.tablet.sample.MATERIALS)
 
 
@@ -142,9 +142,10 @@ def e3(tree):
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
                      "peak_Dx_free": info["peak_Dx"] / free,
                      "F02_free_over_peak": f02_free / info["peak_F"] if f02_free is not None and info["peak_F"] else None,
-                     "loading": (f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
+                     "loading": ((f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
                                  f"{grips['left'] + grips['right'] + grips['free']} particles; free {free:.2f} of L0)")
-                     if grips else "walls", "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                     if grips else "walls") + (f"; sliding, rolling, torsion {info['limits']['limits']} (E7)"
+                                                if info.get("limits") else ""), "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
                      "free_fraction": free, "strain_2x_from_Dx": persistent_from(info["records"], 2.0 / free),
                      "strain_at_peak": at_peak["max_strain_over_affine"] * free if at_peak["max_strain_over_affine"] else None, "strain_at_peak_where_d0": at_peak["at_d0"],

@@ -58,12 +58,15 @@ def persistent_from(records, factor):
     return start
 
 
-def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records=5, progress=True, grips=None):
+def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records=5, progress=True, grips=None,
+        limits=None):
     """The pull to Dx = ``until`` on the unconfined start (campaign.prepare with ``protocol``),
     recorded every ``every_records`` records (each 100 steps): writes profile/ in ``outdir``.
     ``slabs``: how many slabs along x (default: one per d0 of the sample's length). ``grips``:
     pulled through glued particles of this thickness [d0] instead of the flat walls (E4; bundle
-    profile-grips<D>/); the contacts inside one grip, which cannot deform, are not counted."""
+    profile-grips<D>/); the contacts inside one grip, which cannot deform, are not counted.
+    ``limits``: the particles' sliding, rolling and torsion limits set to sample.LIMITS[limits] on
+    the unconfined start (E7; bundle profile-<limits>/)."""
     import json
     import os
 
@@ -76,6 +79,7 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
 
     from . import uniaxial
     prepare(outdir, quick, progress, **(protocol or {}))
+    variant = sample.set_limits(limits) if limits is not None else None
     members = uniaxial.grip_members(grips) if grips is not None else {}
     rigid = [set(m) for m in members.values()]
     contacts, _ = affine.contacts_of_scene(rigid)  # before the test's first step, as affine.run reads them
@@ -122,14 +126,15 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
             "particles_per_slab": [len(m) for m in members], "contacts_at_start": len(pairs),
             "peak_Dx": peak[1], "peak_F": peak[2], "localization_first_Dx": first,
             "records": records, "protocol": dict(PROTOCOL, **(protocol or {})), "quick": quick, "speed": PULL_SPEED,
-            "grips": test.grips,
+            "grips": test.grips, "limits": variant,
             "definitions": {"local strain": "difference of neighbouring slabs' mean x displacement over their centres' "
                                             "distance, over the affine strain Dx d0 / L0",
                             "measured branches": "the particle contacts of the start: on -kc delta (tensile), in overlap "
                                                  "otherwise (line: k1, kp or k2, compressive or tensile), without "
                                                  "overlap or gone (open)",
                             "affine branches": "the same contacts stretched affinely (affine.py)"}}
-    with outputs.Bundle(os.path.join(root(outdir, quick), "profile" if grips is None else f"profile-grips{grips:g}")) as b:
+    name = "profile" + (f"-grips{grips:g}" if grips is not None else "") + (f"-{limits}" if limits is not None else "")
+    with outputs.Bundle(os.path.join(root(outdir, quick), name)) as b:
         b.write_text("profile.csv", _csv_text(rows))
         b.write_text("profile-slabs.csv", _csv_text(slab_rows, "iter,Dx," + ",".join(f"gap{k}" for k in range(n_slabs - 1))))
         b.write_json("profile.json", info)

@@ -397,6 +397,25 @@ def set_tensile_stiffness(kc_over_kp):
             "tensile_fraction": tensile}
 
 
+LIMITS = {"locked": dict(frictionAngle=math.atan(1e3), muR=1e3, muO=1e3),   # no sliding, rolling or twisting
+          "free": dict(frictionAngle=0.0, muR=0.0, muO=0.0)}               # no resistance to them at all
+
+
+def set_limits(mode):
+    """The loaded state with the particles' Coulomb limits of sliding, rolling and torsion changed
+    (issue #47, E7: is the early loss of tension the contacts' re-arrangement?): 'locked' (mu,
+    muR, muO = 1000: the springs never slip) or 'free' (all 0: no tangential, rolling or torsion
+    force); every sphere's contact adopts it keeping its history. Returns {'limits', 'was'}."""
+    if mode not in LIMITS:
+        raise ValueError(f"limits = {mode!r} is invalid: one of {sorted(LIMITS)}")
+    mat = [m for m in O.materials if m.label == "particles"][0]
+    was = {k: getattr(mat, k) for k in LIMITS[mode]}
+    for k, v in LIMITS[mode].items():
+        setattr(mat, k, v)
+    _give_material(sphere_ids(), mat)
+    return {"limits": mode, "was": was}
+
+
 def _switch_particles(label):
     """Gives every sphere the material ``label`` (_give_material)."""
     _give_material(sphere_ids(), [m for m in O.materials if m.label == label][0])

@@ -59,6 +59,9 @@ OPTIONS = (
     ("--test-kc-over-kp", dict(type=float, default=None,
                                help="fig16: the particles' kc/kp from the unconfined start on, every contact keeping "
                                     "its history (the same sample with another tensile stiffness)")),
+    ("--test-limits", dict(default=None, choices=sorted(sample.LIMITS),
+                           help="profile: the particles' sliding, rolling and torsion limits from the unconfined start on "
+                                "(locked: never slip; free: none), every contact keeping its history (issue #47, E7)")),
     ("--grips", dict(type=float, default=None, metavar="D",
                      help="fig16, profile: load through the particles within D d0 of each wall, moved as rigid grips, "
                           "instead of the flat walls (issue #47, E4)")),
@@ -126,6 +129,8 @@ def parse_args(figure, argv):
         _numbers(p, "--until", str(a.until), 0, 1e3, "the final Dx of the pull or compression in d0")
     if (a.returns != "length" or a.test_kc_over_kp is not None) and figure != "fig16":
         p.error(f"--returns and --test-kc-over-kp: only fig16 runs these variants (not {figure})")
+    if a.test_limits is not None and figure != "profile":
+        p.error(f"--test-limits: only profile runs this variant (not {figure})")
     if a.grips is not None and figure not in ("fig16", "profile"):
         p.error(f"--grips: only fig16 and profile load through grips (not {figure})")
     if a.grips is not None and not (math.isfinite(a.grips) and 0.25 <= a.grips <= 0.25 * side):
@@ -209,7 +214,7 @@ JOBS = {
     "affine": (lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
                "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
     "profile": (lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a), until=a.until or 0.3,
-                                                                  grips=a.grips),
+                                                                  grips=a.grips, limits=a.test_limits),
                 "the pull's first part with the strain by slab and the contacts' branches against an affine stretch."),
 }
 FIGURES = tuple(JOBS)
