@@ -133,6 +133,7 @@ def e3(tree):
         pull = read_csv(os.path.join(base, sample, "profile.csv"))
         f02 = _force_at(pull, 0.2)
         at_peak = min(info["records"], key=lambda r: abs(r["Dx"] - info["peak_Dx"]))
+        at_02 = min(info["records"], key=lambda r: abs(r["Dx"] - 0.2))  # where the stretch gathers after the peak
         proto = info["protocol"]
         grips = info.get("grips")
         # The profile divides the local strain by Dx d0 / L0; through grips only L0 - 2 t d0 is free
@@ -149,6 +150,8 @@ def e3(tree):
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
                      "free_fraction": free, "strain_2x_from_Dx": persistent_from(info["records"], 2.0 / free),
                      "strain_at_peak": at_peak["max_strain_over_affine"] * free if at_peak["max_strain_over_affine"] else None, "strain_at_peak_where_d0": at_peak["at_d0"],
+                     "strain_at_02": at_02["max_strain_over_affine"] * free if at_02["max_strain_over_affine"] else None,
+                     "strain_at_02_where_d0": at_02["at_d0"], "record_02_Dx": at_02["Dx"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
@@ -211,17 +214,18 @@ def markdown(one, two, label, three=(), five_six=()):
                "fraction, and the force at Dx = 0.2 times the free fraction over the peak (the walls' Dx of the same "
                "strain of the free part).", "",
                "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
-               "(where, from the left face [d0]) | stays >= 2x affine from Dx "
+               "(where, from the left face [d0]) | the same at Dx = 0.2 (where) | stays >= 2x affine from Dx "
                "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
                "| most on -kc delta: measured / affine |",
-               "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
             grip = r["loading"] != "walls"
             md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f}"
                       + (f" ({r['peak_Dx_free']:.3f})" if grip else "") + " | "
                       f"{_f(r['F02_over_peak'], '{:.2f}')}" + (f" ({_f(r['F02_free_over_peak'], '{:.2f}')})" if grip else "")
                       + f" | {_f(r['strain_at_peak'], '{:.1f}')} "
-                      f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
+                      f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_at_02'], '{:.1f}')} "
+                      f"({_f(r['strain_at_02_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
                       f"{r['measured']['tensile']:.1%} / {r['affine']['tensile']:.1%} | "
                       f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
                       f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")
@@ -232,7 +236,7 @@ def markdown(one, two, label, three=(), five_six=()):
                "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
                "(k2 = k1 to kp) | at Dx | F at the first turn / first peak "
                "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
-               "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in five_six:
             b = r["E1"] or {}
             md.append(f"| {r['sample']} | {r['variant']} | {r['amplitude']:g} | {r['period']:g} | "
