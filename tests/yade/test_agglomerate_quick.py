@@ -57,9 +57,9 @@ check(surface_gap(0.0) > 0 and abs(surface_gap(gap)) < 1e-9 * D0, "move_to_gap: 
       f"gap {surface_gap(0.0) / D0:.4f} d0 apart, {surface_gap(gap) / D0:.2e} d0 after moving {gap / D0} d0")
 
 # 3. The cycles: turning points where asked, force > 0 at each loaded turn, caps rigid.
-cyc = json.load(open(os.path.join(d, "cycles.json")))
-check(len(cyc) == 1, "quick: one cycle run (no rate check)", str(list(cyc)))
-run = next(iter(cyc.values()))
+cyc = study._cycle_runs(d)
+check(list(cyc) == ["cycles-v2.5"], "quick: one cycle run (no rate check)", str(list(cyc)))
+run = cyc["cycles-v2.5"]
 touch = run["touch_delta_mm"]
 loaded = [e for e in run["events"] if e[0].startswith("loaded to")]
 check(len(loaded) == len(study.AMPLITUDES[True]), "one loaded turn per amplitude")

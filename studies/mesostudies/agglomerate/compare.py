@@ -69,3 +69,31 @@ def meso_collisions(params, info, speeds, progress=True):
         if progress:
             print(f"  meso pair at {v * SPEED:g} m/s: e = {out[-1]:.4f}", flush=True)
     return out
+
+
+def cycle_measures(rows, events):
+    """Per stroke of a cycle run (between its events): the force at each loaded turn and the most
+    tensile force of each unloading (the pull-off) [study units]."""
+    turns, pulls = [], []
+    its = [e[1] for e in events]
+    for k, e in enumerate(events):
+        if e[0].startswith("loaded to"):
+            turns.append(e[3])
+            end = its[k + 1] if k + 1 < len(its) else math.inf
+            pulls.append(min((r[2] for r in rows if e[1] <= r[0] <= end), default=None))
+    return {"turn_forces": turns, "pull_offs": pulls}
+
+
+def rate_check(measures):
+    """The largest difference of the runs' turn forces and pull-offs from the slowest run's, over
+    the slowest run's largest force (measures: name -> cycle_measures, slowest first)."""
+    names = list(measures)
+    slow = measures[names[0]]
+    scale = max(abs(x) for x in slow["turn_forces"] + slow["pull_offs"] if x is not None)
+    out = {}
+    for n in names[1:]:
+        m = measures[n]
+        diffs = [abs(a - b) for key in ("turn_forces", "pull_offs") for a, b in zip(m[key], slow[key])
+                 if a is not None and b is not None]
+        out[n] = max(diffs) / scale if diffs else None
+    return out

@@ -36,12 +36,17 @@ def _parser():
     p.add_argument("--quick", action="store_true", help="small agglomerates (about 45 primaries), few speeds")
     p.add_argument("--speeds", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
                    help="relative collision speeds [m/s], comma-separated")
+    p.add_argument("--factors", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
+                   help=f"cycles: the cap speed's divisors (default 1,{SLOWER}; --quick: 1), one run each; "
+                        "separate jobs may run them side by side")
     p.add_argument("--amplitudes", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
                    help="cycle amplitudes beyond the first touch [d0], comma-separated")
     return p
 
 
 def _check(a, p):
+    if a.factors is not None and (not a.factors or any(f < 1 for f in a.factors)):
+        p.error(f"--factors {a.factors} is invalid: positive integers")
     for name in ("speeds", "amplitudes"):
         v = getattr(a, name)
         if v is not None and (not v or any(not (x > 0 and x < float("inf")) for x in v)):
@@ -61,9 +66,10 @@ def prepare(a):
 
 
 def cycles(a):
-    info = prepare(a)
+    """One cycle run per speed divisor: cycles-v<m/s>.csv and .json in the study's folder."""
+    prepare(a)
     out = {}
-    for factor in (1,) if a.quick else (1, SLOWER):  # quick: the pipeline, no rate check
+    for factor in a.factors or ((1,) if a.quick else (1, SLOWER)):  # quick: the pipeline, no rate check
         info = make.ensure(_dir(a), quick=a.quick)
         speed = CAP_SPEED / factor
         print(f"cycles at {speed * 1e3:g} m/s per cap", flush=True)
@@ -77,8 +83,18 @@ def cycles(a):
                      "grip_fraction": pair.grip_fraction, "grip_particles": [len(g) for g in pair.grips],
                      "steps": O.iter - it0, "wall_clock_s": time.time() - t0, "dt": O.dt,
                      "units": "delta mm, F mg mm/us^2 (1e3 N)"}
-    _write(os.path.join(_dir(a), "cycles.json"), out)
+        _write(os.path.join(_dir(a), name + ".json"), out[name])
     return out
+
+
+def _cycle_runs(d):
+    """{name: description} of the cycle runs in the study's folder, slowest first."""
+    runs = {}
+    for f in sorted(os.listdir(d)):
+        if f.startswith("cycles-v") and f.endswith(".json"):
+            with open(os.path.join(d, f)) as fh:
+                runs[f[:-5]] = json.load(fh)
+    return dict(sorted(runs.items(), key=lambda kv: kv[1]["speed_per_cap_m_s"]))
 
 
 def collisions(a):
@@ -110,9 +126,8 @@ def compare_job(a):
     d = _dir(a)
     with open(make.path(d, "agglomerates", a.quick) + ".json") as f:
         info = json.load(f)
-    with open(os.path.join(d, "cycles.json")) as f:
-        runs = json.load(f)
-    names = sorted(runs, key=lambda n: runs[n]["speed_per_cap_m_s"])
+    runs = _cycle_runs(d)
+    names = list(runs)
     rows = {n: [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, n + ".csv")).read().split("\n")[1:] if line]
             for n in names}
     fitted = compare.fit(rows[names[0]], info)
@@ -122,7 +137,10 @@ def compare_job(a):
     params = fitted.params
     e_theory = compare.theory_e(params, info, [v / 1e3 for v in speeds])
     e_meso = compare.meso_collisions(params, info, [v / 1e3 for v in speeds])
-    summary = {"preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
+    measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
+    summary = {"cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"]) for n in names},
+               "rate_check": compare.rate_check(measures),
+               "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
