@@ -101,6 +101,9 @@ check(abs(p - p0) < 1e-9 * sum(masses) * v, "collision: momentum along x kept (n
 ke = sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm() for m in info["members"] for i in m)
 ke0 = 0.5 * sum(masses) * (0.5 * v) ** 2
 check(ke < ke0 and math.isfinite(ke), f"collision: kinetic energy {ke / ke0:.3f} of the start's")
+shares = r["energy_over_impact"]
+check(abs(sum(shares.values()) - 1) < 1e-3, "collision: the impact's energy accounted for (centres of mass, internal motion, "
+      "stored and dissipated by the law)", ", ".join(f"{k} {v:.4f}" for k, v in shares.items()))
 
 for f in ("cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
     check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")

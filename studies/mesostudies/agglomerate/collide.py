@@ -72,6 +72,11 @@ class Collision:
             v = Vector3(side * (0.5 if k == 0 else -0.5) * v_rel, 0, 0)
             for i in m:
                 O.bodies[i].state.vel, O.bodies[i].state.angVel = v, Vector3(0, 0, 0)
+        O.energy.clear()
+        O.trackEnergy = True  # the law's dissipation, for where the impact's energy goes
+        ke0 = self._kinetic()
+        O.run(1, True)  # the stored energies' values before the impact (the dissipated ones start at 0)
+        self._energy0 = dict(O.energy.items())
         t0, start_time = time.time(), O.time
         approach = min(gap * d0, v_rel * APPROACH) / v_rel
         max_time = max_time if max_time is not None else approach + 200 * self._t_scale()
@@ -89,9 +94,29 @@ class Collision:
                 print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  delta = {self.delta() / d0:+.4f} d0  "
                       f"({time.time() - t0:.0f} s)", flush=True)
         out = self._outcome(v_rel, side, start_time, time.time() - t0)
+        out["energy_over_impact"] = self._energy_shares(ke0)
         if snapshot:
             _snapshots.png(snapshot, title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, broken off {out['broken_mass_fraction']:.3f}")
         return out
+
+    def _kinetic(self):
+        return sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm()
+                   + 0.5 * sum(O.bodies[i].state.inertia[k] * O.bodies[i].state.angVel[k] ** 2 for k in range(3))
+                   for m in self.members for i in m)
+
+    def _energy_shares(self, ke0):
+        """Where the impact's kinetic energy went, over it: the motion of the two agglomerates'
+        centres of mass, the particles' motion about them (internal waves and rattling), and the
+        law's tracked terms (O.energy: the change of the stored elastic energies, the viscous,
+        plastic, sliding, rolling and torsion dissipation) since the impact's start."""
+        bulk = 0.0
+        for m in self.members:
+            mass = sum(O.bodies[i].state.mass for i in m)
+            bulk += 0.5 * mass * make.velocity(m).squaredNorm()
+        shares = {"centres_of_mass": bulk / ke0, "internal_kinetic": (self._kinetic() - bulk) / ke0}
+        shares.update({k: (v - self._energy0.get(k, 0.0)) / ke0 for k, v in O.energy.items()
+                       if k not in ("kinetic", "gravWork")})  # changes since the impact's start
+        return shares
 
     def _t_scale(self):
         """A primary pair's contact time pi sqrt(m/(2 kp)), the scale of the waits."""

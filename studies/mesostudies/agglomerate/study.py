@@ -23,7 +23,7 @@ from . import collide, compare, drive, make, plots
 
 JOBS = ("prepare", "cycles", "collide", "compare", "all")
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
-SPEEDS = {False: (0.03, 0.1, 0.3, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0, 40.0), True: (0.1, 1.0, 10.0)}  # relative, m/s
+SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0), True: (0.1, 1.0, 10.0)}  # relative, m/s
 CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
 SLOWER = 4
 
@@ -144,6 +144,7 @@ def compare_job(a):
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
+               "energy_over_impact": [h["energy_over_impact"] for h in hits],
                "d0_mm": sample.D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     a12 = compare.geometry(info)[0]
