@@ -9,7 +9,7 @@ from mesocontact import outputs  # noqa: E402
 
 def cycles(runs, law, path, d0, force_scale, touch):
     """F(delta) of each cycle run (name -> rows (iter, delta, F)) and the fitted law along the
-    slower run (law: forces at its rows), in d0 beyond the first touch and F/(kp d0)."""
+    first run (law: forces at its rows), in d0 beyond that run's first touch and F/(kp d0)."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for k, (name, rows) in enumerate(runs.items()):
         ax.plot([(r[1] - touch) / d0 for r in rows], [r[2] / force_scale for r in rows], lw=0.7 if k else 1.0,

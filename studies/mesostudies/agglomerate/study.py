@@ -3,7 +3,7 @@
     prepare   the sintered block and the two carved agglomerates (make.ensure)
     cycles    their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)
     collide   head-on collisions at each speed (collide.Collision)
-    compare   the law fitted to the slower cycles, the meso-particle pair and the closed form at the
+    compare   the law fitted to the cycles (the run with the most amplitudes), the meso-particle pair and the closed form at the
               same speeds, the summary agglomerate-vs-meso.json, cycles.png and restitution.png
     all       the four in turn
 
@@ -130,7 +130,11 @@ def compare_job(a):
     names = list(runs)
     rows = {n: [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, n + ".csv")).read().split("\n")[1:] if line]
             for n in names}
-    fitted = compare.fit(rows[names[0]], info)
+    # The fit takes the run with the most amplitudes (the slowest of those): the slower run may
+    # repeat only the first ones for the rate check.
+    turns = {n: sum(1 for e in runs[n]["events"] if e[0].startswith("loaded to")) for n in names}
+    fitted_run = max(names, key=lambda n: (turns[n], -runs[n]["speed_per_cap_m_s"]))
+    fitted = compare.fit(rows[fitted_run], info)
     with open(os.path.join(d, "collisions.json")) as f:
         hits = json.load(f)
     speeds = [h["v_rel_m_s"] for h in hits]
@@ -138,7 +142,7 @@ def compare_job(a):
     e_theory = compare.theory_e(params, info, [v / 1e3 for v in speeds])
     e_meso = compare.meso_collisions(params, info, [v / 1e3 for v in speeds])
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
-    summary = {"cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"]) for n in names},
+    summary = {"fitted_run": fitted_run, "cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"]) for n in names},
                "rate_check": compare.rate_check(measures),
                "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
@@ -149,8 +153,9 @@ def compare_job(a):
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     a12 = compare.geometry(info)[0]
     force_scale = sample.KP * sample.D0
-    plots.cycles({n: rows[n] for n in names}, compare.law_curve(params, rows[names[0]], a12), os.path.join(d, "cycles.png"),
-                 sample.D0, force_scale, runs[names[0]]["touch_delta_mm"])
+    plots.cycles({n: rows[n] for n in [fitted_run] + [m for m in names if m != fitted_run]},
+                 compare.law_curve(params, rows[fitted_run], a12), os.path.join(d, "cycles.png"),
+                 sample.D0, force_scale, runs[fitted_run]["touch_delta_mm"])
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
                       os.path.join(d, "restitution.png"))
     print(fitted.report(), flush=True)
