@@ -19,7 +19,7 @@ from yade import O
 
 from mesocontact import outputs
 from mesostudies.tablet import sample
-from . import collide, compare, drive, make, plots
+from . import collide, compare, drive, make, plots, report
 
 JOBS = ("prepare", "cycles", "collide", "compare", "all")
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
@@ -151,6 +151,7 @@ def compare_job(a):
                "energy_over_impact": [h["energy_over_impact"] for h in hits],
                "d0_mm": sample.D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
+    outputs.write_atomic(os.path.join(d, "summary.md"), report.markdown(summary))
     a12 = compare.geometry(info)[0]
     force_scale = sample.KP * sample.D0
     plots.cycles({n: rows[n] for n in [fitted_run] + [m for m in names if m != fitted_run]},

@@ -1,0 +1,86 @@
+"""The study's page from its summary (plain Python):
+
+    python3 -m mesostudies.agglomerate.report DIR      # DIR/agglomerate-vs-meso.json -> DIR/summary.md
+
+Every number docs/agglomerate.md quotes is on this page.
+"""
+import json
+import os
+import sys
+
+D0_MM = 0.01     # the primaries' mean diameter [mm] (mesostudies.tablet.sample.D0)
+KP = 5e6         # their kp [N/m]; forces are given over kp d0
+DISSIPATED = ("mesoPlastic", "mesoViscous", "mesoSliding", "mesoRolling", "mesoTorsion", "mesoAdhesive")
+STORED = ("mesoElastic", "mesoSprings")
+
+
+def _f(x, fmt="{:.3g}"):
+    return "–" if x is None else fmt.format(x)
+
+
+def markdown(s):
+    prep, fit = s["preparation"], s["fit"]
+    md = ["# An agglomerate as a meso-particle: the results", "",
+          "Written by `python3 -m mesostudies.agglomerate.report` from `agglomerate-vs-meso.json`.", "",
+          "## The agglomerates", "",
+          f"Carved with radius {prep['carve_radius_d0']:.3f} d0 from the sintered block; {prep['removed_loose']} "
+          "particles cut loose were removed.", "",
+          "| agglomerate | primaries | R [d0] | mass [kg] | core solid fraction | coordination | rattlers | mean deltaMax/deltaMax^p |",
+          "|---|---|---|---|---|---|---|---|"]
+    for k, a in enumerate(prep["agglomerates"]):
+        md.append(f"| {k} | {a['n']} | {a['radius_d0']:.3f} | {a['mass'] * 1e-6:.4g} | {a['solid_fraction_core']:.3f} | "
+                  f"{a['coordination']:.2f} | {a['rattlers']} | {_f(a['mean_depth'], '{:.2f}')} |")
+    md += ["", "## The cycles and the rate check", "",
+           "| run | cap speed [m/s] | force at each loaded turn, F/(kp d0) | pull-off of each unloading, F/(kp d0) |",
+           "|---|---|---|---|"]
+    scale = KP * D0_MM * 1e-3 / 1e3  # kp d0 in the study's force unit (1e3 N)
+    for name, c in s["cycles"].items():
+        md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"]) + " |")
+    for name, r in s["rate_check"].items():
+        md.append("")
+        md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
+                  "largest force (turn forces and pull-offs).")
+    md += ["", f"## The fit (run {s.get('fitted_run', '–')})", "",
+           f"{fit['n_points']} points; residual rms {fit['rms_relative']:.3f} and largest {fit['max_relative']:.3f} "
+           f"of the force scale max |F| = {fit['force_scale'] / (KP * D0_MM * 1e-3):.4f} kp d0.", "",
+           "| parameter | value | 95 % interval | determined |", "|---|---|---|---|"]
+    for k in list(fit["free"]):
+        lo, hi = fit["ci95"][k]
+        md.append(f"| {k} | {fit[k]:.4g} | [{_f(lo, '{:.4g}')}, {_f(hi, '{:.4g}')}] | "
+                  f"{'no' if k in fit['undetermined'] else 'yes'} |")
+    md += ["", "What the cycles cannot determine:", ""] + [f"- {t}" for t in fit["statements"]]
+    md += ["", "## Collisions", "",
+           "e of the agglomerates (the two largest fragments' centres of mass), of two meso-particles of the fitted "
+           "law (YADE) and of the closed form; the mass broken off; the contact time; where the impact's kinetic "
+           "energy went, over it (the centres of mass' motion, the particles' motion about them, the law's stored "
+           "energies' change, its dissipation).", "",
+           "| v [m/s] | e agglomerates | e meso pair | e closed form | stuck | broken off | contact time [us] "
+           "| centres of mass | internal motion | stored | dissipated |",
+           "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for k, v in enumerate(s["speeds"]):
+        en = s["energy_over_impact"][k]
+        stored = sum(en.get(n, 0.0) for n in STORED)
+        lost = sum(en.get(n, 0.0) for n in DISSIPATED)
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
+                  f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
+                  f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
+    whole = [k for k, b in enumerate(s["fragmented"]) if b < 0.01]
+    if whole:
+        k = max(whole, key=lambda k: abs(s["e_agglomerate"][k] - s["e_meso"][k]))
+        md += ["", f"Largest |e agglomerates - e meso pair| without fragmentation (< 1 % of the mass broken off): "
+                   f"{abs(s['e_agglomerate'][k] - s['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
+    return "\n".join(md) + "\n"
+
+
+def main(argv):
+    d = argv[0]
+    with open(os.path.join(d, "agglomerate-vs-meso.json")) as f:
+        s = json.load(f)
+    with open(os.path.join(d, "summary.md"), "w") as f:
+        f.write(markdown(s))
+    print(os.path.join(d, "summary.md"))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
