@@ -75,7 +75,7 @@ def cycles(a):
         print(f"cycles at {speed * 1e3:g} m/s per cap", flush=True)
         t0, it0 = time.time(), O.iter
         pair = drive.Pair(info["members"], [g["radius"] for g in info["agglomerates"]])
-        rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed)
+        rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed, final=factor == 1)  # slower runs: the rate check
         name = f"cycles-v{speed * 1e3:g}"
         outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
                              "iter,delta_mm,F\n" + "".join(f"{r[0]},{r[1]!r},{r[2]!r}\n" for r in rows))
