@@ -78,7 +78,10 @@ def _cyclic_row(d, name):
             "later_spread": of_mean, "later_spread_of_first": of_first,
             "second_over_first": later[0] / peaks[0] if later else None, "L0": run["L0"],
             "returns_at_Dx": [t[1] for t in turns[1::2]] if turns else None,
-            "kc_over_kp": (run.get("tensile_stiffness") or {}).get("kc_over_kp")}
+            "kc_over_kp": (run.get("tensile_stiffness") or {}).get("kc_over_kp"),
+            # through grips only L0 - 2 t d0 stretches: the walls' Dx that strains the free part as much
+            "free_amplitude": run["amplitude"] / (1.0 - 2 * run["grips"]["thickness_d0"] * D0_MM / run["L0"])
+            if run.get("grips") else None}
 
 
 def _first_stroke(rows, steps_per_cycle):
@@ -232,14 +235,15 @@ def markdown(one, two, label, three=(), five_six=()):
     if five_six:
         md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1, grips2: 1 and 2 d0), kc/kp 0.5 "
                "(kc0.5) and cycles back to the start's force (force-return); in brackets the E1 run of the same sample, "
-               "amplitude and period", "",
+               "amplitude and period; for grips, after Dx the walls' Dx that strains the free part as much", "",
                "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
                "(k2 = k1 to kp) | at Dx | F at the first turn / first peak "
                "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in five_six:
             b = r["E1"] or {}
-            md.append(f"| {r['sample']} | {r['variant']} | {r['amplitude']:g} | {r['period']:g} | "
+            amp = f"{r['amplitude']:g}" + (f" (walls' {r['free_amplitude']:.3f})" if r.get("free_amplitude") else "")
+            md.append(f"| {r['sample']} | {r['variant']} | {amp} | {r['period']:g} | "
                       f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | {_f(r['peak_over_E1'], '{:.2f}')} | "
                       + ("–" if r["contact_pull_ratio"] is None else
                          f"{r['contact_pull_ratio'][0]:.2f} – {r['contact_pull_ratio'][1]:.2f}") + " | "
