@@ -158,6 +158,12 @@ def e3(tree):
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
                      "max_tensile_affine": max(r["affine"]["tensile"] for r in info["records"])})
+    walls = {(r["sinter"], r["seed"]): r["peak_F"] for r in rows if r["loading"] == "walls"}
+    tested = [r["peak_F"] for r in rows if r["loading"] == "walls" and r["sinter"] == 0.02 and r["seed"] == 1]
+    for r in rows:  # a grips run's peak over its own sample's through the walls, and over the tested sample's
+        base = walls.get((r["sinter"], r["seed"]))
+        r["peak_over_walls"] = r["peak_F"] / base if base and r["loading"] != "walls" else None
+        r["peak_over_tested"] = r["peak_F"] / tested[0] if tested and r["loading"] != "walls" else None
     return sorted(rows, key=lambda r: (r["sinter"], r["seed"], r["loading"] != "walls"))  # E4's beside E3's
 
 
@@ -215,7 +221,8 @@ def markdown(one, two, label, three=(), five_six=()):
                "remain those of a stretch Dx d0/L0 of every contact outside the grips, which understates the free "
                "part's (free fraction in the loading column). In brackets, for grips: the peak's Dx over the free "
                "fraction, and the force at Dx = 0.2 times the free fraction over the peak (the walls' Dx of the same "
-               "strain of the free part).", "",
+               "strain of the free part); after the peak, its ratio to the same sample's peak through the walls and to "
+               "the tested sample's (seed 1, walls).", "",
                "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
                "(where, from the left face [d0]) | the same at Dx = 0.2 (where) | stays >= 2x affine from Dx "
                "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
@@ -223,7 +230,9 @@ def markdown(one, two, label, three=(), five_six=()):
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
             grip = r["loading"] != "walls"
-            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f} | {r['peak_Dx']:.3f}"
+            ratio = (f" ({r['peak_over_walls']:.2f} x walls, {r['peak_over_tested']:.2f} x tested)"
+                     if r.get("peak_over_walls") else "")
+            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f}{ratio} | {r['peak_Dx']:.3f}"
                       + (f" ({r['peak_Dx_free']:.3f})" if grip else "") + " | "
                       f"{_f(r['F02_over_peak'], '{:.2f}')}" + (f" ({_f(r['F02_free_over_peak'], '{:.2f}')})" if grip else "")
                       + f" | {_f(r['strain_at_peak'], '{:.1f}')} "
