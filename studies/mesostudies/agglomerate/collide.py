@@ -4,8 +4,9 @@ From the carved, relaxed pair (make.ensure) the second agglomerate is moved alon
 surface lies ``gap`` d0 from the first's (make.move_to_gap) and each is given half the relative speed towards the other, every particle the
 same velocity and no spin. There is no background drag: a collision's losses are the contacts'
 own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
-``quiet`` of the touch's duration so far and the fragments move apart, or after ``max_time`` (then
-the agglomerates are read as stuck together if still joined).
+``quiet`` of the touch's duration so far and the fragments move apart, or after ``max_time``
+(default STUCK_AFTER primary contact times; then the agglomerates are read as stuck together if
+still joined).
 
 Read at the end: the fragments (connected clusters through contacts in overlap); the two
 largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
@@ -25,6 +26,7 @@ from mesostudies.tablet import snapshots as _snapshots
 from . import make
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
+STUCK_AFTER = 400  # primary contact times (about four of a rebound's contact time) after which still joined is stuck
 
 
 def _clusters_all(ids):
@@ -79,8 +81,8 @@ class Collision:
         self._energy0 = dict(O.energy.items())
         t0, start_time = time.time(), O.time
         approach = min(gap * d0, v_rel * APPROACH) / v_rel
-        max_time = max_time if max_time is not None else approach + 200 * self._t_scale()
-        chunk = max(self.every, int(0.25 * approach / O.dt) // self.every * self.every or self.every)
+        max_time = max_time if max_time is not None else approach + STUCK_AFTER * self._t_scale()
+        chunk = max(500, int(0.25 * approach / O.dt)) // self.every * self.every
         state = "approach"
         while O.time - start_time < max_time:
             O.run(chunk, True)

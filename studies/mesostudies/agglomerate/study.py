@@ -23,7 +23,7 @@ from . import collide, compare, drive, make, plots, report
 
 JOBS = ("prepare", "cycles", "collide", "compare", "all")
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
-SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0), True: (0.1, 1.0, 10.0)}  # relative, m/s
+SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0), True: (0.1, 1.0, 10.0)}  # m/s
 CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
 SLOWER = 4
 
