@@ -50,6 +50,12 @@ def markdown(s):
         md.append(f"| {k} | {fit[k]:.4g} | [{_f(lo, '{:.4g}')}, {_f(hi, '{:.4g}')}] | "
                   f"{'no' if k in fit['undetermined'] else 'yes'} |")
     md += ["", "What the cycles cannot determine:", ""] + [f"- {t}" for t in fit["statements"]]
+    w = s.get("fit_widest_run")
+    if w:
+        md += ["", f"Fitted to {w['run']} instead (all amplitudes, the faster run): k1 = {w['k1']:.4g} "
+                   f"[{_f(w['ci95']['k1'][0], '{:.4g}')}, {_f(w['ci95']['k1'][1], '{:.4g}')}], kp = {w['kp']:.4g}, "
+                   f"phiF = {w['phiF']:.4g}, kc = {w['kc']:.3g} (undetermined: {', '.join(w['undetermined']) or 'none'}); "
+                   f"residual rms {w['rms_relative']:.3f}, largest {w['max_relative']:.3f} of its force scale."]
     md += ["", "## Collisions", "",
            "e of the agglomerates (the two largest fragments' centres of mass), of two meso-particles of the fitted "
            "law (YADE) and of the closed form; the mass broken off; the contact time; where the impact's kinetic "
