@@ -31,11 +31,14 @@ def markdown(s):
         md.append(f"| {k} | {a['n']} | {a['radius_d0']:.3f} | {a['mass'] * 1e-6:.4g} | {a['solid_fraction_core']:.3f} | "
                   f"{a['coordination']:.2f} | {a['rattlers']} | {_f(a['mean_depth'], '{:.2f}')} |")
     md += ["", "## The cycles and the rate check", "",
-           "| run | cap speed [m/s] | force at each loaded turn, F/(kp d0) | pull-off of each unloading, F/(kp d0) |",
-           "|---|---|---|---|"]
+           "| run | cap speed [m/s] | amplitudes beyond the touch [d0] | unloaded to [d0 below the touch] "
+           "| force at each loaded turn, F/(kp d0) | pull-off of each unloading, F/(kp d0) |",
+           "|---|---|---|---|---|---|"]
     scale = KP * D0_MM * 1e-3 / 1e3  # kp d0 in the study's force unit (1e3 N)
     for name, c in s["cycles"].items():
-        md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
+        md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
+                  + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
+                  + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
                   + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"]) + " |")
     for name, r in s["rate_check"].items():
         md.append("")

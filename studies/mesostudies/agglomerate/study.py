@@ -148,7 +148,12 @@ def compare_job(a):
     e_theory = compare.theory_e(params, info, [v / 1e3 for v in speeds])
     e_meso = compare.meso_collisions(params, info, [v / 1e3 for v in speeds])
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
-    summary = {"fitted_run": fitted_run, "fit_widest_run": also, "cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"]) for n in names},
+    summary = {"fitted_run": fitted_run, "fit_widest_run": also,
+               "cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"],
+                                  amplitudes_d0=[float(e[0].split()[2]) for e in runs[n]["events"] if e[0].startswith("loaded to")],
+                                  unload_below_touch_d0=[(runs[n]["touch_delta_mm"] - e[2]) / sample.D0
+                                                         for e in runs[n]["events"] if e[0] == "unloaded"])
+                          for n in names},
                "rate_check": compare.rate_check(measures),
                "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
