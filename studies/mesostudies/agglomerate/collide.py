@@ -4,9 +4,10 @@ From the carved, relaxed pair (make.ensure) the second agglomerate is moved alon
 surface lies ``gap`` d0 from the first's (make.move_to_gap) and each is given half the relative speed towards the other, every particle the
 same velocity and no spin. There is no background drag: a collision's losses are the contacts'
 own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
-``quiet`` of the touch's duration so far and the fragments move apart, or after ``max_time``
-(default STUCK_AFTER primary contact times; then the agglomerates are read as stuck together if
-still joined).
+``quiet`` of the touch's duration so far and the fragments move apart, or when the two largest
+fragments, one from each agglomerate, are separate clusters moving apart (particles they exchanged
+may still join them), or after ``max_time`` (default STUCK_AFTER primary contact times; then the
+agglomerates are read as stuck together if one cluster holds most of both).
 
 Read at the end: the fragments (connected clusters through contacts in overlap); the two
 largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
@@ -26,7 +27,7 @@ from mesostudies.tablet import snapshots as _snapshots
 from . import make
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
-STUCK_AFTER = 400  # primary contact times (about four of a rebound's contact time) after which still joined is stuck
+STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact time) after which one cluster is stuck
 
 
 def _clusters_all(ids):
@@ -92,6 +93,9 @@ class Collision:
                 state = "apart" if apart else "joined"
                 if apart and self._separating(side):
                     break
+                if O.time - self.first > 5 * chunk * O.dt and self._parted(side):
+                    state = "parted"  # the two largest fragments, one from each, separate; exchanged particles still join them
+                    break
             if progress:
                 print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  delta = {self.delta() / d0:+.4f} d0  "
                       f"({time.time() - t0:.0f} s)", flush=True)
@@ -124,6 +128,17 @@ class Collision:
         """A primary pair's contact time pi sqrt(m/(2 kp)), the scale of the waits."""
         m = min(O.bodies[i].state.mass for m in self.members for i in m)
         return 3.1416 * (0.5 * m / sample.KP) ** 0.5
+
+    def _parted(self, side):
+        """The two largest fragments are separate clusters, each mostly one agglomerate's, moving apart."""
+        parts = _clusters_all([i for m in self.members for i in m])[:2]
+        if len(parts) < 2:
+            return False
+        own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
+        if own[0] == own[1]:
+            return False
+        a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
+        return side * (make.velocity(b)[0] - make.velocity(a)[0]) > 0
 
     def _separating(self, side):
         v = [make.velocity(m)[0] for m in self.members]

@@ -71,29 +71,34 @@ def meso_collisions(params, info, speeds, progress=True):
     return out
 
 
-def cycle_measures(rows, events):
-    """Per stroke of a cycle run (between its events): the force at each loaded turn and the most
-    tensile force of each unloading (the pull-off) [study units]."""
-    turns, pulls = [], []
+def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05)):
+    """Per cycle of a run (its events): the force at each loaded turn, the most tensile force of
+    each unloading, and the mean force of each unloading over delta - delta_touch in ``band`` [d0]
+    (the tension's plateau; the most tensile value of a ringing signal is a spike) [study units]."""
+    turns, pulls, plateaus = [], [], []
+    touch = next(e[2] for e in events if e[0] == "touch")
     its = [e[1] for e in events]
     for k, e in enumerate(events):
         if e[0].startswith("loaded to"):
             turns.append(e[3])
             end = its[k + 1] if k + 1 < len(its) else math.inf
-            pulls.append(min((r[2] for r in rows if e[1] <= r[0] <= end), default=None))
-    return {"turn_forces": turns, "pull_offs": pulls}
+            stroke = [r for r in rows if e[1] <= r[0] <= end]
+            pulls.append(min((r[2] for r in stroke), default=None))
+            flat = [r[2] for r in stroke if band[0] <= (r[1] - touch) / d0 <= band[1]]
+            plateaus.append(sum(flat) / len(flat) if flat else None)
+    return {"turn_forces": turns, "pull_offs": pulls, "tension_plateaus": plateaus}
 
 
-def rate_check(measures):
-    """The largest difference of the runs' turn forces and pull-offs from the slowest run's, over
-    the slowest run's largest force (measures: name -> cycle_measures, slowest first)."""
+def rate_check(measures, keys=("turn_forces", "tension_plateaus")):
+    """The largest difference of the runs' ``keys`` (the turn forces and the tension plateaus)
+    from the slowest run's, over the slowest run's largest force (measures: name ->
+    cycle_measures, slowest first)."""
     names = list(measures)
     slow = measures[names[0]]
-    scale = max(abs(x) for x in slow["turn_forces"] + slow["pull_offs"] if x is not None)
+    scale = max(abs(x) for key in keys for x in slow[key] if x is not None)
     out = {}
     for n in names[1:]:
         m = measures[n]
-        diffs = [abs(a - b) for key in ("turn_forces", "pull_offs") for a, b in zip(m[key], slow[key])
-                 if a is not None and b is not None]
+        diffs = [abs(a - b) for key in keys for a, b in zip(m[key], slow[key]) if a is not None and b is not None]
         out[n] = max(diffs) / scale if diffs else None
     return out

@@ -32,18 +32,21 @@ def markdown(s):
                   f"{a['coordination']:.2f} | {a['rattlers']} | {_f(a['mean_depth'], '{:.2f}')} |")
     md += ["", "## The cycles and the rate check", "",
            "| run | cap speed [m/s] | amplitudes beyond the touch [d0] | unloaded to [d0 below the touch] "
-           "| force at each loaded turn, F/(kp d0) | pull-off of each unloading, F/(kp d0) |",
-           "|---|---|---|---|---|---|"]
+           "| force at each loaded turn, F/(kp d0) | most tensile force of each unloading | mean tension 0.05 - 0.2 d0 "
+           "below the touch, each unloading |",
+           "|---|---|---|---|---|---|---|"]
     scale = KP * D0_MM * 1e-3 / 1e3  # kp d0 in the study's force unit (1e3 N)
     for name, c in s["cycles"].items():
         md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
                   + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
                   + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
-                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"]) + " |")
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"])
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}") for x in c.get("tension_plateaus", []))
+                  + " |")
     for name, r in s["rate_check"].items():
         md.append("")
         md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
-                  "largest force (turn forces and pull-offs).")
+                  "largest force (turn forces and mean tensions; the most tensile values ring and are not compared).")
     md += ["", f"## The fit (run {s.get('fitted_run', '–')})", "",
            f"{fit['n_points']} points; residual rms {fit['rms_relative']:.3f} and largest {fit['max_relative']:.3f} "
            f"of the force scale max |F| = {fit['force_scale'] / (KP * D0_MM * 1e-3):.4f} kp d0.", "",
