@@ -130,13 +130,15 @@ class Collision:
         return 3.1416 * (0.5 * m / sample.KP) ** 0.5
 
     def _parted(self, side):
-        """The two largest fragments are separate clusters, each mostly one agglomerate's, moving apart."""
+        """The two largest fragments are separate clusters, each holding at least half of one
+        agglomerate's particles (one from each), moving apart."""
         parts = _clusters_all([i for m in self.members for i in m])[:2]
         if len(parts) < 2:
             return False
         own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
-        if own[0] == own[1]:
-            return False
+        if own[0] == own[1] or any(sum(1 for i in p if self.owner[i] == k) < 0.5 * len(self.members[k])
+                                   for p, k in zip(parts, own)):
+            return False  # one cluster still holds both, or a small piece is the second largest
         a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
         return side * (make.velocity(b)[0] - make.velocity(a)[0]) > 0
 
