@@ -86,6 +86,11 @@ check(abs(fit["a12"] - a12) < 1e-15 * a12, "the fit used the law's a12 = 2 R1 R2
 hits = json.load(open(os.path.join(d, "collisions.json")))
 for h in hits:
     check(h["touched"] and 0 <= h["e"] <= 1 and h["contact_time"] > 0, f"collision at {h['v_rel_m_s']} m/s: e = {h['e']:.4f}, contact time {h['contact_time']:.3g} us")
+vis = summary["meso_viscous"]
+k0 = summary["speeds"].index(vis["fitted_at_m_s"])
+check(abs(vis["e_at_fit"] - summary["e_agglomerate"][k0]) < 1e-3 and vis["e_meso"][k0] == vis["e_at_fit"],
+      f"gammaN = {vis['gammaN']:.4g} kg/s fitted: the viscous pair's e {vis['e_at_fit']:.4f} at {vis['fitted_at_m_s']} m/s "
+      f"against the agglomerates' {summary['e_agglomerate'][k0]:.4f}")
 for v, em, et in zip(summary["speeds"], summary["e_meso"], summary["e_theory"]):
     check(abs(em - et) < 1e-4, f"meso pair at {v} m/s: e = {em:.6f} (YADE) against {et:.6f} (closed form)")
 info = make.ensure(d, quick=True, progress=False)

@@ -47,28 +47,45 @@ def theory_e(params, info, speeds):
             for v in speeds]
 
 
-def meso_material(params, radius, mass):
+def meso_material(params, radius, mass, gammaN=0.0):
     """MesoMat keywords (SI) of one meso-particle: the fitted normal law, the agglomerate's mass
-    (density from its outer radius), no viscosity, friction or rolling (head-on collisions)."""
+    (density from its outer radius), viscosity gammaN [kg/s] (0: the cycles' law), no friction or
+    rolling (head-on collisions)."""
     density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
     return dict(density=density, k1=params["k1"], kp=params["kp"], kc=params["kc"], phiF=params["phiF"],
-                gammaN=0.0, frictionAngle=0.0)
+                gammaN=gammaN, frictionAngle=0.0)
 
 
-def meso_collisions(params, info, speeds, progress=True):
+def meso_collisions(params, info, speeds, progress=True, gammaN=0.0):
     """e of two meso-particles of the fitted law (YADE, mesocontact.pair) at each relative speed
-    [mm/us]; replaces the scene in O."""
+    [mm/us], with viscosity gammaN [kg/s]; replaces the scene in O."""
     from mesocontact import pair
     from yade import wrapper as _w
     a12, m_r, radii, masses = geometry(info)
     out = []
     for v in speeds:
-        mats = [_w.MesoMat(**meso_material(params, r, m)) for r, m in zip(radii, masses)]
+        mats = [_w.MesoMat(**meso_material(params, r, m, gammaN)) for r, m in zip(radii, masses)]
         s = pair.build(radii[0], v * SPEED, material=mats[0], radius2=radii[1], material2=mats[1])
         out.append(pair.collide(s).e)
         if progress:
-            print(f"  meso pair at {v * SPEED:g} m/s: e = {out[-1]:.4f}", flush=True)
+            print(f"  meso pair at {v * SPEED:g} m/s{f' (gammaN {gammaN:.4g} kg/s)' if gammaN else ''}: e = {out[-1]:.4f}",
+                  flush=True)
     return out
+
+
+def fit_viscosity(params, info, speed, e_target, tol=1e-4):
+    """The meso-particles' gammaN [kg/s] whose pair rebounds with e_target at ``speed`` [mm/us]
+    (YADE, bisection between 0 and the critical damping 2 sqrt(m_r k1) of the loading branch): the
+    one parameter the quasi-static cycles cannot give, taken from one collision."""
+    m_r, k1 = geometry(info)[1], params["k1"]
+    lo, hi = 0.0, 2.0 * math.sqrt(m_r * k1)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        e = meso_collisions(params, info, [speed], progress=False, gammaN=mid)[0]
+        if abs(e - e_target) < tol:
+            return mid, e
+        lo, hi = (mid, hi) if e > e_target else (lo, mid)
+    return mid, e
 
 
 def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05)):

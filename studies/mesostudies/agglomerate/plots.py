@@ -37,11 +37,14 @@ def cycles(runs, law, path, d0, force_scale, touch):
     plt.close(fig)
 
 
-def restitution(speeds, e_agg, e_meso, e_theory, broken, path):
-    """e(v): agglomerates (open where mass broke off), meso-particle pair, closed form."""
+def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None):
+    """e(v): agglomerates (open where mass broke off), meso-particle pair, closed form, and the
+    pair with its viscosity fitted to one collision."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     ax.plot(speeds, e_theory, "k-", lw=1, label="closed form, fitted law")
     ax.plot(speeds, e_meso, "s", mfc="none", label="two meso-particles (YADE)")
+    if e_viscous is not None:
+        ax.plot(speeds, e_viscous, "^", mfc="none", color="C2", label="two meso-particles, gammaN from one collision")
     whole = [k for k, b in enumerate(broken) if b < 0.01]
     frag = [k for k, b in enumerate(broken) if b >= 0.01]
     ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates")

@@ -77,11 +77,25 @@ def markdown(s):
         md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
                   f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
+    vis = s.get("meso_viscous")
+    if vis:
+        md += ["", f"The meso-particles with viscosity gammaN = {vis['gammaN']:.4g} kg/s, fitted to the agglomerates' e at "
+                   f"{vis['fitted_at_m_s']:g} m/s (e = {vis['e_at_fit']:.3f}):", "",
+               "| v [m/s] | e agglomerates | e meso pair, gammaN fitted | difference |", "|---|---|---|---|"]
+        for k, v in enumerate(s["speeds"]):
+            md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {vis['e_meso'][k]:.3f} | "
+                      f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} |")
     whole = [k for k, b in enumerate(s["fragmented"]) if b < 0.01]
     if whole:
         k = max(whole, key=lambda k: abs(s["e_agglomerate"][k] - s["e_meso"][k]))
         md += ["", f"Largest |e agglomerates - e meso pair| without fragmentation (< 1 % of the mass broken off): "
                    f"{abs(s['e_agglomerate'][k] - s['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
+        if vis:
+            rb = [k for k in whole if not s["stuck"][k]]
+            if rb:
+                k = max(rb, key=lambda k: abs(s["e_agglomerate"][k] - vis["e_meso"][k]))
+                md += ["", f"With gammaN fitted, the largest difference over the rebounds without fragmentation: "
+                           f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
     return "\n".join(md) + "\n"
 
 

@@ -147,6 +147,13 @@ def compare_job(a):
     params = fitted.params
     e_theory = compare.theory_e(params, info, [v / 1e3 for v in speeds])
     e_meso = compare.meso_collisions(params, info, [v / 1e3 for v in speeds])
+    # The law's viscosity from one collision, the slowest the agglomerates rebound in, then every speed.
+    k0 = next((k for k, h in enumerate(hits) if not h["stuck"] and h["broken_mass_fraction"] < 0.01), None)
+    viscous = None
+    if k0 is not None:
+        gamma, e_fit = compare.fit_viscosity(params, info, speeds[k0] / 1e3, hits[k0]["e"])
+        viscous = {"gammaN": gamma, "fitted_at_m_s": speeds[k0], "e_at_fit": e_fit,
+                   "e_meso": compare.meso_collisions(params, info, [v / 1e3 for v in speeds], gammaN=gamma)}
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
                "cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"],
@@ -159,7 +166,7 @@ def compare_job(a):
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
-               "energy_over_impact": [h["energy_over_impact"] for h in hits],
+               "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
                "d0_mm": sample.D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     outputs.write_atomic(os.path.join(d, "summary.md"), report.markdown(summary))
@@ -169,6 +176,6 @@ def compare_job(a):
                  compare.law_curve(params, rows[fitted_run], a12), os.path.join(d, "cycles.png"),
                  sample.D0, force_scale, runs[fitted_run]["touch_delta_mm"])
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
-                      os.path.join(d, "restitution.png"))
+                      os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None)
     print(fitted.report(), flush=True)
     return summary
