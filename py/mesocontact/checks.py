@@ -22,3 +22,19 @@ def nonnegative(name, value):
 def positive_or_inf(name, value):
     if not (is_number(value) and value > 0):  # NaN fails too
         raise ValueError(f"{name} = {value!r} is invalid: must be a number > 0 (inf allowed)")
+
+
+def finite_array(name, value):
+    """``value`` as a one-dimensional numpy float array of finite numbers; a ValueError naming
+    ``name`` (and the first bad index) otherwise. numpy is imported here, not by the module."""
+    import numpy as np
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} is invalid: must be a sequence of numbers") from None
+    if a.ndim != 1:
+        raise ValueError(f"{name} is invalid: must be a one-dimensional sequence (got shape {a.shape})")
+    bad = np.flatnonzero(~np.isfinite(a))
+    if bad.size:
+        raise ValueError(f"{name}[{bad[0]}] = {a[bad[0]]!r} is invalid: must be finite")
+    return a

@@ -13,7 +13,7 @@ import functools
 import math
 from dataclasses import dataclass
 
-from .checks import is_number, nonnegative, positive, positive_or_inf
+from .checks import finite_array, is_number, nonnegative, positive, positive_or_inf
 
 ADHESION_MODES = ("none", "reversible", "jumpIn")
 K2_INTERPOLATIONS = ("linear", "sqrt")
@@ -239,15 +239,7 @@ def normal_force_path(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
     nonnegative("kc", kc)
     if interpolation not in K2_INTERPOLATIONS:
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
-    try:
-        d = np.asarray(delta, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"delta = {delta!r} is invalid: must be a sequence of numbers") from None
-    if d.ndim != 1:
-        raise ValueError(f"delta is invalid: must be a one-dimensional sequence (got shape {d.shape})")
-    bad = np.flatnonzero(~np.isfinite(d))
-    if bad.size:
-        raise ValueError(f"delta[{bad[0]}] = {d[bad[0]]!r} is invalid: must be finite")
+    d = finite_array("delta", delta)
     f = _force_path(d, k1, kp, kc, phiF, a12, interpolation, np)[0]
     if not np.all(np.isfinite(f)):
         raise ValueError(f"normal_force_path: arguments (k1={k1!r}, kp={kp!r}, kc={kc!r}, phiF={phiF!r}, a12={a12!r}) "

@@ -65,7 +65,8 @@ loaded = [e for e in run["events"] if e[0].startswith("loaded to")]
 check(len(loaded) == len(study.AMPLITUDES[True]), "one loaded turn per amplitude")
 for e, a in zip(loaded, study.AMPLITUDES[True]):
     over = (e[2] - touch) / D0 - a
-    check(0 <= over < 0.01 and e[3] > 0, f"loaded to {a} d0: delta - delta_touch = {(e[2] - touch) / D0:.4f} d0, F = {e[3]:.3e} > 0")
+    # the stroke stops at the first check past the target: delta moves about 2 v dt check (1e-4 d0) between checks
+    check(0 <= over < 1e-3 and e[3] > 0, f"loaded to {a} d0: delta - delta_touch = {(e[2] - touch) / D0:.4f} d0, F = {e[3]:.3e} > 0")
 unloaded = [e for e in run["events"] if e[0] == "unloaded"]
 check(all(-0.21 < (e[2] - touch) / D0 <= -0.2 for e in unloaded), "each unloading turns 0.2 d0 below the first touch")
 rows = [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, "cycles-v2.5.csv")).read().split("\n")[1:] if line]

@@ -77,23 +77,10 @@ class CycleFit:
         return "\n".join(lines)
 
 
-def _array(name, x):
-    try:
-        a = np.asarray(x, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} is invalid: must be a sequence of numbers") from None
-    if a.ndim != 1:
-        raise ValueError(f"{name} is invalid: must be a one-dimensional sequence (got shape {a.shape})")
-    bad = np.flatnonzero(~np.isfinite(a))
-    if bad.size:
-        raise ValueError(f"{name}[{bad[0]}] = {a[bad[0]]!r} is invalid: must be finite")
-    return a
-
-
 def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
     """The inputs checked: (delta, force, weights, free names, values with the fixed ones).
     Raises ValueError naming what is wrong."""
-    d, F = _array("delta", delta), _array("force", force)
+    d, F = _checks.finite_array("delta", delta), _checks.finite_array("force", force)
     if d.shape != F.shape:
         raise ValueError(f"delta and force must have the same length (got {len(d)} and {len(F)})")
     _checks.positive("a12", a12)
@@ -141,7 +128,7 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
     if sigma is None:
         w = np.full(len(d), 1.0 / scale)
     else:
-        s = np.broadcast_to(np.asarray(sigma, float), d.shape) if np.ndim(sigma) == 0 else _array("sigma", sigma)
+        s = np.broadcast_to(np.asarray(sigma, float), d.shape) if np.ndim(sigma) == 0 else _checks.finite_array("sigma", sigma)
         if s.shape != d.shape:
             raise ValueError(f"sigma must be one number or one per point ({len(s)} for {len(d)} points)")
         bad = np.flatnonzero(~(np.isfinite(s) & (s > 0)))

@@ -24,14 +24,11 @@ from yade import wrapper as _w
 from mesocontact import loop as _loop
 from mesostudies.tablet import sample
 from mesostudies.tablet import snapshots as _snapshots
+from mesostudies.tablet.uniaxial import _before_newton
 from . import make
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
 STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact time) after which one cluster is stuck
-
-
-def _clusters_all(ids):
-    return make._clusters(ids)
 
 
 class Collision:
@@ -42,19 +39,14 @@ class Collision:
         self.every = every
         self.first = self.last = None
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
-        engines = list(O.engines)
-        at = next(k for k, e in enumerate(engines) if isinstance(e, _w.NewtonIntegrator))
-        O.engines = engines[:at] + [_loop.runner(self._watch, every, "agg_watch")] + engines[at:]
+        _before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
 
     def delta(self):
-        c = [make.centre_of_mass(m)[0] for m in self.members]
-        return self.radii[0] + self.radii[1] - (c[0] - c[1]).norm()
+        return make.meso_overlap(self.members, self.radii)
 
     def joined(self):
-        other = set(self.members[1])
-        return any(I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other
-                   for i in self.members[0] for I in O.bodies[i].intrs())
+        return make.contacts_between(*self.members) > 0
 
     def _watch(self):
         if self.joined():
@@ -77,7 +69,7 @@ class Collision:
                 O.bodies[i].state.vel, O.bodies[i].state.angVel = v, Vector3(0, 0, 0)
         O.energy.clear()
         O.trackEnergy = True  # the law's dissipation, for where the impact's energy goes
-        ke0 = self._kinetic()
+        ke0 = sample.kinetic_energy()
         O.run(1, True)  # the stored energies' values before the impact (the dissipated ones start at 0)
         self._energy0 = dict(O.energy.items())
         t0, start_time = time.time(), O.time
@@ -105,11 +97,6 @@ class Collision:
             _snapshots.png(snapshot, title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, broken off {out['broken_mass_fraction']:.3f}")
         return out
 
-    def _kinetic(self):
-        return sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm()
-                   + 0.5 * sum(O.bodies[i].state.inertia[k] * O.bodies[i].state.angVel[k] ** 2 for k in range(3))
-                   for m in self.members for i in m)
-
     def _energy_shares(self, ke0):
         """Where the impact's kinetic energy went, over it: the motion of the two agglomerates'
         centres of mass, the particles' motion about them (internal waves and rattling), and the
@@ -119,7 +106,7 @@ class Collision:
         for m in self.members:
             mass = sum(O.bodies[i].state.mass for i in m)
             bulk += 0.5 * mass * make.velocity(m).squaredNorm()
-        shares = {"centres_of_mass": bulk / ke0, "internal_kinetic": (self._kinetic() - bulk) / ke0}
+        shares = {"centres_of_mass": bulk / ke0, "internal_kinetic": (sample.kinetic_energy() - bulk) / ke0}
         shares.update({k: (v - self._energy0.get(k, 0.0)) / ke0 for k, v in O.energy.items()
                        if k not in ("kinetic", "gravWork")})  # changes since the impact's start
         return shares
@@ -132,7 +119,7 @@ class Collision:
     def _parted(self, side):
         """The two largest fragments are separate clusters, each holding at least half of one
         agglomerate's particles (one from each), moving apart."""
-        parts = _clusters_all([i for m in self.members for i in m])[:2]
+        parts = make._clusters([i for m in self.members for i in m])[:2]
         if len(parts) < 2:
             return False
         own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
@@ -148,7 +135,7 @@ class Collision:
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
-        parts = _clusters_all(ids)
+        parts = make._clusters(ids)
         mass = {i: O.bodies[i].state.mass for i in ids}
         total = sum(mass.values())
         frag = []

@@ -26,6 +26,7 @@ from yade import wrapper as _w
 
 from mesocontact import loop as _loop
 from mesostudies.tablet import sample
+from mesostudies.tablet.uniaxial import _before_newton
 from . import make
 
 BELOW_TOUCH = 0.2  # d0 below the first touch where an unloading turns
@@ -55,10 +56,8 @@ class Pair:
         self.events = []
         self._motion = [_w.TranslationEngine(ids=g, translationAxis=Vector3(-side[k], 0, 0), velocity=0.0,
                                              label=f"cap{k}") for k, g in enumerate(self.grips)]
-        engines = list(O.engines)
-        at = next(k for k, e in enumerate(engines) if isinstance(e, _w.NewtonIntegrator))
-        runners = [_loop.runner(self._record, self.every, "agg_recorder"), _loop.runner(lambda: None, self.check, "agg_check")]
-        O.engines = engines[:at] + self._motion + runners + engines[at:]
+        _before_newton(self._motion + [_loop.runner(self._record, self.every, "agg_recorder"),
+                                       _loop.runner(lambda: None, self.check, "agg_check")])
 
     def set_gap(self, gap):
         """Moves the second agglomerate along x until its surface lies ``gap`` [mm] from the first's
@@ -67,8 +66,7 @@ class Pair:
         return self.delta()
 
     def delta(self):
-        c = [make.centre_of_mass(m)[0] for m in self.members]
-        return self.radii[0] + self.radii[1] - (c[0] - c[1]).norm()
+        return make.meso_overlap(self.members, self.radii)
 
     def force(self):
         f = [sum(O.forces.f(i)[0] for i in g) for g in self.grips]
@@ -76,9 +74,7 @@ class Pair:
 
     def touching(self):
         """Contacts in overlap between the two agglomerates."""
-        other = set(self.members[1])
-        return sum(1 for i in self.members[0] for I in O.bodies[i].intrs()
-                   if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
+        return make.contacts_between(*self.members)
 
     def _record(self):
         if self.rows and self.rows[-1][0] == O.iter:  # the explicit start record and the recorder's at one step

@@ -89,23 +89,36 @@ def _clusters(ids):
     return sorted(out, key=len, reverse=True)
 
 
-def centre_of_mass(ids):
+def _mass_weighted(ids, attr):
     m, x = 0.0, Vector3(0, 0, 0)
     for i in ids:
         s = O.bodies[i].state
         m += s.mass
-        x += s.mass * s.pos
+        x += s.mass * getattr(s, attr)
     return x / m, m
+
+
+def centre_of_mass(ids):
+    """(centre of mass, mass) of the bodies ``ids``."""
+    return _mass_weighted(ids, "pos")
 
 
 def velocity(ids):
     """The velocity of the centre of mass of ``ids``."""
-    m, v = 0.0, Vector3(0, 0, 0)
-    for i in ids:
-        s = O.bodies[i].state
-        m += s.mass
-        v += s.mass * s.vel
-    return v / m
+    return _mass_weighted(ids, "vel")[0]
+
+
+def meso_overlap(members, radii):
+    """delta = R1 + R2 - |x1 - x2| of two agglomerates' centres of mass (the module's definition)."""
+    c = [centre_of_mass(m)[0] for m in members]
+    return radii[0] + radii[1] - (c[0] - c[1]).norm()
+
+
+def contacts_between(first, second):
+    """The contacts in overlap that join a body of ``first`` to one of ``second``."""
+    other = set(second)
+    return sum(1 for i in first for I in O.bodies[i].intrs()
+               if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
 
 
 def touch_shift(first, second):

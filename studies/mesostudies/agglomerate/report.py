@@ -10,6 +10,8 @@ import sys
 
 D0_MM = 0.01     # the primaries' mean diameter [mm] (mesostudies.tablet.sample.D0)
 KP = 5e6         # their kp [N/m]; forces are given over kp d0
+KP_D0 = KP * D0_MM * 1e-3   # kp d0 [N]
+STUDY_FORCE = 1e3           # the study's force unit, mg mm/us^2, in N
 DISSIPATED = ("mesoPlastic", "mesoViscous", "mesoSliding", "mesoRolling", "mesoTorsion", "mesoAdhesive")
 STORED = ("mesoElastic", "mesoSprings")
 
@@ -35,7 +37,7 @@ def markdown(s):
            "| force at each loaded turn, F/(kp d0) | most tensile force of each unloading | mean tension 0.05 - 0.2 d0 "
            "below the touch, each unloading |",
            "|---|---|---|---|---|---|---|"]
-    scale = KP * D0_MM * 1e-3 / 1e3  # kp d0 in the study's force unit (1e3 N)
+    scale = KP_D0 / STUDY_FORCE  # kp d0 in the study's force unit
     for name, c in s["cycles"].items():
         md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
                   + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
@@ -49,7 +51,7 @@ def markdown(s):
                   "largest force (turn forces and mean tensions; the most tensile values ring and are not compared).")
     md += ["", f"## The fit (run {s.get('fitted_run', '–')})", "",
            f"{fit['n_points']} points; residual rms {fit['rms_relative']:.3f} and largest {fit['max_relative']:.3f} "
-           f"of the force scale max |F| = {fit['force_scale'] / (KP * D0_MM * 1e-3):.4f} kp d0.", "",
+           f"of the force scale max |F| = {fit['force_scale'] / KP_D0:.4f} kp d0.", "",
            "| parameter | value | 95 % interval | determined |", "|---|---|---|---|"]
     for k in list(fit["free"]):
         lo, hi = fit["ci95"][k]

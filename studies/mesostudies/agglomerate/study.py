@@ -19,6 +19,7 @@ from yade import O
 
 from mesocontact import outputs
 from mesostudies.tablet import sample
+from mesostudies.tablet.campaign.common import read_csv
 from . import collide, compare, drive, make, plots, report
 
 JOBS = ("prepare", "cycles", "collide", "compare", "all")
@@ -128,8 +129,7 @@ def compare_job(a):
         info = json.load(f)
     runs = _cycle_runs(d)
     names = list(runs)
-    rows = {n: [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, n + ".csv")).read().split("\n")[1:] if line]
-            for n in names}
+    rows = {n: read_csv(os.path.join(d, n + ".csv")) for n in names}
     # The fit takes the slowest run (the faster one's pull-offs ring); the run with the most
     # amplitudes, if another, is fitted too, to show what the larger amplitude changes.
     turns = {n: sum(1 for e in runs[n]["events"] if e[0].startswith("loaded to")) for n in names}
