@@ -16,6 +16,7 @@ from .. import checks as _checks
 from .. import theory as _theory
 from .cycles_identify import _coverage, _identify, _profile
 from .fitting import RESTARTS, _open_ends
+from .problem import _from_x, _to_x
 
 CYCLE_PARAMETERS = ("k1", "kp", "kc", "phiF")
 CYCLE_STARTS = 3                  # the best grid starts (by their sum of squares) refitted to convergence
@@ -174,22 +175,11 @@ class _Cycles:
         return _theory._force_path(self.d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12, self.interpolation, np)[0]
 
     def to_x(self, n, p):
-        if n == "k1":
-            return math.log(p["k1"])
-        if n == "kp":
-            return math.log(max(p["kp"] - p["k1"], 1e-9 * p["k1"]))
-        if n == "phiF":
-            return math.log(min(max(p["phiF"], 1e-12), 1.0))
-        return max(p["kc"], 0.0) / self.kscale if n == "kc" else p["shift"] / self.dscale
+        # the e(v) fit's coordinates (problem._to_x), with kc over the start's k1; the shift is signed
+        return p["shift"] / self.dscale if n == "shift" else _to_x(n, p, {"kc": self.kscale})
 
     def params(self, names, x, fixed):
-        p = dict(fixed)
-        for n, xi in zip(names, (float(v) for v in x)):
-            p[n] = {"k1": math.exp, "phiF": math.exp, "kc": lambda v: v * self.kscale,
-                    "shift": lambda v: v * self.dscale}.get(n, lambda v: v)(xi)
-        if "kp" in names:
-            p["kp"] = p["k1"] + math.exp(float(x[names.index("kp")]))
-        return p
+        return _from_x(names, x, fixed, {"kc": self.kscale, "shift": self.dscale})
 
     def residuals(self, names, fixed):
         def fun(x):
