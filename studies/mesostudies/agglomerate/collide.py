@@ -1,8 +1,10 @@
 """Head-on collisions of the two agglomerates (inside ``yade``).
 
-From the carved, relaxed pair (make.ensure) the second agglomerate is moved along x until its
-surface lies ``gap`` d0 from the first's (make.move_to_gap) and each is given half the relative speed towards the other, every particle the
-same velocity and no spin. There is no background drag: a collision's losses are the contacts'
+From the carved, relaxed pair (make.ensure) the second agglomerate is moved along the approach
+direction (``axis``, default x: the pair as carved; another direction first places the second
+agglomerate beside the first along it, make.place_along, so that other faces meet) until its
+surface lies ``gap`` d0 from the first's (make.move_to_gap), and each is given half the relative
+speed towards the other, every particle the same velocity and no spin. There is no background drag: a collision's losses are the contacts'
 own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
 ``quiet`` of the touch's duration so far and the fragments move apart, or when the two largest
 fragments, one from each agglomerate, are separate clusters moving apart (particles they exchanged
@@ -11,10 +13,13 @@ agglomerates are read as stuck together if one cluster holds most of both).
 
 Read at the end: the fragments (connected clusters through contacts in overlap); the two
 largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
-their centres of mass along x after)/(before), 0 when one fragment holds most of both; the mass
+their centres of mass along the approach direction after)/(before), 0 when one fragment holds most of both
+(e_speed: the relative speed after over before, and the deflection: the angle of the relative
+velocity after to the approach direction, which the surfaces' tilt to it turns sideways); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
 total; the contact time, from the first to the last step a contact joined the two agglomerates.
 """
+import math
 import time
 
 from yade import O
@@ -32,9 +37,12 @@ STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact
 
 
 class Collision:
-    def __init__(self, members, radii, every=20):
+    def __init__(self, members, radii, every=20, axis=make.X_AXIS):
         self.members = [list(m) for m in members]
         self.radii = list(radii)
+        self.n = Vector3(*make._frame(axis)[0])
+        if tuple(axis) != make.X_AXIS:
+            make.place_along(self.members[0], self.members[1], axis, self.radii)
         self.owner = {i: k for k, m in enumerate(self.members) for i in m}
         self.every = every
         self.first = self.last = None
@@ -53,18 +61,18 @@ class Collision:
             if self.first is None:
                 self.first = O.time
             self.last = O.time
-        v = [make.velocity(m)[0] for m in self.members]
+        v = [make.velocity(m).dot(self.n) for m in self.members]
         self.rows.append((O.iter, O.time, self.delta(), v[0], v[1]))
 
     def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None):
         """One collision at relative speed v_rel [mm/us]; returns its outcome (a dict). The gap is
         at most what the pair crosses in APPROACH us. ``snapshot``: a PNG of the end state."""
         d0 = sample.D0
-        c = [make.centre_of_mass(m)[0] for m in self.members]
-        side = 1.0 if c[1][0] > c[0][0] else -1.0
-        make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH))
+        c = [make.centre_of_mass(m)[0].dot(self.n) for m in self.members]
+        side = 1.0 if c[1] > c[0] else -1.0
+        make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH), tuple(self.n))
         for k, m in enumerate(self.members):
-            v = Vector3(side * (0.5 if k == 0 else -0.5) * v_rel, 0, 0)
+            v = self.n * (side * (0.5 if k == 0 else -0.5) * v_rel)
             for i in m:
                 O.bodies[i].state.vel, O.bodies[i].state.angVel = v, Vector3(0, 0, 0)
         O.energy.clear()
@@ -127,11 +135,16 @@ class Collision:
                                    for p, k in zip(parts, own)):
             return False  # one cluster still holds both, or a small piece is the second largest
         a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
-        return side * (make.velocity(b)[0] - make.velocity(a)[0]) > 0
+        return self._receding(a, b)
 
     def _separating(self, side):
-        v = [make.velocity(m)[0] for m in self.members]
-        return side * (v[1] - v[0]) > 0
+        return self._receding(*self.members)
+
+    @staticmethod
+    def _receding(a, b):
+        """The centres of mass of ``a`` and ``b`` move apart (along the line joining them: an
+        oblique rebound, surfaces tilted to the approach, ends too)."""
+        return (make.velocity(b) - make.velocity(a)).dot(make.centre_of_mass(b)[0] - make.centre_of_mass(a)[0]) > 0
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
@@ -142,15 +155,19 @@ class Collision:
         for p in parts[:2]:
             share = [sum(mass[i] for i in p if self.owner[i] == k) for k in (0, 1)]
             frag.append({"ids": p, "mass": sum(share), "from": 0 if share[0] >= share[1] else 1,
-                         "mixed": min(share) / sum(share), "v": make.velocity(p)[0]})
+                         "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
+        e_speed, deflection = 0.0, None
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
         else:
             a, b = sorted(frag, key=lambda f: f["from"])
-            e = side * (b["v"] - a["v"]) / v_rel
+            dv = b["v"] - a["v"]
+            e = side * dv.dot(self.n) / v_rel
+            e_speed = dv.norm() / v_rel  # with what the surfaces' tilt turned sideways
+            deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
             broken = 1.0 - (a["mass"] + b["mass"]) / total
-        return {"v_rel": v_rel, "e": e, "stuck": stuck, "broken_mass_fraction": broken,
+        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}

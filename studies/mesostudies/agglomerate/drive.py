@@ -22,6 +22,7 @@ import time
 
 from yade import O
 from yade import Vector3
+from yade import utils as _utils
 from yade import wrapper as _w
 
 from mesocontact import loop as _loop
@@ -37,13 +38,18 @@ class Pair:
     """The loaded pair of agglomerates (make.ensure), gripped at their far caps."""
 
     def __init__(self, members, radii, grip=0.5, progress=True, every=50, check=10):
-        if not 0 < grip < 1:
-            raise ValueError(f"grip = {grip!r} is invalid: the caps start at a fraction of R in (0, 1)")
         self.members = [list(m) for m in members]
         self.radii = list(radii)
+        c = [make.centre_of_mass(m)[0] for m in self.members]
+        self._hold([-1.0, 1.0] if c[0][0] < c[1][0] else [1.0, -1.0], grip, progress, every, check)  # the far side of each
+
+    def _hold(self, side, grip, progress, every, check):
+        """Grips each agglomerate's cap beyond ``grip`` R on its ``side`` (+-1 along x) and inserts
+        the caps' motion, the recorder and the stroke's check."""
+        if not 0 < grip < 1:
+            raise ValueError(f"grip = {grip!r} is invalid: the caps start at a fraction of R in (0, 1)")
         self.progress, self.every, self.check = progress, int(every), int(check)
         c = [make.centre_of_mass(m)[0] for m in self.members]
-        side = [-1.0, 1.0] if c[0][0] < c[1][0] else [1.0, -1.0]  # the far side of each
         self.grips = [[i for i in m if side[k] * (O.bodies[i].state.pos[0] - c[k][0]) > grip * self.radii[k]]
                       for k, m in enumerate(self.members)]
         self.side = side
@@ -136,3 +142,48 @@ class Pair:
         self._record()
         self.touch = touch
         return self.rows
+
+
+class Wall(Pair):
+    """One agglomerate (of make.ensure's pair; the other is erased) pressed against a flat wall and
+    pulled off it: the same cycles (Pair.cycles), its far cap moving at ``speed`` towards a fixed
+    wall (a YADE box of the primaries' own material, so a primary meets it as it meets another
+    primary, with a12 = 2 a_i) whose face is normal to x on the agglomerate's +x side. delta =
+    R - (x_wall - x) of the centre of mass; F is the force on the wall along x (> 0 pushed away),
+    the force across the contact itself."""
+
+    def __init__(self, members, radius, grip=0.5, progress=True, every=50, check=10, keep=0):
+        for k, m in enumerate(members):
+            if k != keep:
+                for i in m:
+                    O.bodies.erase(i)
+        self.members, self.radii = [list(members[keep])], [radius]
+        c = make.centre_of_mass(self.members[0])[0]
+        mat = [m for m in O.materials if m.label == "particles"]
+        if len(mat) != 1:
+            raise RuntimeError(f"the scene holds {len(mat)} materials labelled 'particles', not one: not make.ensure's")
+        half = Vector3(0.5 * sample.D0, 2.0 * radius, 2.0 * radius)
+        self.wall = O.bodies.append(_utils.box(center=c + Vector3(2.0 * radius + half[0], 0, 0), extents=half,
+                                               fixed=True, material=mat[0]))
+        self._hold([-1.0], grip, progress, every, check)
+
+    def face(self):
+        return O.bodies[self.wall].state.pos[0] - O.bodies[self.wall].shape.extents[0]
+
+    def set_gap(self, gap):
+        """Moves the wall until its face lies ``gap`` [mm] from the agglomerate's nearest surface."""
+        reach = max(O.bodies[i].state.pos[0] + O.bodies[i].shape.radius for i in self.members[0])
+        O.bodies[self.wall].state.pos += Vector3(reach + gap - self.face(), 0, 0)
+        for e in O.engines:
+            if isinstance(e, _w.InsertionSortCollider):
+                e.doSort = True
+        return self.delta()
+
+    def delta(self):
+        return self.radii[0] - (self.face() - make.centre_of_mass(self.members[0])[0][0])
+
+    def force(self):
+        return O.forces.f(self.wall)[0]
+
+    def touching(self):
+        return sum(1 for I in O.bodies[self.wall].intrs() if I.isReal and I.geom.penetrationDepth > 0)

@@ -121,13 +121,30 @@ def contacts_between(first, second):
                if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
 
 
-def touch_shift(first, second):
-    """How far ``second`` must move along x towards ``first`` until a particle of one first
-    touches a particle of the other (the agglomerates' surfaces, not their outer spheres): the
-    smallest, over pairs less than r_i + r_j apart sideways, of their x distance minus the x
-    distance at which they would touch."""
+X_AXIS = (1.0, 0.0, 0.0)
+
+
+def _frame(axis):
+    """An orthonormal frame (axis, t1, t2) as rows; x's is the identity, so that x's arithmetic is
+    exactly the coordinates' own."""
     import numpy as np
-    pos = [np.array([list(O.bodies[i].state.pos) for i in ids]) for ids in (first, second)]
+    n = np.array(axis, dtype=float)
+    n /= np.linalg.norm(n)
+    if tuple(n) == X_AXIS:
+        return np.eye(3)
+    t1 = np.cross(n, [0.0, 0.0, 1.0] if abs(n[2]) < 0.9 else [1.0, 0.0, 0.0])
+    t1 /= np.linalg.norm(t1)
+    return np.array([n, t1, np.cross(n, t1)])
+
+
+def touch_shift(first, second, axis=X_AXIS):
+    """How far ``second`` must move along ``axis`` towards ``first`` until a particle of one first
+    touches a particle of the other (the agglomerates' surfaces, not their outer spheres): the
+    smallest, over pairs less than r_i + r_j apart sideways, of their distance along the axis minus
+    the distance at which they would touch."""
+    import numpy as np
+    frame = _frame(axis)
+    pos = [np.array([list(O.bodies[i].state.pos) for i in ids]) @ frame.T for ids in (first, second)]
     rad = [np.array([O.bodies[i].shape.radius for i in ids]) for ids in (first, second)]
     side = 1.0 if pos[1][:, 0].mean() > pos[0][:, 0].mean() else -1.0
     best = np.inf
@@ -141,16 +158,41 @@ def touch_shift(first, second):
     return best
 
 
-def move_to_gap(first, second, gap):
-    """Moves ``second`` along x so that it touches ``first`` after moving ``gap`` [mm] towards it."""
-    c = [centre_of_mass(m)[0][0] for m in (first, second)]
-    side = 1.0 if c[1] > c[0] else -1.0
-    shift = Vector3(side * (gap - touch_shift(first, second)), 0, 0)
-    for i in second:
+def _translate(ids, shift):
+    for i in ids:
         O.bodies[i].state.pos += shift
     for e in O.engines:  # a jump the integrator did not make: the collider must sort again, or miss new pairs
         if isinstance(e, _w.InsertionSortCollider):
             e.doSort = True
+
+
+def move_to_gap(first, second, gap, axis=X_AXIS):
+    """Moves ``second`` along ``axis`` so that it touches ``first`` after moving ``gap`` [mm] towards it."""
+    n = Vector3(*_frame(axis)[0])
+    c = [centre_of_mass(m)[0].dot(n) for m in (first, second)]
+    side = 1.0 if c[1] > c[0] else -1.0
+    _translate(second, n * (side * (gap - touch_shift(first, second, axis))))
+
+
+def place_along(first, second, axis, radii):
+    """Moves ``second`` (a translation: its contacts' history stays exact) so that its centre of
+    mass lies from ``first``'s along ``axis``, its outer sphere 1 d0 clear of the other's: the two
+    then meet with other faces than along x."""
+    n = Vector3(*_frame(axis)[0])
+    c = [centre_of_mass(m)[0] for m in (first, second)]
+    _translate(second, c[0] + n * (radii[0] + radii[1] + sample.D0) - c[1])
+
+
+def directions(count, seed=1):
+    """``count`` approach directions: x (the pair as carved), then unit vectors drawn uniformly on
+    the sphere (numpy's default_rng(seed))."""
+    import numpy as np
+    rng = np.random.default_rng(seed)
+    out = [X_AXIS]
+    while len(out) < count:
+        v = rng.normal(size=3)
+        out.append(tuple(float(x) for x in v / np.linalg.norm(v)))
+    return out
 
 
 def outer_radius(ids, centre):

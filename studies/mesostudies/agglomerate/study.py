@@ -2,7 +2,9 @@
 
     prepare   the sintered block and the two carved agglomerates (make.ensure)
     cycles    their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)
-    collide   head-on collisions at each speed (collide.Collision)
+    wall      the first agglomerate's cycles against a flat wall, the same way (drive.Wall)
+    collide   head-on collisions at each speed (collide.Collision); --direction K: approach along
+              the K-th direction of make.directions (0: x, the pair as carved)
     compare   the law fitted to the slowest cycles (and to the run with the most amplitudes), the meso-particle pair and the closed form at the
               same speeds, the summary agglomerate-vs-meso.json, cycles.png and restitution.png
     all       the four in turn
@@ -22,11 +24,12 @@ from mesostudies.tablet import sample
 from mesostudies.tablet.campaign.common import read_csv
 from . import collide, compare, drive, make, plots, report
 
-JOBS = ("prepare", "cycles", "collide", "compare", "all")
+JOBS = ("prepare", "cycles", "wall", "collide", "compare", "all")
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
 SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0), True: (0.1, 1.0, 10.0)}  # m/s
 CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
 SLOWER = 4
+DIRECTION_SEED = 1
 
 
 def _parser():
@@ -40,12 +43,17 @@ def _parser():
     p.add_argument("--factors", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
                    help=f"cycles: the cap speed's divisors (default 1,{SLOWER}; --quick: 1), one run each; "
                         "separate jobs may run them side by side")
+    p.add_argument("--direction", type=int, default=0,
+                   help="collide: the approach direction's index in make.directions (0: x, as carved; "
+                        "k > 0: drawn on the sphere, seed DIRECTION_SEED)")
     p.add_argument("--amplitudes", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
                    help="cycle amplitudes beyond the first touch [d0], comma-separated")
     return p
 
 
 def _check(a, p):
+    if a.direction < 0:
+        p.error(f"--direction {a.direction} is invalid: an index >= 0")
     if a.factors is not None and (not a.factors or any(f < 1 for f in a.factors)):
         p.error(f"--factors {a.factors} is invalid: positive integers")
     for name in ("speeds", "amplitudes"):
@@ -66,49 +74,60 @@ def prepare(a):
     return make.ensure(_dir(a), quick=a.quick)
 
 
-def cycles(a):
-    """One cycle run per speed divisor: cycles-v<m/s>.csv and .json in the study's folder."""
+def cycles(a, wall=False):
+    """One cycle run per speed divisor: cycles-v<m/s>.csv and .json (``wall``: wall-cycles-v<m/s>)
+    in the study's folder."""
     prepare(a)
     out = {}
     for factor in a.factors or ((1,) if a.quick else (1, SLOWER)):  # quick: the pipeline, no rate check
         info = make.ensure(_dir(a), quick=a.quick)
         speed = CAP_SPEED / factor
-        print(f"cycles at {speed * 1e3:g} m/s per cap", flush=True)
+        print(f"{'wall ' if wall else ''}cycles at {speed * 1e3:g} m/s per cap", flush=True)
         t0, it0 = time.time(), O.iter
-        pair = drive.Pair(info["members"], [g["radius"] for g in info["agglomerates"]])
+        radii = [g["radius"] for g in info["agglomerates"]]
+        pair = drive.Wall(info["members"], radii[0]) if wall else drive.Pair(info["members"], radii)
         rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed, final=factor == 1)  # slower runs: the rate check
-        name = f"cycles-v{speed * 1e3:g}"
+        name = f"{'wall-' if wall else ''}cycles-v{speed * 1e3:g}"
         outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
                              "iter,delta_mm,F\n" + "".join(f"{r[0]},{r[1]!r},{r[2]!r}\n" for r in rows))
         out[name] = {"speed_per_cap_m_s": speed * 1e3, "touch_delta_mm": pair.touch, "events": pair.events,
                      "grip_fraction": pair.grip_fraction, "grip_particles": [len(g) for g in pair.grips],
                      "steps": O.iter - it0, "wall_clock_s": time.time() - t0, "dt": O.dt,
                      "units": "delta mm, F mg mm/us^2 (1e3 N)"}
+        if wall:
+            out[name]["against"] = "a flat wall of the primaries' material (agglomerate 0; a12 = 2 R)"
         _write(os.path.join(_dir(a), name + ".json"), out[name])
     return out
 
 
-def _cycle_runs(d):
-    """{name: description} of the cycle runs in the study's folder, slowest first."""
+def _cycle_runs(d, prefix="cycles-v"):
+    """{name: description} of the cycle runs in the study's folder (``prefix``: the pair's, or
+    'wall-cycles-v'), slowest first."""
     runs = {}
     for f in sorted(os.listdir(d)):
-        if f.startswith("cycles-v") and f.endswith(".json"):
+        if f.startswith(prefix) and f.endswith(".json"):
             with open(os.path.join(d, f)) as fh:
                 runs[f[:-5]] = json.load(fh)
     return dict(sorted(runs.items(), key=lambda kv: kv[1]["speed_per_cap_m_s"]))
 
 
+def collision_file(direction):
+    return "collisions.json" if direction == 0 else f"collisions-dir{direction}.json"
+
+
 def collisions(a):
+    axis = make.directions(a.direction + 1, DIRECTION_SEED)[a.direction]
+    tag = "" if a.direction == 0 else f"-dir{a.direction}"
     out = []
     for v in a.speeds or SPEEDS[a.quick]:
         info = make.ensure(_dir(a), quick=a.quick)
-        c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]])
-        print(f"collision at {v:g} m/s", flush=True)
-        r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision-v{v:g}.png"))
+        c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=axis)
+        print(f"collision at {v:g} m/s{f', direction {a.direction} {axis}' if a.direction else ''}", flush=True)
+        r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision{tag}-v{v:g}.png"))
         print(f"  e = {r['e']:.4f}  stuck {r['stuck']}  broken off {r['broken_mass_fraction']:.3f}  "
               f"contact time {r['contact_time']}", flush=True)
-        out.append(dict(r, v_rel_m_s=v))
-    _write(os.path.join(_dir(a), "collisions.json"), out)
+        out.append(dict(r, v_rel_m_s=v, direction=list(axis)))
+    _write(os.path.join(_dir(a), collision_file(a.direction)), out)
     return out
 
 
@@ -117,9 +136,9 @@ def main(argv):
     a = p.parse_args(argv)
     _check(a, p)
     t0 = time.time()
-    jobs = ("prepare", "cycles", "collide", "compare") if a.job == "all" else (a.job,)
+    jobs = ("prepare", "cycles", "wall", "collide", "compare") if a.job == "all" else (a.job,)
     for job in jobs:
-        {"prepare": prepare, "cycles": cycles, "collide": collisions, "compare": lambda a: compare_job(a)}[job](a)
+        {"prepare": prepare, "cycles": cycles, "wall": lambda a: cycles(a, wall=True), "collide": collisions, "compare": lambda a: compare_job(a)}[job](a)
     print(f"agglomerate {a.job}: done in {time.time() - t0:.0f} s", flush=True)
 
 
