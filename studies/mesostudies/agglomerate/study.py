@@ -51,6 +51,11 @@ def _parser():
     return p
 
 
+def batch_columns():
+    """yade-batch's table columns: every option, named with underscores, absent unless given."""
+    return {"job": None, **{x.dest: None for x in _parser()._actions if x.option_strings and x.dest != "help"}}
+
+
 def _check(a, p):
     if a.direction < 0:
         p.error(f"--direction {a.direction} is invalid: an index >= 0")
