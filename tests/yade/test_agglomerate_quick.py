@@ -8,7 +8,7 @@ import os
 import tempfile
 
 import numpy as np
-from yade import O
+from yade import O, Vector3
 from mesostudies.agglomerate import compare, make, study
 from mesostudies.tablet import sample
 from harness import check, finish
@@ -56,6 +56,24 @@ def surface_gap(t):
 check(surface_gap(0.0) > 0 and abs(surface_gap(gap)) < 1e-9 * D0, "move_to_gap: the surfaces touch after moving the gap",
       f"gap {surface_gap(0.0) / D0:.4f} d0 apart, {surface_gap(gap) / D0:.2e} d0 after moving {gap / D0} d0")
 
+# 2b. Another approach direction: placed beside the first along it, then gap apart along it.
+n = np.array(make.directions(3, study.DIRECTION_SEED)[2])
+check(abs(np.linalg.norm(n) - 1) < 1e-15, "make.directions: unit vectors")
+make.place_along(A, B, tuple(n), [a["radius"] for a in info["agglomerates"]])
+make.move_to_gap(A, B, gap, tuple(n))
+pa = np.array([list(O.bodies[i].state.pos) for i in A])
+pb = np.array([list(O.bodies[i].state.pos) for i in B])
+
+
+def surface_gap_n(t):
+    q = pb - t * n
+    return float((np.linalg.norm(pa[:, None, :] - q[None, :, :], axis=2) - ra[:, None] - rb[None, :]).min())
+
+
+check((pb.mean(0) - pa.mean(0)) @ n > 0 and surface_gap_n(0.0) > 0 and abs(surface_gap_n(gap)) < 1e-9 * D0,
+      "place_along, move_to_gap along a drawn direction: the surfaces touch after moving the gap along it",
+      f"{surface_gap_n(0.0) / D0:.4f} d0 apart, {surface_gap_n(gap) / D0:.2e} d0 after moving {gap / D0} d0")
+
 # 3. The cycles: turning points where asked, force > 0 at each loaded turn, caps rigid.
 cyc = study._cycle_runs(d)
 check(list(cyc) == ["cycles-v2.5"], "quick: one cycle run (no rate check)", str(list(cyc)))
@@ -71,6 +89,17 @@ unloaded = [e for e in run["events"] if e[0] == "unloaded"]
 check(all(-0.21 < (e[2] - touch) / D0 <= -0.2 for e in unloaded), "each unloading turns 0.2 d0 below the first touch")
 rows = [tuple(float(x) for x in line.split(",")) for line in open(os.path.join(d, "cycles-v2.5.csv")).read().split("\n")[1:] if line]
 check(len({r[0] for r in rows}) == len(rows), f"cycles CSV: {len(rows)} rows, one per iteration")
+
+# 3b. Against a wall: the same turning points, the force on the wall repulsive at each loaded turn.
+wrun = study._cycle_runs(d, "wall-cycles-v")
+check(list(wrun) == ["wall-cycles-v2.5"], "quick: one wall cycle run", str(list(wrun)))
+wr = wrun["wall-cycles-v2.5"]
+wloaded = [e for e in wr["events"] if e[0].startswith("loaded to")]
+for e, a in zip(wloaded, study.AMPLITUDES[True]):
+    over = (e[2] - wr["touch_delta_mm"]) / D0 - a
+    # one cap moves: delta moves about v dt check between checks
+    check(0 <= over < 1e-3 and e[3] > 0, f"wall, loaded to {a} d0: {over:.2e} d0 beyond, F = {e[3]:.3e} > 0")
+check(len(wloaded) == len(study.AMPLITUDES[True]) and wr["grip_particles"][0] > 0, "wall: one loaded turn per amplitude, one cap")
 
 # 4. The fit's residual recomputed from the CSV and the fitted law (compare.law_curve: units, shift, a12).
 summary = json.load(open(os.path.join(d, "agglomerate-vs-meso.json")))
@@ -111,7 +140,31 @@ shares = r["energy_over_impact"]
 check(abs(sum(shares.values()) - 1) < 1e-3, "collision: the impact's energy accounted for (centres of mass, internal motion, "
       "stored and dissipated by the law)", ", ".join(f"{k} {v:.4f}" for k, v in shares.items()))
 
-for f in ("cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
+# 6. A collision along a drawn direction: momentum kept in all three components; e, the speed ratio
+# and the deflection agree (e = e_speed cos(deflection)).
+info = make.ensure(d, quick=True, progress=False)
+n = make.directions(2, study.DIRECTION_SEED)[1]
+c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=n)
+r = c.run(v, progress=False)
+p = sum((O.bodies[i].state.vel * O.bodies[i].state.mass for m in info["members"] for i in m), Vector3(0, 0, 0))
+p0 = Vector3(*n) * (0.5 * v * (masses[0] - masses[1]))
+check((p - p0).norm() < 1e-9 * sum(masses) * v, "collision along a drawn direction: momentum kept", f"{p} against {p0}")
+if not r["stuck"]:
+    check(abs(r["e_speed"] * math.cos(math.radians(r["deflection_deg"])) - r["e"]) < 1e-12,
+          f"e = {r['e']:.4f} is the speed ratio {r['e_speed']:.4f} times cos({r['deflection_deg']:.1f} deg)")
+
+# 7. The cycles' tension as a non-contact force: the pair sticks below the stated speed, not above.
+from mesocontact import theory  # noqa: E402
+for ad in summary["adhesion"]:
+    a12, m_r = compare.geometry(info)[:2]
+
+    def e_at(x):
+        return theory.pair_collision(x, fit["k1"], fit["kp"], fit["kc"], fit["phiF"], a12, m_r, fa=ad["fa_N"], kca=ad["kca_N_m"],
+                                     adhesion="jumpIn").e
+    vs = ad["sticks_below_m_s"]
+    check(e_at(0.99 * vs) == 0 and e_at(1.01 * vs) > 0, f"after {ad['after_d0']} d0: the pair sticks below {vs:.3g} m/s and rebounds above")
+
+for f in ("cycles.png", "wall-cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
     check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")
 check(all(k in summary for k in ("fit", "speeds", "e_agglomerate", "e_meso", "e_theory", "fragmented")), "summary keys")
 finish()

@@ -23,11 +23,16 @@ def geometry(info):
     return _params.reduced_radius(*radii), _params.reduced_mass(*masses), radii, masses
 
 
-def fit(rows, info, free=FREE):
+def wall_a12(info):
+    """a12 [m] of the first agglomerate against a flat wall: 2 R, the law's sphere-wall value."""
+    return 2.0 * info["agglomerates"][0]["radius"] * MM
+
+
+def fit(rows, info, free=FREE, a12=None):
     """The law fitted to cycle rows (iter, delta [mm], F [study units]) with a free overlap shift
     (the meso-overlap of the outer spheres is not where the surfaces touch): calibrate.fit_cycles
-    in SI. Returns its result."""
-    a12 = geometry(info)[0]
+    in SI, a12 the pair's (default) or ``a12`` [m] (wall_a12). Returns its result."""
+    a12 = geometry(info)[0] if a12 is None else a12
     delta = [r[1] * MM for r in rows]
     force = [r[2] * FORCE for r in rows]
     return calibrate.fit_cycles(delta, force, a12, free=free, shift=True)
@@ -40,11 +45,68 @@ def law_curve(params, rows, a12):
     return [x / FORCE for x in f]
 
 
+WALLS = {"same material": 1.0, "rigid wall": 2.0}  # the factor on k1, kp, kc a wall contact gets
+
+
+def wall_predictions(params, rows, info, touch_pair, touch_wall):
+    """The force [study units] along the wall cycles' rows that the law fitted to the pair's cycles
+    predicts, with nothing refitted. Where the law's contact starts is taken from the first touch
+    (the faces that meet are not equally deep inside the outer spheres): the pair's law starts
+    shift - touch_pair beyond its touch, made of two faces, so the wall's starts half that beyond
+    touch_wall [mm]. a12 = 2 R. Per WALLS: a wall of the meso-particle's own material (k1, kp, kc as
+    in the pair), and a rigid one (the harmonic mixing of docs/model.md §8 with an infinitely stiff
+    wall doubles k1, kp and kc: the two agglomerates of a pair are springs in series, one against
+    a wall is one spring)."""
+    start = touch_wall * MM + 0.5 * (params.get("shift", 0.0) - touch_pair * MM)
+    delta = [r[1] * MM - start for r in rows]
+    out = {}
+    for name, x in WALLS.items():
+        f = theory.normal_force_path(delta, x * params["k1"], x * params["kp"], x * params["kc"], params["phiF"], wall_a12(info))
+        out[name] = [v / FORCE for v in f]
+    return out
+
+
+def misfit(forces, rows):
+    """(rms, largest) of forces - the rows' F over the rows' largest |F|."""
+    scale = max(abs(r[2]) for r in rows)
+    d = [(f - r[2]) / scale for f, r in zip(forces, rows)]
+    return math.sqrt(sum(x * x for x in d) / len(d)), max(abs(x) for x in d)
+
+
 def theory_e(params, info, speeds):
     """The closed form's e at each relative speed [mm/us] (no viscosity, no adhesion beyond kc)."""
     a12, m_r = geometry(info)[:2]
     return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).e
             for v in speeds]
+
+
+def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.2):
+    """What the cycles' tension does to collisions if the law takes it as its non-contact force
+    ('jumpIn': -fa throughout a contact, the tail -kca delta - fa after it): fa = -plateau (a
+    tension plateau of cycle_measures [study units]), and the shortest tail the cycles allow, down
+    to where they turned (``below`` d0 below the touch ``touch`` [mm], drive.BELOW_TOUCH) measured from the fitted
+    law's own contact end (delta = shift), kca = fa/that. A longer tail only holds on harder.
+    Returns fa [N], kca [N/m], the closed form's e at ``speeds`` [mm/us] and the speed [m/s] below
+    which the pair sticks (bisection on the closed form)."""
+    a12, m_r = geometry(info)[:2]
+    fa = -plateau * FORCE
+    reach = params.get("shift", 0.0) - (touch - below * d0) * MM
+    if not (fa > 0 and reach > 0):
+        return None
+    kca = fa / reach
+
+    def e(v):  # v in m/s
+        return theory.pair_collision(v, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r,
+                                     fa=fa, kca=kca, adhesion="jumpIn").e
+    lo, hi = 1e-6, 1e4
+    if e(lo) > 0:
+        stick = 0.0
+    else:
+        for _ in range(100):
+            mid = math.sqrt(lo * hi)
+            lo, hi = (lo, mid) if e(mid) > 0 else (mid, hi)
+        stick = hi
+    return {"fa_N": fa, "kca_N_m": kca, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds], "sticks_below_m_s": stick}
 
 
 def meso_material(params, radius, mass, gammaN=0.0):

@@ -37,10 +37,40 @@ def cycles(runs, law, path, d0, force_scale, touch):
     plt.close(fig)
 
 
-def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None):
-    """e(v): agglomerates (open where mass broke off), meso-particle pair, closed form, and the
-    pair with its viscosity fitted to one collision."""
+def wall_cycles(c, path, d0, force_scale):
+    """The agglomerate against a wall: its cycle runs (c['runs'], slowest first, fitted), the law
+    fitted to them and what the pair's fit predicts (c['predicted']: name -> forces)."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    names = list(c["runs"])
+    touch = c["touch"]
+    for k, name in reversed(list(enumerate(names))):
+        rows = c["runs"][name]
+        ax.plot([(r[1] - touch) / d0 for r in rows], [r[2] / force_scale for r in rows], lw=0.9 if k == 0 else 0.6,
+                color=f"C{k}", alpha=1.0 if k == 0 else 0.7, label=f"agglomerate on a wall, {name}")
+    x = [(r[1] - touch) / d0 for r in c["runs"][names[0]]]
+    ax.plot(x, [f / force_scale for f in c["fit"]], "k--", lw=0.9, label="law fitted to these cycles")
+    for (name, f), style in zip(c["predicted"].items(), (":", "-.")):
+        ax.plot(x, [v / force_scale for v in f], style, color="C3", lw=1.0, label=f"pair's fit, {name}")
+    ax.axhline(0, color="0.6", lw=0.5)
+    ax.set_xlim(-0.3, max(x) + 0.03)
+    ax.set_xlabel("(delta - delta_touch)/d0, beyond the first touch")
+    ax.set_ylabel("F/(kp d0)")
+    ax.set_title("one agglomerate against a flat wall", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+    outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")
+    plt.close(fig)
+
+
+def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=()):
+    """e(v): agglomerates (open where mass broke off; small markers: the other approach
+    directions), meso-particle pair, closed form, and the pair with its viscosity fitted to one
+    collision."""
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for k, d in enumerate(directions):
+        pts = [(v, e) for v, e in zip(speeds, d["e"]) if e is not None]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", color="C3", alpha=0.6, ms=5,
+                label="agglomerates, other approach directions" if k == 0 else None)
     ax.plot(speeds, e_theory, "k-", lw=1, label="closed form, fitted law")
     ax.plot(speeds, e_meso, "s", mfc="none", label="two meso-particles (YADE)")
     if e_viscous is not None:

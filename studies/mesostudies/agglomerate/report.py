@@ -20,6 +20,37 @@ def _f(x, fmt="{:.3g}"):
     return "–" if x is None else fmt.format(x)
 
 
+def _cycles(cycles, rate_check):
+    md = ["| run | cap speed [m/s] | amplitudes beyond the touch [d0] | unloaded to [d0 below the touch] "
+          "| force at each loaded turn, F/(kp d0) | most tensile force of each unloading | mean tension 0.05 - 0.2 d0 "
+          "below the touch, each unloading |",
+          "|---|---|---|---|---|---|---|"]
+    scale = KP_D0 / STUDY_FORCE  # kp d0 in the study's force unit
+    for name, c in cycles.items():
+        md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
+                  + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
+                  + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"])
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}") for x in c.get("tension_plateaus", []))
+                  + " |")
+    for name, r in rate_check.items():
+        md.append("")
+        md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
+                  "largest force (turn forces and mean tensions; the most tensile values ring and are not compared).")
+    return md
+
+
+def _fit_table(fit):
+    md = [f"{fit['n_points']} points; residual rms {fit['rms_relative']:.3f} and largest {fit['max_relative']:.3f} "
+          f"of the force scale max |F| = {fit['force_scale'] / KP_D0:.4f} kp d0.", "",
+          "| parameter | value | 95 % interval | determined |", "|---|---|---|---|"]
+    for k in list(fit["free"]):
+        lo, hi = fit["ci95"][k]
+        md.append(f"| {k} | {fit[k]:.4g} | [{_f(lo, '{:.4g}')}, {_f(hi, '{:.4g}')}] | "
+                  f"{'no' if k in fit['undetermined'] else 'yes'} |")
+    return md + ["", "What the cycles cannot determine:", ""] + [f"- {t}" for t in fit["statements"]]
+
+
 def markdown(s):
     prep, fit = s["preparation"], s["fit"]
     md = ["# An agglomerate as a meso-particle: the results", "",
@@ -32,32 +63,8 @@ def markdown(s):
     for k, a in enumerate(prep["agglomerates"]):
         md.append(f"| {k} | {a['n']} | {a['radius_d0']:.3f} | {a['mass'] * 1e-6:.4g} | {a['solid_fraction_core']:.3f} | "
                   f"{a['coordination']:.2f} | {a['rattlers']} | {_f(a['mean_depth'], '{:.2f}')} |")
-    md += ["", "## The cycles and the rate check", "",
-           "| run | cap speed [m/s] | amplitudes beyond the touch [d0] | unloaded to [d0 below the touch] "
-           "| force at each loaded turn, F/(kp d0) | most tensile force of each unloading | mean tension 0.05 - 0.2 d0 "
-           "below the touch, each unloading |",
-           "|---|---|---|---|---|---|---|"]
-    scale = KP_D0 / STUDY_FORCE  # kp d0 in the study's force unit
-    for name, c in s["cycles"].items():
-        md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
-                  + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
-                  + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
-                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"])
-                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}") for x in c.get("tension_plateaus", []))
-                  + " |")
-    for name, r in s["rate_check"].items():
-        md.append("")
-        md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
-                  "largest force (turn forces and mean tensions; the most tensile values ring and are not compared).")
-    md += ["", f"## The fit (run {s.get('fitted_run', '–')})", "",
-           f"{fit['n_points']} points; residual rms {fit['rms_relative']:.3f} and largest {fit['max_relative']:.3f} "
-           f"of the force scale max |F| = {fit['force_scale'] / KP_D0:.4f} kp d0.", "",
-           "| parameter | value | 95 % interval | determined |", "|---|---|---|---|"]
-    for k in list(fit["free"]):
-        lo, hi = fit["ci95"][k]
-        md.append(f"| {k} | {fit[k]:.4g} | [{_f(lo, '{:.4g}')}, {_f(hi, '{:.4g}')}] | "
-                  f"{'no' if k in fit['undetermined'] else 'yes'} |")
-    md += ["", "What the cycles cannot determine:", ""] + [f"- {t}" for t in fit["statements"]]
+    md += ["", "## The cycles and the rate check", ""] + _cycles(s["cycles"], s["rate_check"])
+    md += ["", f"## The fit (run {s.get('fitted_run', '–')})", ""] + _fit_table(fit)
     w = s.get("fit_widest_run")
     if w:
         md += ["", f"Fitted to {w['run']} instead (all amplitudes, the faster run): k1 = {w['k1']:.4g} "
@@ -98,7 +105,75 @@ def markdown(s):
                 k = max(rb, key=lambda k: abs(s["e_agglomerate"][k] - vis["e_meso"][k]))
                 md += ["", f"With gammaN fitted, the largest difference over the rebounds without fragmentation: "
                            f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
+    md += _directions(s) + _adhesion(s) + _wall(s)
     return "\n".join(md) + "\n"
+
+
+def _directions(s):
+    dirs = s.get("directions") or []
+    if not dirs:
+        return []
+    md = ["", "## Other approach directions", "",
+          "The same two agglomerates meeting with other faces: the second placed beside the first along a direction "
+          "drawn on the sphere (its contacts' history moved with it). e along the approach direction; (s) stuck, "
+          "(b) >= 1 % of the mass broken off; the spread is the largest minus the smallest e over the directions "
+          "where both rebound.", "",
+          "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds | largest deflection [deg] |",
+          "|---|---|" + "---|" * len(dirs) + "---|---|"]
+
+    def cell(e, stuck, broken):
+        return "–" if e is None else f"{e:.3f}" + (" (s)" if stuck else "") + (" (b)" if broken is not None and broken >= 0.01 else "")
+    for k, v in enumerate(s["speeds"]):
+        es = [(s["e_agglomerate"][k], s["stuck"][k], s["fragmented"][k], s["deflection_deg"][k] if s.get("deflection_deg") else None)]
+        es += [(d["e"][k], d["stuck"][k], d["broken_mass_fraction"][k], d["deflection_deg"][k]) for d in dirs]
+        rebounds = [e for e, st, b, _ in es if e is not None and not st]
+        spread = max(rebounds) - min(rebounds) if len(rebounds) > 1 else None
+        defl = [x for *_, x in es if x is not None]
+        md.append(f"| {v:g} | " + " | ".join(cell(e, st, b) for e, st, b, _ in es) + f" | {_f(spread)} | "
+                  f"{_f(max(defl) if defl else None, '{:.1f}')} |")
+    md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
+    return md
+
+
+def _adhesion(s):
+    ad = s.get("adhesion") or []
+    if not ad:
+        return []
+    md = ["", "## The cycles' tension as the law's non-contact force", "",
+          "fa from the mean tension 0.05 - 0.2 d0 below the touch of each unloading of the fitted run; the shortest "
+          "tail the cycles allow (from the fitted law's contact end to where the unloading turned), kca = fa/tail; "
+          "'jumpIn' (-fa in contact, the tail after it). The closed form's e with it, and the speed below which the "
+          "meso-particle pair sticks:", "",
+          "| after loading to [d0] | fa [N] | fa/(kp d0) | tail [d0] | kca [N/m] | pair sticks below [m/s] |",
+          "|---|---|---|---|---|---|"]
+    for a in ad:
+        md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | {a['tail_m'] / (D0_MM * 1e-3):.3f} | "
+                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} |")
+    md += ["", "| v [m/s] | e agglomerates | " + " | ".join(f"e closed form, fa after {a['after_d0']:g} d0" for a in ad) + " |",
+           "|---|---|" + "---|" * len(ad)]
+    for k, v in enumerate(s["speeds"]):
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | " + " | ".join(f"{a['e_theory'][k]:.3f}" for a in ad) + " |")
+    return md
+
+
+def _wall(s):
+    w = s.get("wall")
+    if not w:
+        return []
+    md = ["", "## One agglomerate against a flat wall", "",
+          "Agglomerate 0 pressed by its far cap against a fixed wall of the primaries' own material, force read on "
+          "the wall; delta = R - (x_wall - x) of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
+    md += ["", f"The law fitted to {w['fitted_run']} (a12 = 2 R = {w['a12_m']:.4g} m, the law's sphere-wall value):", ""]
+    md += _fit_table(w["fit"])
+    md += ["", f"Against the pair's fit: k1(wall)/k1(pair) = {w['k1_over_pair']:.3f} (two agglomerates in series "
+               f"against one: 2 for linear springs, 2^1.5 = 2.83 for Hertz contacts). The fitted law's contact starts "
+               f"{w['law_start_beyond_touch_d0']:+.4f} d0 beyond the first touch (the pair's: "
+               f"{w['pair_law_start_beyond_touch_d0']:+.4f} d0).", "",
+           "What the pair's fit predicts for the wall cycles, nothing refitted:", "",
+           "| wall in the law | rms of the misfit | largest |", "|---|---|---|"]
+    for name, p in w["predictions"].items():
+        md.append(f"| {name} | {p['rms_relative']:.3f} | {p['max_relative']:.3f} |")
+    return md
 
 
 def main(argv):

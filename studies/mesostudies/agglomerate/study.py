@@ -147,6 +147,55 @@ def main(argv):
     print(f"agglomerate {a.job}: done in {time.time() - t0:.0f} s", flush=True)
 
 
+def _cycles_summary(runs, measures):
+    return {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"],
+                    amplitudes_d0=[float(e[0].split()[2]) for e in runs[n]["events"] if e[0].startswith("loaded to")],
+                    unload_below_touch_d0=[(runs[n]["touch_delta_mm"] - e[2]) / sample.D0
+                                           for e in runs[n]["events"] if e[0] == "unloaded"])
+            for n in runs}
+
+
+def _wall(d, info, params, touch_pair):
+    """The wall cycles (if run): the law fitted to the slowest with the wall's a12, and what the
+    pair's fit predicts for them (compare.wall_predictions). Returns (summary, curves) or (None, None)."""
+    runs = _cycle_runs(d, "wall-cycles-v")
+    if not runs:
+        return None, None
+    names = list(runs)
+    rows = {n: read_csv(os.path.join(d, n + ".csv")) for n in names}
+    fitted_run = names[0]
+    fitted = compare.fit(rows[fitted_run], info, a12=compare.wall_a12(info))
+    touch = runs[fitted_run]["touch_delta_mm"]
+    predicted = compare.wall_predictions(params, rows[fitted_run], info, touch_pair, touch)
+    measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
+    summary = {"fitted_run": fitted_run, "fit": fitted.to_json(), "a12_m": compare.wall_a12(info),
+               "k1_over_pair": fitted.params["k1"] / params["k1"],
+               "law_start_beyond_touch_d0": (fitted.params["shift"] / compare.MM - touch) / sample.D0,
+               "pair_law_start_beyond_touch_d0": (params["shift"] / compare.MM - touch_pair) / sample.D0,
+               "predictions": {k: dict(zip(("rms_relative", "max_relative"), compare.misfit(v, rows[fitted_run])))
+                               for k, v in predicted.items()},
+               "cycles": _cycles_summary(runs, measures), "rate_check": compare.rate_check(measures)}
+    curves = {"runs": rows, "fit": compare.law_curve(fitted.params, rows[fitted_run], compare.wall_a12(info)),
+              "predicted": predicted, "touch": touch}
+    print(fitted.report(), flush=True)
+    return summary, curves
+
+
+def _directions(d, speeds):
+    """The collisions along the other approach directions (collisions-dir<k>.json present), at
+    the x run's speeds."""
+    out = []
+    k = 1
+    while os.path.exists(os.path.join(d, collision_file(k))):
+        with open(os.path.join(d, collision_file(k))) as f:
+            hits = {h["v_rel_m_s"]: h for h in json.load(f)}
+        out.append({"index": k, "axis": next(iter(hits.values()))["direction"],
+                    **{key: [hits[v].get(key) if v in hits else None for v in speeds]
+                       for key in ("e", "e_speed", "deflection_deg", "stuck", "broken_mass_fraction", "contact_time")}})
+        k += 1
+    return out
+
+
 def compare_job(a):
     d = _dir(a)
     with open(make.path(d, "agglomerates", a.quick) + ".json") as f:
@@ -165,7 +214,7 @@ def compare_job(a):
         f2 = compare.fit(rows[widest], info)
         also = {"run": widest, **{k: f2.to_json()[k] for k in ("k1", "kp", "kc", "phiF", "shift", "ci95", "undetermined",
                                                                   "rms_relative", "max_relative")}}
-    with open(os.path.join(d, "collisions.json")) as f:
+    with open(os.path.join(d, collision_file(0))) as f:
         hits = json.load(f)
     speeds = [h["v_rel_m_s"] for h in hits]
     params = fitted.params
@@ -179,18 +228,24 @@ def compare_job(a):
         viscous = {"gammaN": gamma, "fitted_at_m_s": speeds[k0], "e_at_fit": e_fit,
                    "e_meso": compare.meso_collisions(params, info, [v / 1e3 for v in speeds], gammaN=gamma)}
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
+    # The cycles' tension taken as the law's non-contact force: one estimate per unloading of the fitted run.
+    adhesion = []
+    for p, amp in zip(measures[fitted_run]["tension_plateaus"], _cycles_summary(runs, measures)[fitted_run]["amplitudes_d0"]):
+        c = compare.adhesion_consequence(params, info, p, runs[fitted_run]["touch_delta_mm"], [v / 1e3 for v in speeds]) \
+            if p is not None and p < 0 else None
+        if c:
+            adhesion.append(dict(c, after_d0=amp))
+    wall, wall_curves = _wall(d, info, params, runs[fitted_run]["touch_delta_mm"])
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
-               "cycles": {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"],
-                                  amplitudes_d0=[float(e[0].split()[2]) for e in runs[n]["events"] if e[0].startswith("loaded to")],
-                                  unload_below_touch_d0=[(runs[n]["touch_delta_mm"] - e[2]) / sample.D0
-                                                         for e in runs[n]["events"] if e[0] == "unloaded"])
-                          for n in names},
+               "cycles": _cycles_summary(runs, measures),
                "rate_check": compare.rate_check(measures),
                "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
+               "e_speed": [h.get("e_speed") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
                "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
+               "directions": _directions(d, speeds), "adhesion": adhesion, "wall": wall,
                "d0_mm": sample.D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     outputs.write_atomic(os.path.join(d, "summary.md"), report.markdown(summary))
@@ -199,7 +254,10 @@ def compare_job(a):
     plots.cycles({n: rows[n] for n in [fitted_run] + [m for m in names if m != fitted_run]},
                  compare.law_curve(params, rows[fitted_run], a12), os.path.join(d, "cycles.png"),
                  sample.D0, force_scale, runs[fitted_run]["touch_delta_mm"])
+    if wall_curves:
+        plots.wall_cycles(wall_curves, os.path.join(d, "wall-cycles.png"), sample.D0, force_scale)
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
-                      os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None)
+                      os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None,
+                      directions=summary["directions"])
     print(fitted.report(), flush=True)
     return summary
