@@ -1,0 +1,64 @@
+"""The agglomerate study's comparisons that need no YADE: what the pair's fit predicts for the wall
+cycles (where its contact starts, its stiffness for a wall of its own material and a rigid one),
+and the cycles' tension taken as the law's non-contact force."""
+import unittest
+
+from mesocontact import theory
+from mesostudies.agglomerate import compare
+
+INFO = {"agglomerates": [{"radius": 0.05, "mass": 6e2}, {"radius": 0.06, "mass": 7e2}]}  # mm, mg
+LAW = {"k1": 5e5, "kp": 2e6, "kc": 1e5, "phiF": 0.5, "shift": 3e-6}                     # SI
+
+
+class WallPrediction(unittest.TestCase):
+    def test_first_loading(self):
+        # Below the plastic limit (6.7e-5 m here; the path reaches 1e-7 m) a first loading is
+        # k1 (delta - start), start = touch_wall + (shift - touch_pair)/2, written out by hand.
+        touch_pair, touch_wall = 0.0031, 0.0022                    # mm
+        start = touch_wall * 1e-3 + 0.5 * (LAW["shift"] - touch_pair * 1e-3)
+        rows = [(i, touch_wall + 2e-6 * i - 2e-5, 0.0) for i in range(80)]   # mm, from before the contact
+        p = compare.wall_predictions(LAW, rows, INFO, touch_pair, touch_wall)
+        self.assertEqual(set(p), {"same material", "rigid wall"})
+        touched = 0
+        for r, same, rigid in zip(rows, p["same material"], p["rigid wall"]):
+            expect = max(r[1] * 1e-3 - start, 0.0) * LAW["k1"] / compare.FORCE
+            touched += expect > 0
+            self.assertAlmostEqual(same, expect, delta=1e-9 * abs(expect) + 1e-20)
+            self.assertAlmostEqual(rigid, 2 * expect, delta=2e-9 * abs(expect) + 1e-20)
+        self.assertGreater(touched, 20)
+
+    def test_wall_a12(self):
+        self.assertEqual(compare.wall_a12(INFO), 2 * 0.05e-3)
+
+    def test_misfit(self):
+        rows = [(0, 0.0, 2.0), (1, 0.0, -4.0)]
+        rms, largest = compare.misfit([3.0, -4.0], rows)
+        self.assertAlmostEqual(rms, (0.5 * 0.25 ** 2) ** 0.5)
+        self.assertAlmostEqual(largest, 0.25)
+
+
+class TensionAsAdhesion(unittest.TestCase):
+    def test_fa_kca_and_sticking(self):
+        plateau, touch = -2e-5, 0.0031                              # study force units, mm
+        a = compare.adhesion_consequence(LAW, INFO, plateau, touch, [1e-5, 1e-2])
+        fa = 2e-5 * compare.FORCE          # the study force unit in N (1e3 to rounding)
+        tail = LAW["shift"] - (touch - 0.2 * 0.01) * 1e-3
+        self.assertAlmostEqual(a["fa_N"], fa, delta=1e-15)
+        self.assertAlmostEqual(a["tail_m"], tail, delta=1e-18)
+        self.assertAlmostEqual(a["kca_N_m"], fa / tail, delta=1e-9 * fa / tail)
+        a12, m_r = compare.geometry(INFO)[:2]
+
+        def e(v):
+            return theory.pair_collision(v, LAW["k1"], LAW["kp"], LAW["kc"], LAW["phiF"], a12, m_r, fa=fa, kca=fa / tail,
+                                         adhesion="jumpIn").e
+        self.assertEqual(a["e_theory"], [e(1e-5 * compare.SPEED), e(1e-2 * compare.SPEED)])  # mm/us in m/s
+        v = a["sticks_below_m_s"]
+        self.assertEqual(e(0.999 * v), 0.0)
+        self.assertGreater(e(1.001 * v), 0.0)
+
+    def test_no_tension_no_estimate(self):
+        self.assertIsNone(compare.adhesion_consequence(LAW, INFO, 1e-5, 0.0031, [1e-3]))
+
+
+if __name__ == "__main__":
+    unittest.main()
