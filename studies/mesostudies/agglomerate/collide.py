@@ -6,7 +6,8 @@ agglomerate beside the first along it, make.place_along, so that other faces mee
 surface lies ``gap`` d0 from the first's (make.move_to_gap), and each is given half the relative
 speed towards the other, every particle the same velocity and no spin. There is no background drag: a collision's losses are the contacts'
 own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
-``quiet`` of the touch's duration so far and the fragments move apart, or when the two largest
+``quiet`` of the touch's duration so far and their surfaces move apart (head-on, or sliding past
+each other where the faces that meet are tilted to the approach: free flight either way), or when the two largest
 fragments, one from each agglomerate, are separate clusters moving apart (particles they exchanged
 may still join them), or after ``max_time`` (default STUCK_AFTER primary contact times; then the
 agglomerates are read as stuck together if one cluster holds most of both).
@@ -14,8 +15,9 @@ agglomerates are read as stuck together if one cluster holds most of both).
 Read at the end: the fragments (connected clusters through contacts in overlap); the two
 largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
 their centres of mass along the approach direction after)/(before), 0 when one fragment holds most of both
-(e_speed: the relative speed after over before, and the deflection: the angle of the relative
-velocity after to the approach direction, which the surfaces' tilt to it turns sideways); the mass
+(e_speed: the relative speed after over before; the deflection: the angle of the relative
+velocity after to the approach direction, which the surfaces' tilt to it turns sideways;
+e_impulse: e along the impulse the agglomerates exchanged, the normal of a tilted contact); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
 total; the contact time, from the first to the last step a contact joined the two agglomerates.
 """
@@ -84,15 +86,17 @@ class Collision:
         approach = min(gap * d0, v_rel * APPROACH) / v_rel
         max_time = max_time if max_time is not None else approach + STUCK_AFTER * self._t_scale()
         chunk = max(500, int(0.25 * approach / O.dt)) // self.every * self.every
-        state = "approach"
+        state, gap_before = "approach", None
         while O.time - start_time < max_time:
             O.run(chunk, True)
             if self.first is not None:
                 touch = self.last - self.first
                 apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
                 state = "apart" if apart else "joined"
-                if apart and self._separating(side):
-                    break
+                gap_now = self.surface_gap() if apart else None
+                if apart and gap_before is not None and gap_now > gap_before:
+                    break  # no contact for a while and the surfaces part (head-on or sliding past): free flight
+                gap_before = gap_now
                 if O.time - self.first > 5 * chunk * O.dt and self._parted(side):
                     state = "parted"  # the two largest fragments, one from each, separate; exchanged particles still join them
                     break
@@ -137,14 +141,28 @@ class Collision:
         a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
         return self._receding(a, b)
 
-    def _separating(self, side):
-        return self._receding(*self.members)
+    def surface_gap(self):
+        """The smallest distance between the surfaces of a particle of one agglomerate and one of
+        the other."""
+        import numpy as np
+        pos = [np.array([list(O.bodies[i].state.pos) for i in m]) for m in self.members]
+        rad = [np.array([O.bodies[i].shape.radius for i in m]) for m in self.members]
+        return float((np.linalg.norm(pos[0][:, None, :] - pos[1][None, :, :], axis=2) - rad[0][:, None] - rad[1][None, :]).min())
 
     @staticmethod
     def _receding(a, b):
         """The centres of mass of ``a`` and ``b`` move apart (along the line joining them: an
         oblique rebound, surfaces tilted to the approach, ends too)."""
         return (make.velocity(b) - make.velocity(a)).dot(make.centre_of_mass(b)[0] - make.centre_of_mass(a)[0]) > 0
+
+    def _impulse_restitution(self, dv, side, v_rel):
+        """e along the impulse the second agglomerate received (its particles' momentum change: the
+        only force on them is the first's), the normal of a tilted contact: -(dv after . j)/(dv before . j)."""
+        m = self.members[1]
+        before = self.n * (-side * 0.5 * v_rel)
+        j = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in m), Vector3(0, 0, 0))
+        j /= j.norm()
+        return -dv.dot(j) / (self.n * (-side * v_rel)).dot(j)
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
@@ -157,7 +175,7 @@ class Collision:
             frag.append({"ids": p, "mass": sum(share), "from": 0 if share[0] >= share[1] else 1,
                          "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
-        e_speed, deflection = 0.0, None
+        e_speed, deflection, e_impulse = 0.0, None, 0.0
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
         else:
@@ -165,9 +183,10 @@ class Collision:
             dv = b["v"] - a["v"]
             e = side * dv.dot(self.n) / v_rel
             e_speed = dv.norm() / v_rel  # with what the surfaces' tilt turned sideways
+            e_impulse = self._impulse_restitution(dv, side, v_rel)
             deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
             broken = 1.0 - (a["mass"] + b["mass"]) / total
-        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "stuck": stuck, "broken_mass_fraction": broken,
+        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "e_impulse": e_impulse, "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}
