@@ -17,7 +17,8 @@ largest, each named by the agglomerate most of its mass comes from; e = -(relati
 their centres of mass along the approach direction after)/(before), 0 when one fragment holds most of both
 (e_speed: the relative speed after over before; the deflection: the angle of the relative
 velocity after to the approach direction, which the surfaces' tilt to it turns sideways;
-e_impulse: e along the impulse the agglomerates exchanged, the normal of a tilted contact); the mass
+e_impulse: e along the impulse the agglomerates exchanged, the normal of a tilted contact, and
+that impulse's angle to the approach; the tilt: the angle of the first contacts' mean normal to it); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
 total; the contact time, from the first to the last step a contact joined the two agglomerates.
 """
@@ -62,6 +63,7 @@ class Collision:
         if self.joined():
             if self.first is None:
                 self.first = O.time
+                self.tilt = self._tilt()
             self.last = O.time
         v = [make.velocity(m).dot(self.n) for m in self.members]
         self.rows.append((O.iter, O.time, self.delta(), v[0], v[1]))
@@ -71,7 +73,7 @@ class Collision:
         at most what the pair crosses in APPROACH us. ``snapshot``: a PNG of the end state."""
         d0 = sample.D0
         c = [make.centre_of_mass(m)[0].dot(self.n) for m in self.members]
-        side = 1.0 if c[1] > c[0] else -1.0
+        side = self._side = 1.0 if c[1] > c[0] else -1.0
         make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH), tuple(self.n))
         for k, m in enumerate(self.members):
             v = self.n * (side * (0.5 if k == 0 else -0.5) * v_rel)
@@ -141,6 +143,19 @@ class Collision:
         a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
         return self._receding(a, b)
 
+    def _tilt(self):
+        """The angle [deg] between the approach direction and the mean normal (from the first
+        agglomerate to the second) of the contacts that first join them: how far the faces that
+        meet are tilted."""
+        other = set(self.members[1])
+        total = Vector3(0, 0, 0)
+        for i in self.members[0]:
+            for I in O.bodies[i].intrs():
+                j = I.id2 if I.id1 == i else I.id1
+                if j in other and I.isReal and I.geom.penetrationDepth > 0:
+                    total += I.geom.normal if I.id1 == i else -I.geom.normal
+        return math.degrees(math.acos(max(-1.0, min(1.0, self._side * total.dot(self.n) / total.norm()))))
+
     def surface_gap(self):
         """The smallest distance between the surfaces of a particle of one agglomerate and one of
         the other."""
@@ -162,6 +177,7 @@ class Collision:
         before = self.n * (-side * 0.5 * v_rel)
         j = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in m), Vector3(0, 0, 0))
         j /= j.norm()
+        self.impulse_angle = math.degrees(math.acos(max(-1.0, min(1.0, side * j.dot(self.n)))))
         return -dv.dot(j) / (self.n * (-side * v_rel)).dot(j)
 
     def _outcome(self, v_rel, side, start_time, seconds):
@@ -176,6 +192,7 @@ class Collision:
                          "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
         e_speed, deflection, e_impulse = 0.0, None, 0.0
+        self.impulse_angle = None
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
         else:
@@ -186,7 +203,8 @@ class Collision:
             e_impulse = self._impulse_restitution(dv, side, v_rel)
             deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
             broken = 1.0 - (a["mass"] + b["mass"]) / total
-        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "e_impulse": e_impulse, "stuck": stuck, "broken_mass_fraction": broken,
+        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "e_impulse": e_impulse,
+                "tilt_deg": getattr(self, "tilt", None), "impulse_angle_deg": self.impulse_angle, "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}

@@ -72,18 +72,19 @@ def markdown(s):
                    f"phiF = {w['phiF']:.4g}, kc = {w['kc']:.3g} (undetermined: {', '.join(w['undetermined']) or 'none'}); "
                    f"residual rms {w['rms_relative']:.3f}, largest {w['max_relative']:.3f} of its force scale."]
     md += ["", "## Collisions", "",
-           "e of the agglomerates (the two largest fragments' centres of mass), of two meso-particles of the fitted "
+           "e of the agglomerates (the two largest fragments' centres of mass, along the approach x, and along the "
+           "impulse they exchanged), of two meso-particles of the fitted "
            "law (YADE) and of the closed form; the mass broken off; the contact time; where the impact's kinetic "
            "energy went, over it (the centres of mass' motion, the particles' motion about them, the law's stored "
            "energies' change, its dissipation).", "",
-           "| v [m/s] | e agglomerates | e meso pair | e closed form | stuck | broken off | contact time [us] "
+           "| v [m/s] | e agglomerates | e along the impulse | e meso pair | e closed form | stuck | broken off | contact time [us] "
            "| centres of mass | internal motion | stored | dissipated |",
-           "|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for k, v in enumerate(s["speeds"]):
         en = s["energy_over_impact"][k]
         stored = sum(en.get(n, 0.0) for n in STORED)
         lost = sum(en.get(n, 0.0) for n in DISSIPATED)
-        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_impulse') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
                   f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
     vis = s.get("meso_viscous")
@@ -115,22 +116,25 @@ def _directions(s):
         return []
     md = ["", "## Other approach directions", "",
           "The same two agglomerates meeting with other faces: the second placed beside the first along a direction "
-          "drawn on the sphere (its contacts' history moved with it). e along the approach direction; (s) stuck, "
-          "(b) >= 1 % of the mass broken off; the spread is the largest minus the smallest e over the directions "
-          "where both rebound.", "",
-          "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds | largest deflection [deg] |",
-          "|---|---|" + "---|" * len(dirs) + "---|---|"]
+          "drawn on the sphere (its contacts' history moved with it). Faces tilted to the approach turn the rebound "
+          "sideways, so e is given along the impulse the two exchanged (the contact's normal; along the approach for "
+          "a head-on rebound), with the deflection of the relative velocity after from the approach direction in "
+          "brackets; (s) stuck, (b) >= 1 % of the mass broken off. The spread is the largest minus the smallest e "
+          "along the impulse over the directions where they rebound.", "",
+          "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds |",
+          "|---|---|" + "---|" * len(dirs) + "---|"]
 
-    def cell(e, stuck, broken):
-        return "–" if e is None else f"{e:.3f}" + (" (s)" if stuck else "") + (" (b)" if broken is not None and broken >= 0.01 else "")
+    def cell(e, stuck, broken, defl):
+        if e is None:
+            return "–"
+        return (f"{e:.3f}" + (f" ({defl:.0f}°)" if defl is not None else "") + (" (s)" if stuck else "")
+                + (" (b)" if broken is not None and broken >= 0.01 else ""))
     for k, v in enumerate(s["speeds"]):
-        es = [(s["e_agglomerate"][k], s["stuck"][k], s["fragmented"][k], s["deflection_deg"][k] if s.get("deflection_deg") else None)]
-        es += [(d["e"][k], d["stuck"][k], d["broken_mass_fraction"][k], d["deflection_deg"][k]) for d in dirs]
-        rebounds = [e for e, st, b, _ in es if e is not None and not st]
+        es = [(s["e_impulse"][k], s["stuck"][k], s["fragmented"][k], s["deflection_deg"][k])]
+        es += [(d["e_impulse"][k], d["stuck"][k], d["broken_mass_fraction"][k], d["deflection_deg"][k]) for d in dirs]
+        rebounds = [e for e, st, _, _ in es if e is not None and not st]
         spread = max(rebounds) - min(rebounds) if len(rebounds) > 1 else None
-        defl = [x for *_, x in es if x is not None]
-        md.append(f"| {v:g} | " + " | ".join(cell(e, st, b) for e, st, b, _ in es) + f" | {_f(spread)} | "
-                  f"{_f(max(defl) if defl else None, '{:.1f}')} |")
+        md.append(f"| {v:g} | " + " | ".join(cell(*x) for x in es) + f" | {_f(spread)} |")
     md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
     return md
 

@@ -191,7 +191,8 @@ def _directions(d, speeds):
             hits = {h["v_rel_m_s"]: h for h in json.load(f)}
         out.append({"index": k, "axis": next(iter(hits.values()))["direction"],
                     **{key: [hits[v].get(key) if v in hits else None for v in speeds]
-                       for key in ("e", "e_speed", "e_impulse", "deflection_deg", "stuck", "broken_mass_fraction", "contact_time")}})
+                       for key in ("e", "e_speed", "e_impulse", "deflection_deg", "tilt_deg", "impulse_angle_deg", "stuck",
+                                   "broken_mass_fraction", "contact_time")}})
         k += 1
     return out
 
@@ -243,7 +244,8 @@ def compare_job(a):
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory, "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
-               "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
+               "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits],
+               "tilt_deg": [h.get("tilt_deg") for h in hits], "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
                "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
                "directions": _directions(d, speeds), "adhesion": adhesion, "wall": wall,
                "d0_mm": sample.D0}
