@@ -144,24 +144,31 @@ class Pair:
         return self.rows
 
 
+WALL_MATERIALS = {"own": "particles",   # the primaries' own: a primary meets it as another primary, a12 = 2 a_i
+                  "smooth": "walls"}     # the tablet's mould: the normal law without adhesion or friction, dominant
+
+
 class Wall(Pair):
     """One agglomerate (of make.ensure's pair; the other is erased) pressed against a flat wall and
     pulled off it: the same cycles (Pair.cycles), its far cap moving at ``speed`` towards a fixed
-    wall (a YADE box of the primaries' own material, so a primary meets it as it meets another
-    primary, with a12 = 2 a_i) whose face is normal to x on the agglomerate's +x side. delta =
+    wall (a YADE box of WALL_MATERIALS[material]) whose face is normal to x on the agglomerate's
+    +x side. delta =
     R - (x_wall - x) of the centre of mass; F is the force on the wall along x (> 0 pushed away),
     the force across the contact itself."""
 
-    def __init__(self, members, radius, grip=0.5, progress=True, every=50, check=10, keep=0):
+    def __init__(self, members, radius, grip=0.5, progress=True, every=50, check=10, keep=0, material="own"):
+        if material not in WALL_MATERIALS:
+            raise ValueError(f"material = {material!r} is invalid: one of {sorted(WALL_MATERIALS)}")
         for k, m in enumerate(members):
             if k != keep:
                 for i in m:
                     O.bodies.erase(i)
         self.members, self.radii = [list(members[keep])], [radius]
         c = make.centre_of_mass(self.members[0])[0]
-        mat = [m for m in O.materials if m.label == "particles"]
+        label = WALL_MATERIALS[material]
+        mat = [m for m in O.materials if m.label == label]
         if len(mat) != 1:
-            raise RuntimeError(f"the scene holds {len(mat)} materials labelled 'particles', not one: not make.ensure's")
+            raise RuntimeError(f"the scene holds {len(mat)} materials labelled {label!r}, not one: not make.ensure's")
         half = Vector3(0.5 * sample.D0, 2.0 * radius, 2.0 * radius)
         self.wall = O.bodies.append(_utils.box(center=c + Vector3(2.0 * radius + half[0], 0, 0), extents=half,
                                                fixed=True, material=mat[0]))

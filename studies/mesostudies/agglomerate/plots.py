@@ -37,7 +37,7 @@ def cycles(runs, law, path, d0, force_scale, touch):
     plt.close(fig)
 
 
-def wall_cycles(c, path, d0, force_scale):
+def wall_cycles(c, path, d0, force_scale, title):
     """The agglomerate against a wall: its cycle runs (c['runs'], slowest first, fitted), the law
     fitted to them and what the pair's fit predicts (c['predicted']: name -> forces)."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
@@ -55,7 +55,7 @@ def wall_cycles(c, path, d0, force_scale):
     ax.set_xlim(-0.3, max(x) + 0.03)
     ax.set_xlabel("(delta - delta_touch)/d0, beyond the first touch")
     ax.set_ylabel("F/(kp d0)")
-    ax.set_title("one agglomerate against a flat wall", fontsize=9)
+    ax.set_title(title, fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
     outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")

@@ -106,7 +106,9 @@ def markdown(s):
                 k = max(rb, key=lambda k: abs(s["e_agglomerate"][k] - vis["e_meso"][k]))
                 md += ["", f"With gammaN fitted, the largest difference over the rebounds without fragmentation: "
                            f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
-    md += _directions(s) + _adhesion(s) + _wall(s)
+    md += _directions(s) + _adhesion(s)
+    for w in (s.get("walls") or {}).values():
+        md += _wall(w)
     return "\n".join(md) + "\n"
 
 
@@ -160,13 +162,14 @@ def _adhesion(s):
     return md
 
 
-def _wall(s):
-    w = s.get("wall")
-    if not w:
-        return []
-    md = ["", "## One agglomerate against a flat wall", "",
-          "Agglomerate 0 pressed by its far cap against a fixed wall of the primaries' own material, force read on "
-          "the wall; delta = R - (x_wall - x) of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
+WALLS = {"own": "the primaries' own material (a primary meets it as another primary, a12 = 2 a_i)",
+         "smooth": "the tablet's smooth mould (the primaries' normal law without adhesion or friction)"}
+
+
+def _wall(w):
+    md = ["", f"## One agglomerate against a flat wall: {w['material']}", "",
+          f"Agglomerate 0 pressed by its far cap against a fixed wall of {WALLS.get(w['material'], w['material'])}, "
+          "force read on the wall; delta = R - (x_wall - x) of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
     md += ["", f"The law fitted to {w['fitted_run']} (a12 = 2 R = {w['a12_m']:.4g} m, the law's sphere-wall value):", ""]
     md += _fit_table(w["fit"])
     md += ["", f"Against the pair's fit: k1(wall)/k1(pair) = {w['k1_over_pair']:.3f} (two agglomerates in series "

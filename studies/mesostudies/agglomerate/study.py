@@ -43,6 +43,8 @@ def _parser():
     p.add_argument("--factors", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
                    help=f"cycles: the cap speed's divisors (default 1,{SLOWER}; --quick: 1), one run each; "
                         "separate jobs may run them side by side")
+    p.add_argument("--wall-material", choices=sorted(drive.WALL_MATERIALS), default="own",
+                   help="wall: the primaries' own material (default) or the tablet's smooth mould (no adhesion, no friction)")
     p.add_argument("--direction", type=int, default=0,
                    help="collide: the approach direction's index in make.directions (0: x, as carved; "
                         "k > 0: drawn on the sphere, seed DIRECTION_SEED)")
@@ -90,9 +92,9 @@ def cycles(a, wall=False):
         print(f"{'wall ' if wall else ''}cycles at {speed * 1e3:g} m/s per cap", flush=True)
         t0, it0 = time.time(), O.iter
         radii = [g["radius"] for g in info["agglomerates"]]
-        pair = drive.Wall(info["members"], radii[0]) if wall else drive.Pair(info["members"], radii)
+        pair = drive.Wall(info["members"], radii[0], material=a.wall_material) if wall else drive.Pair(info["members"], radii)
         rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed, final=factor == 1)  # slower runs: the rate check
-        name = f"{'wall-' if wall else ''}cycles-v{speed * 1e3:g}"
+        name = f"{_wall_prefix(a.wall_material) if wall else ''}cycles-v{speed * 1e3:g}"
         outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
                              "iter,delta_mm,F\n" + "".join(f"{r[0]},{r[1]!r},{r[2]!r}\n" for r in rows))
         out[name] = {"speed_per_cap_m_s": speed * 1e3, "touch_delta_mm": pair.touch, "events": pair.events,
@@ -100,9 +102,13 @@ def cycles(a, wall=False):
                      "steps": O.iter - it0, "wall_clock_s": time.time() - t0, "dt": O.dt,
                      "units": "delta mm, F mg mm/us^2 (1e3 N)"}
         if wall:
-            out[name]["against"] = "a flat wall of the primaries' material (agglomerate 0; a12 = 2 R)"
+            out[name]["against"] = f"a flat wall, material {a.wall_material!r} ({drive.WALL_MATERIALS[a.wall_material]}), agglomerate 0"
         _write(os.path.join(_dir(a), name + ".json"), out[name])
     return out
+
+
+def _wall_prefix(material):
+    return "wall-" if material == "own" else f"{material}-wall-"
 
 
 def _cycle_runs(d, prefix="cycles-v"):
@@ -155,10 +161,11 @@ def _cycles_summary(runs, measures):
             for n in runs}
 
 
-def _wall(d, info, params, touch_pair):
-    """The wall cycles (if run): the law fitted to the slowest with the wall's a12, and what the
-    pair's fit predicts for them (compare.wall_predictions). Returns (summary, curves) or (None, None)."""
-    runs = _cycle_runs(d, "wall-cycles-v")
+def _wall(d, info, params, touch_pair, material):
+    """The cycles against a wall of ``material`` (if run): the law fitted to the slowest with the
+    wall's a12, and what the pair's fit predicts for them (compare.wall_predictions). Returns
+    (summary, curves) or (None, None)."""
+    runs = _cycle_runs(d, _wall_prefix(material) + "cycles-v")
     if not runs:
         return None, None
     names = list(runs)
@@ -168,7 +175,7 @@ def _wall(d, info, params, touch_pair):
     touch = runs[fitted_run]["touch_delta_mm"]
     predicted = compare.wall_predictions(params, rows[fitted_run], info, touch_pair, touch)
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
-    summary = {"fitted_run": fitted_run, "fit": fitted.to_json(), "a12_m": compare.wall_a12(info),
+    summary = {"material": material, "fitted_run": fitted_run, "fit": fitted.to_json(), "a12_m": compare.wall_a12(info),
                "k1_over_pair": fitted.params["k1"] / params["k1"],
                "law_start_beyond_touch_d0": (fitted.params["shift"] / compare.MM - touch) / sample.D0,
                "pair_law_start_beyond_touch_d0": (params["shift"] / compare.MM - touch_pair) / sample.D0,
@@ -236,7 +243,7 @@ def compare_job(a):
             if p is not None and p < 0 else None
         if c:
             adhesion.append(dict(c, after_d0=amp))
-    wall, wall_curves = _wall(d, info, params, runs[fitted_run]["touch_delta_mm"])
+    walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m) for m in drive.WALL_MATERIALS}
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
                "cycles": _cycles_summary(runs, measures),
                "rate_check": compare.rate_check(measures),
@@ -247,7 +254,7 @@ def compare_job(a):
                "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits],
                "tilt_deg": [h.get("tilt_deg") for h in hits], "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
                "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
-               "directions": _directions(d, speeds), "adhesion": adhesion, "wall": wall,
+               "directions": _directions(d, speeds), "adhesion": adhesion, "walls": {m: w[0] for m, w in walls.items() if w[0]},
                "d0_mm": sample.D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     outputs.write_atomic(os.path.join(d, "summary.md"), report.markdown(summary))
@@ -256,8 +263,10 @@ def compare_job(a):
     plots.cycles({n: rows[n] for n in [fitted_run] + [m for m in names if m != fitted_run]},
                  compare.law_curve(params, rows[fitted_run], a12), os.path.join(d, "cycles.png"),
                  sample.D0, force_scale, runs[fitted_run]["touch_delta_mm"])
-    if wall_curves:
-        plots.wall_cycles(wall_curves, os.path.join(d, "wall-cycles.png"), sample.D0, force_scale)
+    for m, (w, curves) in walls.items():
+        if curves:
+            plots.wall_cycles(curves, os.path.join(d, _wall_prefix(m) + "cycles.png"), sample.D0, force_scale,
+                              f"one agglomerate against a flat wall, material '{m}'")
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
                       os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None,
                       directions=summary["directions"])
