@@ -150,11 +150,13 @@ def fit_viscosity(params, info, speed, e_target, tol=1e-4):
     return mid, e
 
 
-def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05)):
+def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05), near=0.005):
     """Per cycle of a run (its events): the force at each loaded turn, the most tensile force of
-    each unloading, and the mean force of each unloading over delta - delta_touch in ``band`` [d0]
-    (the tension's plateau; the most tensile value of a ringing signal is a spike) [study units]."""
-    turns, pulls, plateaus = [], [], []
+    each unloading, the mean force of each unloading over delta - delta_touch in ``band`` [d0]
+    (the tension's plateau; the most tensile value of a ringing signal is a spike), and the mean
+    force of each loading within ``near`` d0 of the first touch's delta (0 for a contact that
+    starts where it first did; a permanent change of shape moves the start) [study units]."""
+    turns, pulls, plateaus, at_touch = [], [], [], []
     touch = next(e[2] for e in events if e[0] == "touch")
     its = [e[1] for e in events]
     for k, e in enumerate(events):
@@ -165,7 +167,10 @@ def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05)):
             pulls.append(min((r[2] for r in stroke), default=None))
             flat = [r[2] for r in stroke if band[0] <= (r[1] - touch) / d0 <= band[1]]
             plateaus.append(sum(flat) / len(flat) if flat else None)
-    return {"turn_forces": turns, "pull_offs": pulls, "tension_plateaus": plateaus}
+            loading = [r for r in rows if its[k - 1] <= r[0] <= e[1]]
+            there = [r[2] for r in loading if abs(r[1] - touch) <= near * d0]
+            at_touch.append(sum(there) / len(there) if there else None)
+    return {"turn_forces": turns, "pull_offs": pulls, "tension_plateaus": plateaus, "loading_at_touch": at_touch}
 
 
 def rate_check(measures, keys=("turn_forces", "tension_plateaus")):

@@ -23,8 +23,8 @@ def _f(x, fmt="{:.3g}"):
 def _cycles(cycles, rate_check):
     md = ["| run | cap speed [m/s] | amplitudes beyond the touch [d0] | unloaded to [d0 below the touch] "
           "| force at each loaded turn, F/(kp d0) | most tensile force of each unloading | mean tension 0.05 - 0.2 d0 "
-          "below the touch, each unloading |",
-          "|---|---|---|---|---|---|---|"]
+          "below the touch, each unloading | mean force of each loading at the first touch's delta (+- 0.005 d0) |",
+          "|---|---|---|---|---|---|---|---|"]
     scale = KP_D0 / STUDY_FORCE  # kp d0 in the study's force unit
     for name, c in cycles.items():
         md.append(f"| {name} | {c['speed_per_cap_m_s']:g} | " + ", ".join(f"{a:g}" for a in c.get("amplitudes_d0", []))
@@ -32,7 +32,7 @@ def _cycles(cycles, rate_check):
                   + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
                   + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"])
                   + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}") for x in c.get("tension_plateaus", []))
-                  + " |")
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:+.4f}") for x in c.get("loading_at_touch", [])) + " |")
     for name, r in rate_check.items():
         md.append("")
         md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
