@@ -172,6 +172,8 @@ def _wall(w):
           "force read on the wall; delta = R - (x_wall - x) of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
     md += ["", f"The law fitted to {w['fitted_run']} (a12 = 2 R = {w['a12_m']:.4g} m, the law's sphere-wall value):", ""]
     md += _fit_table(w["fit"])
+    md += ["", "The force at each loaded turn over the pair's at the same amplitude (slowest runs): "
+           + ", ".join(f"{r:.2f} at {a} d0" for a, r in w.get("turn_force_over_pair", {}).items()) + "."]
     md += ["", f"Against the pair's fit: k1(wall)/k1(pair) = {w['k1_over_pair']:.3f} (two agglomerates in series "
                f"against one: 2 for linear springs, 2^1.5 = 2.83 for Hertz contacts). The fitted law's contact starts "
                f"{w['law_start_beyond_touch_d0']:+.4f} d0 beyond the first touch (the pair's: "

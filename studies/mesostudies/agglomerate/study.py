@@ -161,10 +161,10 @@ def _cycles_summary(runs, measures):
             for n in runs}
 
 
-def _wall(d, info, params, touch_pair, material):
+def _wall(d, info, params, touch_pair, material, pair_turns):
     """The cycles against a wall of ``material`` (if run): the law fitted to the slowest with the
     wall's a12, and what the pair's fit predicts for them (compare.wall_predictions). Returns
-    (summary, curves) or (None, None)."""
+    (summary, curves) or (None, None). pair_turns: {amplitude: the pair's force there}, slowest run."""
     runs = _cycle_runs(d, _wall_prefix(material) + "cycles-v")
     if not runs:
         return None, None
@@ -182,6 +182,9 @@ def _wall(d, info, params, touch_pair, material):
                "predictions": {k: dict(zip(("rms_relative", "max_relative"), compare.misfit(v, rows[fitted_run])))
                                for k, v in predicted.items()},
                "cycles": _cycles_summary(runs, measures), "rate_check": compare.rate_check(measures)}
+    own = summary["cycles"][fitted_run]
+    summary["turn_force_over_pair"] = {f"{a:g}": f / pair_turns[a] for a, f in zip(own["amplitudes_d0"], own["turn_forces"])
+                                       if a in pair_turns}
     curves = {"runs": rows, "fit": compare.law_curve(fitted.params, rows[fitted_run], compare.wall_a12(info)),
               "predicted": predicted, "touch": touch}
     print(fitted.report(), flush=True)
@@ -243,7 +246,9 @@ def compare_job(a):
             if p is not None and p < 0 else None
         if c:
             adhesion.append(dict(c, after_d0=amp))
-    walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m) for m in drive.WALL_MATERIALS}
+    pair_cycles = _cycles_summary(runs, measures)[fitted_run]
+    pair_turns = dict(zip(pair_cycles["amplitudes_d0"], pair_cycles["turn_forces"]))
+    walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m, pair_turns) for m in drive.WALL_MATERIALS}
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
                "cycles": _cycles_summary(runs, measures),
                "rate_check": compare.rate_check(measures),
