@@ -73,6 +73,14 @@ def misfit(forces, rows):
     return math.sqrt(sum(x * x for x in d) / len(d)), max(abs(x) for x in d)
 
 
+def theory_overlap(params, info, speeds):
+    """The closed form's largest overlap [d0 of 0.01 mm] of the fitted law's pair at each relative
+    speed [mm/us]: how deep a collision presses, against the cycles' amplitudes."""
+    a12, m_r = geometry(info)[:2]
+    return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).delta_max
+            / (0.01 * MM) for v in speeds]
+
+
 def theory_e(params, info, speeds):
     """The closed form's e at each relative speed [mm/us] (no viscosity, no adhesion beyond kc)."""
     a12, m_r = geometry(info)[:2]

@@ -155,10 +155,12 @@ def _adhesion(s):
     for a in ad:
         md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | {a['tail_m'] / (D0_MM * 1e-3):.3f} | "
                   f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} |")
-    md += ["", "| v [m/s] | e agglomerates | " + " | ".join(f"e closed form, fa after {a['after_d0']:g} d0" for a in ad) + " |",
-           "|---|---|" + "---|" * len(ad)]
+    md += ["", "| v [m/s] | e agglomerates | fitted law's largest overlap [d0] | "
+           + " | ".join(f"e closed form, fa after {a['after_d0']:g} d0" for a in ad) + " |",
+           "|---|---|---|" + "---|" * len(ad)]
     for k, v in enumerate(s["speeds"]):
-        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | " + " | ".join(f"{a['e_theory'][k]:.3f}" for a in ad) + " |")
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('overlap_theory_d0') or [None] * len(s['speeds']))[k], '{:.3g}')} | "
+                  + " | ".join(f"{a['e_theory'][k]:.3f}" for a in ad) + " |")
     return md
 
 
