@@ -6,8 +6,9 @@ agglomerate beside the first along it, make.place_along, so that other faces mee
 surface lies ``gap`` d0 from the first's (make.move_to_gap), and each is given half the relative
 speed towards the other, every particle the same velocity and no spin. There is no background drag: a collision's losses are the contacts'
 own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
-``quiet`` of the touch's duration so far and their surfaces move apart (head-on, or sliding past
-each other where the faces that meet are tilted to the approach: free flight either way), or when the two largest
+``quiet`` of the touch's duration so far and the smallest gap between their surfaces has grown
+over PARTING checks (head-on, or sliding past each other where the faces that meet are tilted to
+the approach), or when the two largest
 fragments, one from each agglomerate, are separate clusters moving apart (particles they exchanged
 may still join them), or after ``max_time`` (default STUCK_AFTER primary contact times; then the
 agglomerates are read as stuck together if one cluster holds most of both).
@@ -16,9 +17,10 @@ Read at the end: the fragments (connected clusters through contacts in overlap);
 largest, each named by the agglomerate most of its mass comes from; e = -(relative velocity of
 their centres of mass along the approach direction after)/(before), 0 when one fragment holds most of both
 (e_speed: the relative speed after over before; the deflection: the angle of the relative
-velocity after to the approach direction, which the surfaces' tilt to it turns sideways;
-e_impulse: e along the impulse the agglomerates exchanged, the normal of a tilted contact, and
-that impulse's angle to the approach; the tilt: the angle of the first contacts' mean normal to it); the mass
+velocity after to the approach direction, which faces tilted to it turn sideways; e_normal: e
+along the impulse of the contacts' normal forces, the mean normal of the rough, tilted contact,
+and the tilt, that normal's angle to the approach; e_impulse: e along the whole impulse, normal
+and frictional, and the frictional impulse over the normal one); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
 total; the contact time, from the first to the last step a contact joined the two agglomerates.
 """
@@ -36,6 +38,7 @@ from mesostudies.tablet.uniaxial import _before_newton
 from . import make
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
+PARTING = 4  # checks over which the surface gap must grow before a run ends (the surfaces' vibration is noise)
 STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact time) after which one cluster is stuck
 
 
@@ -49,6 +52,8 @@ class Collision:
         self.owner = {i: k for k, m in enumerate(self.members) for i in m}
         self.every = every
         self.first = self.last = None
+        self._second = set(self.members[1])
+        self.normal_impulse = Vector3(0, 0, 0)
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
         _before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
@@ -59,11 +64,24 @@ class Collision:
     def joined(self):
         return make.contacts_between(*self.members) > 0
 
+    def _normal_force(self):
+        """(contacts in overlap joining the two, the sum of their normal forces on the second
+        agglomerate's particles)."""
+        count, f = 0, Vector3(0, 0, 0)
+        for i in self.members[0]:
+            for I in O.bodies[i].intrs():
+                j = I.id2 if I.id1 == i else I.id1
+                if j in self._second and I.isReal and I.geom.penetrationDepth > 0:
+                    count += 1
+                    f += I.phys.normalForce if I.id2 == j else -I.phys.normalForce  # Law2: +normalForce acts on id2
+        return count, f
+
     def _watch(self):
-        if self.joined():
+        count, f = self._normal_force()
+        self.normal_impulse += f * (self.every * O.dt)  # the normal forces' impulse, sampled every ``every`` steps
+        if count:
             if self.first is None:
                 self.first = O.time
-                self.tilt = self._tilt()
             self.last = O.time
         v = [make.velocity(m).dot(self.n) for m in self.members]
         self.rows.append((O.iter, O.time, self.delta(), v[0], v[1]))
@@ -88,17 +106,16 @@ class Collision:
         approach = min(gap * d0, v_rel * APPROACH) / v_rel
         max_time = max_time if max_time is not None else approach + STUCK_AFTER * self._t_scale()
         chunk = max(500, int(0.25 * approach / O.dt)) // self.every * self.every
-        state, gap_before = "approach", None
+        state, gaps = "approach", []
         while O.time - start_time < max_time:
             O.run(chunk, True)
             if self.first is not None:
                 touch = self.last - self.first
                 apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
                 state = "apart" if apart else "joined"
-                gap_now = self.surface_gap() if apart else None
-                if apart and gap_before is not None and gap_now > gap_before:
-                    break  # no contact for a while and the surfaces part (head-on or sliding past): free flight
-                gap_before = gap_now
+                gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
+                if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])):
+                    break  # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
                 if O.time - self.first > 5 * chunk * O.dt and self._parted(side):
                     state = "parted"  # the two largest fragments, one from each, separate; exchanged particles still join them
                     break
@@ -143,19 +160,6 @@ class Collision:
         a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
         return self._receding(a, b)
 
-    def _tilt(self):
-        """The angle [deg] between the approach direction and the mean normal (from the first
-        agglomerate to the second) of the contacts that first join them: how far the faces that
-        meet are tilted."""
-        other = set(self.members[1])
-        total = Vector3(0, 0, 0)
-        for i in self.members[0]:
-            for I in O.bodies[i].intrs():
-                j = I.id2 if I.id1 == i else I.id1
-                if j in other and I.isReal and I.geom.penetrationDepth > 0:
-                    total += I.geom.normal if I.id1 == i else -I.geom.normal
-        return math.degrees(math.acos(max(-1.0, min(1.0, self._side * total.dot(self.n) / total.norm()))))
-
     def surface_gap(self):
         """The smallest distance between the surfaces of a particle of one agglomerate and one of
         the other."""
@@ -172,13 +176,23 @@ class Collision:
 
     def _impulse_restitution(self, dv, side, v_rel):
         """e along the impulse the second agglomerate received (its particles' momentum change: the
-        only force on them is the first's), the normal of a tilted contact: -(dv after . j)/(dv before . j)."""
+        first's normal and frictional forces together), -(dv after . j)/(dv before . j), and the
+        impulse's angle to the approach. Also e_normal along the normal forces' impulse (their sum
+        over the contacts and the collision: the mean normal of a tilted, rough contact), its angle
+        to the approach (the tilt) and the frictional impulse over the normal one."""
         m = self.members[1]
         before = self.n * (-side * 0.5 * v_rel)
-        j = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in m), Vector3(0, 0, 0))
-        j /= j.norm()
-        self.impulse_angle = math.degrees(math.acos(max(-1.0, min(1.0, side * j.dot(self.n)))))
-        return -dv.dot(j) / (self.n * (-side * v_rel)).dot(j)
+        total = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in m), Vector3(0, 0, 0))
+        dv0 = self.n * (-side * v_rel)
+
+        def along(u):
+            u = u / u.norm()
+            return -dv.dot(u) / dv0.dot(u), math.degrees(math.acos(max(-1.0, min(1.0, side * u.dot(self.n)))))
+        e_impulse, self.impulse_angle = along(total)
+        self.e_normal, self.tilt = along(self.normal_impulse) if self.normal_impulse.norm() > 0 else (None, None)
+        nn = self.normal_impulse / self.normal_impulse.norm()
+        self.friction_ratio = (total - nn * total.dot(nn)).norm() / abs(total.dot(nn))
+        return e_impulse
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
@@ -192,7 +206,7 @@ class Collision:
                          "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
         e_speed, deflection, e_impulse = 0.0, None, 0.0
-        self.impulse_angle = None
+        self.impulse_angle = self.e_normal = self.tilt = self.friction_ratio = None
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
         else:
@@ -204,7 +218,8 @@ class Collision:
             deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
             broken = 1.0 - (a["mass"] + b["mass"]) / total
         return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "e_impulse": e_impulse,
-                "tilt_deg": getattr(self, "tilt", None), "impulse_angle_deg": self.impulse_angle, "stuck": stuck, "broken_mass_fraction": broken,
+                "e_normal": self.e_normal, "tilt_deg": self.tilt, "impulse_angle_deg": self.impulse_angle,
+                "friction_over_normal_impulse": self.friction_ratio, "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}

@@ -201,8 +201,8 @@ def _directions(d, speeds):
             hits = {h["v_rel_m_s"]: h for h in json.load(f)}
         out.append({"index": k, "axis": next(iter(hits.values()))["direction"],
                     **{key: [hits[v].get(key) if v in hits else None for v in speeds]
-                       for key in ("e", "e_speed", "e_impulse", "deflection_deg", "tilt_deg", "impulse_angle_deg", "stuck",
-                                   "broken_mass_fraction", "contact_time")}})
+                       for key in ("e", "e_speed", "e_impulse", "e_normal", "deflection_deg", "tilt_deg", "impulse_angle_deg",
+                                   "friction_over_normal_impulse", "stuck", "broken_mass_fraction", "contact_time")}})
         k += 1
     return out
 
@@ -258,7 +258,9 @@ def compare_job(a):
                "overlap_theory_d0": compare.theory_overlap(params, info, [v / 1e3 for v in speeds]), "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
                "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits],
-               "tilt_deg": [h.get("tilt_deg") for h in hits], "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
+               "e_normal": [h.get("e_normal") for h in hits], "tilt_deg": [h.get("tilt_deg") for h in hits],
+               "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits],
+               "friction_over_normal_impulse": [h.get("friction_over_normal_impulse") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
                "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
                "directions": _directions(d, speeds), "adhesion": adhesion, "walls": {m: w[0] for m, w in walls.items() if w[0]},
                "d0_mm": sample.D0}
