@@ -53,10 +53,11 @@ def wall_predictions(params, rows, info, touch_pair, touch_wall):
     predicts, with nothing refitted. Where the law's contact starts is taken from the first touch
     (the faces that meet are not equally deep inside the outer spheres): the pair's law starts
     shift - touch_pair beyond its touch, made of two faces, so the wall's starts half that beyond
-    touch_wall [mm]. a12 = 2 R. Per WALLS: a wall of the meso-particle's own material (k1, kp, kc as
-    in the pair), and a rigid one (the harmonic mixing of docs/model.md §8 with an infinitely stiff
-    wall doubles k1, kp and kc: the two agglomerates of a pair are springs in series, one against
-    a wall is one spring)."""
+    touch_wall [mm]. a12 = 2 R, the law's sphere-wall convention (springs in series exactly would
+    rather halve the pair's a12; phiF is kept). Per WALLS: a wall of the meso-particle's own material
+    (k1, kp, kc as in the pair), and a rigid one (the harmonic mixing of docs/model.md §8 with an
+    infinitely stiff wall doubles k1, kp and kc: the two agglomerates of a pair are springs in
+    series, one against a wall is one spring)."""
     start = touch_wall * MM + 0.5 * (params.get("shift", 0.0) - touch_pair * MM)
     delta = [r[1] * MM - start for r in rows]
     out = {}
@@ -75,7 +76,9 @@ def misfit(forces, rows):
 
 def theory_overlap(params, info, speeds):
     """The closed form's largest overlap [d0 of 0.01 mm] of the fitted law's pair at each relative
-    speed [mm/us]: how deep a collision presses, against the cycles' amplitudes."""
+    speed [mm/us], counted from the law's contact start (delta = shift, which the cycles place
+    (touch - shift)/d0 below their first touch): how deep a collision presses, against the
+    cycles' amplitudes."""
     a12, m_r = geometry(info)[:2]
     return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).delta_max
             / (0.01 * MM) for v in speeds]
@@ -109,6 +112,8 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
     lo, hi = 1e-6, 1e4
     if e(lo) > 0:
         stick = 0.0
+    elif e(hi) == 0:
+        stick = math.inf  # sticks at every speed tried
     else:
         for _ in range(100):
             mid = math.sqrt(lo * hi)
@@ -162,8 +167,9 @@ def cycle_measures(rows, events, d0=0.01, band=(-0.2, -0.05), near=0.005):
     """Per cycle of a run (its events): the force at each loaded turn, the most tensile force of
     each unloading, the mean force of each unloading over delta - delta_touch in ``band`` [d0]
     (the tension's plateau; the most tensile value of a ringing signal is a spike), and the mean
-    force of each loading within ``near`` d0 of the first touch's delta (0 for a contact that
-    starts where it first did; a permanent change of shape moves the start) [study units]."""
+    force of each loading within ``near`` d0 of the first touch's delta (> 0 when the contact now
+    starts before the first touch's overlap, e.g. a face drawn out or a neck still attached; a
+    face pressed in reads 0 as an unchanged one) [study units]."""
     turns, pulls, plateaus, at_touch = [], [], [], []
     touch = next(e[2] for e in events if e[0] == "touch")
     its = [e[1] for e in events]

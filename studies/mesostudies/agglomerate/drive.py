@@ -144,7 +144,7 @@ class Pair:
         return self.rows
 
 
-WALL_MATERIALS = {"own": "particles",   # the primaries' own: a primary meets it as another primary, a12 = 2 a_i
+WALL_MATERIALS = {"own": "particles",   # the primaries' own k, adhesion, friction; the law's sphere-wall a12 = 2 a_i
                   "smooth": "walls"}     # the tablet's mould: the normal law without adhesion or friction, dominant
 
 

@@ -64,13 +64,13 @@ def wall_cycles(c, path, d0, force_scale, title):
 
 def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=()):
     """e(v): agglomerates (open where mass broke off; small markers: the other approach
-    directions), meso-particle pair, closed form, and the pair with its viscosity fitted to one
+    directions' rebounds, e along their normal impulse), meso-particle pair, closed form, and the pair with its viscosity fitted to one
     collision."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for k, d in enumerate(directions):
-        pts = [(v, e) for v, e in zip(speeds, d["e"]) if e is not None]
+        pts = [(v, e) for v, e, st in zip(speeds, d["e_normal"], d["stuck"]) if e is not None and not st]
         ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", color="C3", alpha=0.6, ms=5,
-                label="agglomerates, other approach directions" if k == 0 else None)
+                label="agglomerates, other directions (e along the normal impulse)" if k == 0 else None)
     ax.plot(speeds, e_theory, "k-", lw=1, label="closed form, fitted law")
     ax.plot(speeds, e_meso, "s", mfc="none", label="two meso-particles (YADE)")
     if e_viscous is not None:

@@ -73,18 +73,18 @@ def markdown(s):
                    f"residual rms {w['rms_relative']:.3f}, largest {w['max_relative']:.3f} of its force scale."]
     md += ["", "## Collisions", "",
            "e of the agglomerates (the two largest fragments' centres of mass, along the approach x, and along the "
-           "impulse they exchanged), of two meso-particles of the fitted "
+           "impulse of the normal forces they exchanged), of two meso-particles of the fitted "
            "law (YADE) and of the closed form; the mass broken off; the contact time; where the impact's kinetic "
            "energy went, over it (the centres of mass' motion, the particles' motion about them, the law's stored "
            "energies' change, its dissipation).", "",
-           "| v [m/s] | e agglomerates | e along the impulse | e meso pair | e closed form | stuck | broken off | contact time [us] "
+           "| v [m/s] | e agglomerates | e along the normal impulse | e meso pair | e closed form | stuck | broken off | contact time [us] "
            "| centres of mass | internal motion | stored | dissipated |",
            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for k, v in enumerate(s["speeds"]):
         en = s["energy_over_impact"][k]
         stored = sum(en.get(n, 0.0) for n in STORED)
         lost = sum(en.get(n, 0.0) for n in DISSIPATED)
-        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_impulse') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_normal') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
                   f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
     vis = s.get("meso_viscous")
@@ -118,25 +118,39 @@ def _directions(s):
         return []
     md = ["", "## Other approach directions", "",
           "The same two agglomerates meeting with other faces: the second placed beside the first along a direction "
-          "drawn on the sphere (its contacts' history moved with it). Faces tilted to the approach turn the rebound "
-          "sideways, so e is given along the impulse the two exchanged (the contact's normal; along the approach for "
-          "a head-on rebound), with the deflection of the relative velocity after from the approach direction in "
-          "brackets; (s) stuck, (b) >= 1 % of the mass broken off. The spread is the largest minus the smallest e "
-          "along the impulse over the directions where they rebound.", "",
+          "drawn on the sphere (its contacts' history moved with it). The faces that meet are rough and tilted to "
+          "the approach, so the rebound turns sideways and the agglomerates spin. First table: e along the "
+          "normal forces' impulse (the rough contact's mean normal), with that normal's tilt to the approach in "
+          "brackets; (s) stuck, (b) >= 1 % of the mass broken off. The spread is the largest minus the smallest of "
+          "these e over the directions where they rebound. Second table: e along the approach, the deflection of the "
+          "relative velocity after from it, and the frictional impulse over the normal one.", "",
           "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds |",
           "|---|---|" + "---|" * len(dirs) + "---|"]
+    rows = [("x", s["e_normal"], s["tilt_deg"], s["stuck"], s["fragmented"], s["e_agglomerate"], s["deflection_deg"],
+             s["friction_over_normal_impulse"])]
+    rows += [(d["index"], d["e_normal"], d["tilt_deg"], d["stuck"], d["broken_mass_fraction"], d["e"], d["deflection_deg"],
+              d["friction_over_normal_impulse"]) for d in dirs]
 
-    def cell(e, stuck, broken, defl):
-        if e is None:
-            return "–"
-        return (f"{e:.3f}" + (f" ({defl:.0f}°)" if defl is not None else "") + (" (s)" if stuck else "")
-                + (" (b)" if broken is not None and broken >= 0.01 else ""))
+    def flags(stuck, broken):
+        return (" (s)" if stuck else "") + (" (b)" if broken is not None and broken >= 0.01 else "")
     for k, v in enumerate(s["speeds"]):
-        es = [(s["e_impulse"][k], s["stuck"][k], s["fragmented"][k], s["deflection_deg"][k])]
-        es += [(d["e_impulse"][k], d["stuck"][k], d["broken_mass_fraction"][k], d["deflection_deg"][k]) for d in dirs]
-        rebounds = [e for e, st, _, _ in es if e is not None and not st]
+        cells, rebounds = [], []
+        for _, en, tilt, stuck, broken, *_ in rows:
+            if en[k] is None and not stuck[k]:
+                cells.append("–")
+                continue
+            cells.append(("0" if stuck[k] else f"{en[k]:.3f}") + (f" ({tilt[k]:.0f}°)" if tilt[k] is not None else "")
+                         + flags(stuck[k], broken[k]))
+            if not stuck[k] and en[k] is not None:
+                rebounds.append(en[k])
         spread = max(rebounds) - min(rebounds) if len(rebounds) > 1 else None
-        md.append(f"| {v:g} | " + " | ".join(cell(*x) for x in es) + f" | {_f(spread)} |")
+        md.append(f"| {v:g} | " + " | ".join(cells) + f" | {_f(spread)} |")
+    md += ["", "| v [m/s] | " + " | ".join(f"{'x' if r[0] == 'x' else 'direction ' + str(r[0])}: e along the approach, "
+                                          "deflection, friction/normal" for r in rows) + " |",
+           "|---|" + "---|" * len(rows)]
+    for k, v in enumerate(s["speeds"]):
+        md.append(f"| {v:g} | " + " | ".join(
+            "stuck" if r[3][k] else f"{r[5][k]:.3f}, {_f(r[6][k], '{:.0f}')}°, {_f(r[7][k], '{:.2f}')}" for r in rows) + " |")
     md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
     return md
 
@@ -154,8 +168,10 @@ def _adhesion(s):
           "|---|---|---|---|---|---|"]
     for a in ad:
         md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | {a['tail_m'] / (D0_MM * 1e-3):.3f} | "
-                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} |")
-    md += ["", "| v [m/s] | e agglomerates | fitted law's largest overlap [d0] | "
+                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} |")  # inf: sticks at every speed tried
+    md += ["", "The fitted law's largest overlap in the pair's collision (closed form) is counted from its contact's "
+               "start, which lies (touch - shift)/d0 below the cycles' first touch.", "",
+           "| v [m/s] | e agglomerates | fitted law's largest overlap [d0] | "
            + " | ".join(f"e closed form, fa after {a['after_d0']:g} d0" for a in ad) + " |",
            "|---|---|---|" + "---|" * len(ad)]
     for k, v in enumerate(s["speeds"]):
@@ -164,7 +180,7 @@ def _adhesion(s):
     return md
 
 
-WALLS = {"own": "the primaries' own material (a primary meets it as another primary, a12 = 2 a_i)",
+WALLS = {"own": "the primaries' own material (their k, adhesion and friction; the law's sphere-wall a12 = 2 a_i, twice a primary pair's)",
          "smooth": "the tablet's smooth mould (the primaries' normal law without adhesion or friction)"}
 
 
