@@ -52,7 +52,7 @@ def wall_cycles(c, path, d0, force_scale, title):
     for (name, f), style in zip(c["predicted"].items(), (":", "-.")):
         ax.plot(x, [v / force_scale for v in f], style, color="C3", lw=1.0, label=f"pair's fit, {name}")
     ax.axhline(0, color="0.6", lw=0.5)
-    ax.set_xlim(-0.3, max(x) + 0.03)
+    ax.set_xlim(-0.3, max((r[1] - touch) / d0 for rows in c["runs"].values() for r in rows) + 0.03)
     ax.set_xlabel("(delta - delta_touch)/d0, beyond the first touch")
     ax.set_ylabel("F/(kp d0)")
     ax.set_title(title, fontsize=9)
