@@ -77,7 +77,7 @@ def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, d
         ax.plot(speeds, e_viscous, "^", mfc="none", color="C2", label="two meso-particles, gammaN from one collision")
     whole = [k for k, b in enumerate(broken) if b < 0.01]
     frag = [k for k, b in enumerate(broken) if b >= 0.01]
-    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates")
+    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates, along x (e along x)")
     if frag:
         ax.plot([speeds[k] for k in frag], [e_agg[k] for k in frag], "o", mfc="none", color="C3",
                 label="agglomerates, >= 1 % of the mass broken off")
@@ -85,7 +85,7 @@ def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, d
     ax.set_xlabel("relative speed [m/s]")
     ax.set_ylabel("restitution e")
     ax.set_ylim(-0.02, 1.02)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside: the points fill the axes
     ax.grid(alpha=0.3)
     outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")
     plt.close(fig)

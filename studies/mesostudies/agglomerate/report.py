@@ -123,7 +123,8 @@ def _directions(s):
           "normal forces' impulse (the rough contact's mean normal), with that normal's tilt to the approach in "
           "brackets; (s) stuck, (b) >= 1 % of the mass broken off. The spread is the largest minus the smallest of "
           "these e over the directions where they rebound. Second table: e along the approach, the deflection of the "
-          "relative velocity after from it, and the frictional impulse over the normal one.", "",
+          "relative velocity after from it, and the frictional impulse over the normal one (or the mass broken "
+          "off where they stick).", "",
           "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds |",
           "|---|---|" + "---|" * len(dirs) + "---|"]
     rows = [("x", s["e_normal"], s["tilt_deg"], s["stuck"], s["fragmented"], s["e_agglomerate"], s["deflection_deg"],
@@ -150,7 +151,8 @@ def _directions(s):
            "|---|" + "---|" * len(rows)]
     for k, v in enumerate(s["speeds"]):
         md.append(f"| {v:g} | " + " | ".join(
-            "stuck" if r[3][k] else f"{r[5][k]:.3f}, {_f(r[6][k], '{:.0f}')}°, {_f(r[7][k], '{:.2f}')}" for r in rows) + " |")
+            f"stuck, {r[4][k]:.3f} broken off" if r[3][k] else f"{r[5][k]:.3f}, {_f(r[6][k], '{:.0f}')}°, {_f(r[7][k], '{:.2f}')}"
+            for r in rows) + " |")
     md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
     return md
 
