@@ -97,8 +97,9 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
     tension plateau of cycle_measures [study units]), and the shortest tail the cycles allow, down
     to where they turned (``below`` d0 below the touch ``touch`` [mm], drive.BELOW_TOUCH) measured from the fitted
     law's own contact end (delta = shift), kca = fa/that. A longer tail only holds on harder.
-    Returns fa [N], kca [N/m], the closed form's e at ``speeds`` [mm/us] and the speed [m/s] below
-    which the pair sticks (bisection on the closed form)."""
+    Returns fa [N], kca [N/m], the closed form's e at ``speeds`` [mm/us], the speed [m/s] below
+    which the pair sticks, and the smallest fa on the same tail that sticks it at the slowest speed
+    (bisections on the closed form; fa itself if that one does not, 1e-12 fa if every fa tried does)."""
     a12, m_r = geometry(info)[:2]
     fa = -plateau * FORCE
     reach = params.get("shift", 0.0) - (touch - below * d0) * MM
@@ -119,7 +120,17 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
             mid = math.sqrt(lo * hi)
             lo, hi = (lo, mid) if e(mid) > 0 else (mid, hi)
         stick = hi
-    return {"fa_N": fa, "kca_N_m": kca, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds], "sticks_below_m_s": stick}
+    def e_with(f, v):  # fa = f on the same tail
+        return theory.pair_collision(v, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r,
+                                     fa=f, kca=f / reach, adhesion="jumpIn").e
+    slowest = min(speeds) * SPEED
+    lo_f, hi_f = fa * 1e-12, fa
+    if e_with(lo_f, slowest) > 0 and e_with(hi_f, slowest) == 0:
+        for _ in range(100):
+            mid = math.sqrt(lo_f * hi_f)
+            lo_f, hi_f = (lo_f, mid) if e_with(mid, slowest) == 0 else (mid, hi_f)
+    return {"fa_N": fa, "kca_N_m": kca, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds], "sticks_below_m_s": stick,
+            "fa_sticking_slowest_N": hi_f, "slowest_m_s": slowest}
 
 
 def meso_material(params, radius, mass, gammaN=0.0):

@@ -62,29 +62,32 @@ def wall_cycles(c, path, d0, force_scale, title):
     plt.close(fig)
 
 
-def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=()):
-    """e(v): agglomerates (open where mass broke off; small markers: the other approach
-    directions' rebounds, e along their normal impulse), meso-particle pair, closed form, and the pair with its viscosity fitted to one
-    collision."""
+def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=(), e_normal=None, stuck=None):
+    """e(v): the x pair's agglomerates (e along x; open where mass broke off), every direction's e
+    along its normal impulse (x included, small markers; a cross at 0 where they stuck), the
+    meso-particle pair, the closed form, and the pair with its viscosity fitted to one collision."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for k, d in enumerate(directions):
+    families = ([{"e_normal": e_normal, "stuck": stuck}] if e_normal is not None else []) + list(directions)
+    for k, d in enumerate(families):
         pts = [(v, e) for v, e, st in zip(speeds, d["e_normal"], d["stuck"]) if e is not None and not st]
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", color="C3", alpha=0.6, ms=5,
-                label="agglomerates, other directions (e along the normal impulse)" if k == 0 else None)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", color="C4", alpha=0.7, ms=6,
+                label="agglomerates, each direction: e along the normal impulse" if k == 0 else None)
+        sticks = [v for v, st in zip(speeds, d["stuck"]) if st]
+        ax.plot(sticks, [0.0] * len(sticks), "x", color="C4", ms=6, label="agglomerates stuck (any direction)" if k == 0 else None)
     ax.plot(speeds, e_theory, "k-", lw=1, label="closed form, fitted law")
     ax.plot(speeds, e_meso, "s", mfc="none", label="two meso-particles (YADE)")
     if e_viscous is not None:
         ax.plot(speeds, e_viscous, "^", mfc="none", color="C2", label="two meso-particles, gammaN from one collision")
     whole = [k for k, b in enumerate(broken) if b < 0.01]
     frag = [k for k, b in enumerate(broken) if b >= 0.01]
-    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates, along x (e along x)")
+    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates along x: e along x")
     if frag:
         ax.plot([speeds[k] for k in frag], [e_agg[k] for k in frag], "o", mfc="none", color="C3",
-                label="agglomerates, >= 1 % of the mass broken off")
+                label="agglomerates along x, >= 1 % of the mass broken off")
     ax.set_xscale("log")
     ax.set_xlabel("relative speed [m/s]")
     ax.set_ylabel("restitution e")
-    ax.set_ylim(-0.02, 1.02)
+    ax.set_ylim(-0.04, 1.02)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside: the points fill the axes
     ax.grid(alpha=0.3)
     outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")

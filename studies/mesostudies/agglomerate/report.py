@@ -101,11 +101,16 @@ def markdown(s):
         md += ["", f"Largest |e agglomerates - e meso pair| without fragmentation (< 1 % of the mass broken off): "
                    f"{abs(s['e_agglomerate'][k] - s['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
         if vis:
+            k = max(whole, key=lambda k: abs(s["e_agglomerate"][k] - vis["e_meso"][k]))
+            md += ["", f"With gammaN fitted, the largest difference without fragmentation: "
+                       f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s"]
             rb = [k for k in whole if not s["stuck"][k]]
             if rb:
                 k = max(rb, key=lambda k: abs(s["e_agglomerate"][k] - vis["e_meso"][k]))
-                md += ["", f"With gammaN fitted, the largest difference over the rebounds without fragmentation: "
-                           f"{abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at {s['speeds'][k]:g} m/s."]
+                md[-1] += (f"; over the rebounds: {abs(s['e_agglomerate'][k] - vis['e_meso'][k]):.3f} at "
+                           f"{s['speeds'][k]:g} m/s.")
+            else:
+                md[-1] += "."
     md += _directions(s) + _adhesion(s)
     for w in (s.get("walls") or {}).values():
         md += _wall(w)
@@ -166,11 +171,12 @@ def _adhesion(s):
           "tail the cycles allow (from the fitted law's contact end to where the unloading turned), kca = fa/tail; "
           "'jumpIn' (-fa in contact, the tail after it). The closed form's e with it, and the speed below which the "
           "meso-particle pair sticks:", "",
-          "| after loading to [d0] | fa [N] | fa/(kp d0) | tail [d0] | kca [N/m] | pair sticks below [m/s] |",
-          "|---|---|---|---|---|---|"]
+          "| after loading to [d0] | fa [N] | fa/(kp d0) | tail [d0] | kca [N/m] | pair sticks below [m/s] "
+          "| smallest fa on this tail that sticks the pair at the slowest speed [N] |",
+          "|---|---|---|---|---|---|---|"]
     for a in ad:
         md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | {a['tail_m'] / (D0_MM * 1e-3):.3f} | "
-                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} |")  # inf: sticks at every speed tried
+                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} | {_f(a.get('fa_sticking_slowest_N'), '{:.2g}')} |")  # inf: sticks at every speed tried
     md += ["", "The fitted law's largest overlap in the pair's collision (closed form) is counted from its contact's "
                "start, which lies (touch - shift)/d0 below the cycles' first touch.", "",
            "| v [m/s] | e agglomerates | fitted law's largest overlap [d0] | "

@@ -277,6 +277,6 @@ def compare_job(a):
                               f"one agglomerate against a flat wall, material '{m}'")
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
                       os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None,
-                      directions=summary["directions"])
+                      directions=summary["directions"], e_normal=summary["e_normal"], stuck=summary["stuck"])
     print(fitted.report(), flush=True)
     return summary
