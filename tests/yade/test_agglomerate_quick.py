@@ -116,6 +116,10 @@ check(abs(fit["a12"] - a12) < 1e-15 * a12, "the fit used the law's a12 = 2 R1 R2
 hits = json.load(open(os.path.join(d, "collisions.json")))
 for h in hits:
     check(h["touched"] and 0 <= h["e"] <= 1 and h["contact_time"] > 0, f"collision at {h['v_rel_m_s']} m/s: e = {h['e']:.4f}, contact time {h['contact_time']:.3g} us")
+    crow = np.loadtxt(os.path.join(d, f"collision-v{h['v_rel_m_s']:g}.csv"), delimiter=",", skiprows=1)
+    check(h["press_d0"] > 0 and abs(h["largest_normal_force"] - crow[:, 5].max()) == 0
+          and abs(h["press_d0"] - (crow[:, 2].max() - crow[crow[:, 5] > 0][0, 2]) / D0) < 1e-12,
+          f"collision at {h['v_rel_m_s']} m/s: press {h['press_d0']:.2e} d0 and largest force from its {len(crow)} rows")
 vis = summary["meso_viscous"]
 k0 = summary["speeds"].index(vis["fitted_at_m_s"])
 check(abs(vis["e_at_fit"] - summary["e_agglomerate"][k0]) < 1e-3 and vis["e_meso"][k0] == vis["e_at_fit"],

@@ -22,7 +22,10 @@ along the impulse of the contacts' normal forces, the mean normal of the rough, 
 and the tilt, that normal's angle to the approach; e_impulse: e along the whole impulse, normal
 and frictional, and the frictional impulse over the normal one); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
-total; the contact time, from the first to the last step a contact joined the two agglomerates.
+total; the contact time, from the first to the last step a contact joined the two agglomerates;
+the press, the largest meso-overlap beyond the one at the first contact [d0], and the largest
+normal force between them along the approach [study units]. ``rows``: (iter, time, delta, the
+two velocities along the approach, that normal force) every ``every`` steps.
 """
 import math
 import time
@@ -79,12 +82,13 @@ class Collision:
     def _watch(self):
         count, f = self._normal_force()
         self.normal_impulse += f * (self.every * O.dt)  # the normal forces' impulse, sampled every ``every`` steps
+        delta = self.delta()
         if count:
             if self.first is None:
-                self.first = O.time
+                self.first, self.touch_delta = O.time, delta
             self.last = O.time
         v = [make.velocity(m).dot(self.n) for m in self.members]
-        self.rows.append((O.iter, O.time, self.delta(), v[0], v[1]))
+        self.rows.append((O.iter, O.time, delta, v[0], v[1], f.dot(self.n) * self._side if count else 0.0))
 
     def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None):
         """One collision at relative speed v_rel [mm/us]; returns its outcome (a dict). The gap is
@@ -222,4 +226,6 @@ class Collision:
                 "friction_over_normal_impulse": self.friction_ratio, "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
-                "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds}
+                "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds,
+                "press_d0": (max(r[2] for r in self.rows) - self.touch_delta) / sample.D0 if self.first is not None else None,
+                "largest_normal_force": max(r[5] for r in self.rows)}

@@ -74,18 +74,21 @@ def markdown(s):
     md += ["", "## Collisions", "",
            "e of the agglomerates (the two largest fragments' centres of mass, along the approach x, and along the "
            "impulse of the normal forces they exchanged), of two meso-particles of the fitted "
-           "law (YADE) and of the closed form; the mass broken off; the contact time; where the impact's kinetic "
+           "law (YADE) and of the closed form; the mass broken off; the contact time; the press (the largest "
+           "meso-overlap beyond the one at the first contact) and the largest normal force between them; where the impact's kinetic "
            "energy went, over it (the centres of mass' motion, the particles' motion about them, the law's stored "
            "energies' change, its dissipation).", "",
            "| v [m/s] | e agglomerates | e along the normal impulse | e meso pair | e closed form | stuck | broken off | contact time [us] "
-           "| centres of mass | internal motion | stored | dissipated |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "| press [d0] | largest force F/(kp d0) | centres of mass | internal motion | stored | dissipated |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for k, v in enumerate(s["speeds"]):
         en = s["energy_over_impact"][k]
         stored = sum(en.get(n, 0.0) for n in STORED)
         lost = sum(en.get(n, 0.0) for n in DISSIPATED)
         md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_normal') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
                   f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
+                  f"{_f((s.get('press_d0') or [None] * len(s['speeds']))[k], '{:.4f}')} | "
+                  f"{_f(None if not s.get('largest_normal_force') or s['largest_normal_force'][k] is None else s['largest_normal_force'][k] / (KP_D0 / STUDY_FORCE), '{:.4f}')} | "
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
     vis = s.get("meso_viscous")
     if vis:

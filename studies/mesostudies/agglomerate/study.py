@@ -135,6 +135,8 @@ def collisions(a):
         c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=axis)
         print(f"collision at {v:g} m/s{f', direction {a.direction} {axis}' if a.direction else ''}", flush=True)
         r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision{tag}-v{v:g}.png"))
+        outputs.write_atomic(os.path.join(_dir(a), f"collision{tag}-v{v:g}.csv"),
+                             "iter,time_us,delta_mm,v0_mm_us,v1_mm_us,F_normal\n" + "".join(",".join(repr(x) for x in row) + "\n" for row in c.rows))
         print(f"  e = {r['e']:.4f}  stuck {r['stuck']}  broken off {r['broken_mass_fraction']:.3f}  "
               f"contact time {r['contact_time']}", flush=True)
         out.append(dict(r, v_rel_m_s=v, direction=list(axis)))
@@ -258,6 +260,7 @@ def compare_job(a):
                "overlap_theory_d0": compare.theory_overlap(params, info, [v / 1e3 for v in speeds]), "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
                "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits],
+               "press_d0": [h.get("press_d0") for h in hits], "largest_normal_force": [h.get("largest_normal_force") for h in hits],
                "e_normal": [h.get("e_normal") for h in hits], "tilt_deg": [h.get("tilt_deg") for h in hits],
                "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits],
                "friction_over_normal_impulse": [h.get("friction_over_normal_impulse") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
