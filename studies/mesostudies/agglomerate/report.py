@@ -87,8 +87,8 @@ def markdown(s):
         lost = sum(en.get(n, 0.0) for n in DISSIPATED)
         md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_normal') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
                   f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
-                  f"{_f((s.get('press_d0') or [None] * len(s['speeds']))[k], '{:.4f}')} | "
-                  f"{_f(None if not s.get('largest_normal_force') or s['largest_normal_force'][k] is None else s['largest_normal_force'][k] / (KP_D0 / STUDY_FORCE), '{:.4f}')} | "
+                  f"{_f((s.get('press_d0') or [None] * len(s['speeds']))[k], '{:.3g}')} | "
+                  f"{_f(None if not s.get('largest_normal_force') or s['largest_normal_force'][k] is None else s['largest_normal_force'][k] / (KP_D0 / STUDY_FORCE), '{:.3g}')} | "
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
     vis = s.get("meso_viscous")
     if vis:
