@@ -55,7 +55,6 @@ class Collision:
         self.owner = {i: k for k, m in enumerate(self.members) for i in m}
         self.every = every
         self.first = self.last = None
-        self._second = set(self.members[1])
         self.normal_impulse = Vector3(0, 0, 0)
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
         _before_newton([_loop.runner(self._watch, every, "agg_watch")])
@@ -71,12 +70,9 @@ class Collision:
         """(contacts in overlap joining the two, the sum of their normal forces on the second
         agglomerate's particles)."""
         count, f = 0, Vector3(0, 0, 0)
-        for i in self.members[0]:
-            for I in O.bodies[i].intrs():
-                j = I.id2 if I.id1 == i else I.id1
-                if j in self._second and I.isReal and I.geom.penetrationDepth > 0:
-                    count += 1
-                    f += I.phys.normalForce if I.id2 == j else -I.phys.normalForce  # Law2: +normalForce acts on id2
+        for I, on_id2 in make.joining(*self.members):
+            count += 1
+            f += I.phys.normalForce if on_id2 else -I.phys.normalForce  # Law2: +normalForce acts on id2
         return count, f
 
     def _watch(self):
@@ -120,7 +116,7 @@ class Collision:
                 gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
                 if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])):
                     break  # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
-                if O.time - self.first > 5 * chunk * O.dt and self._parted(side):
+                if O.time - self.first > 5 * chunk * O.dt and self._parted():
                     state = "parted"  # the two largest fragments, one from each, separate; exchanged particles still join them
                     break
             if progress:
@@ -151,7 +147,7 @@ class Collision:
         m = min(O.bodies[i].state.mass for m in self.members for i in m)
         return 3.1416 * (0.5 * m / sample.KP) ** 0.5
 
-    def _parted(self, side):
+    def _parted(self):
         """The two largest fragments are separate clusters, each holding at least half of one
         agglomerate's particles (one from each), moving apart."""
         parts = make._clusters([i for m in self.members for i in m])[:2]
@@ -178,25 +174,25 @@ class Collision:
         oblique rebound, surfaces tilted to the approach, ends too)."""
         return (make.velocity(b) - make.velocity(a)).dot(make.centre_of_mass(b)[0] - make.centre_of_mass(a)[0]) > 0
 
-    def _impulse_restitution(self, dv, side, v_rel):
+    def _impulse_measures(self, dv, side, v_rel):
         """e along the impulse the second agglomerate received (its particles' momentum change: the
-        first's normal and frictional forces together), -(dv after . j)/(dv before . j), and the
-        impulse's angle to the approach. Also e_normal along the normal forces' impulse (their sum
-        over the contacts and the collision: the mean normal of a tilted, rough contact), its angle
-        to the approach (the tilt) and the frictional impulse over the normal one."""
-        m = self.members[1]
+        first's normal and frictional forces together), -(dv after . j)/(dv before . j), and that
+        impulse's angle to the approach; e_normal along the normal forces' impulse (their sum over
+        the contacts and the collision: the mean normal of a tilted, rough contact), its angle to the
+        approach (the tilt), and the frictional impulse over the normal one."""
         before = self.n * (-side * 0.5 * v_rel)
-        total = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in m), Vector3(0, 0, 0))
+        total = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in self.members[1]), Vector3(0, 0, 0))
         dv0 = self.n * (-side * v_rel)
 
         def along(u):
             u = u / u.norm()
             return -dv.dot(u) / dv0.dot(u), math.degrees(math.acos(max(-1.0, min(1.0, side * u.dot(self.n)))))
-        e_impulse, self.impulse_angle = along(total)
-        self.e_normal, self.tilt = along(self.normal_impulse) if self.normal_impulse.norm() > 0 else (None, None)
-        nn = self.normal_impulse / self.normal_impulse.norm()
-        self.friction_ratio = (total - nn * total.dot(nn)).norm() / abs(total.dot(nn))
-        return e_impulse
+        out = dict(zip(("e_impulse", "impulse_angle_deg"), along(total)))
+        if self.normal_impulse.norm() > 0:
+            nn = self.normal_impulse / self.normal_impulse.norm()
+            out.update(zip(("e_normal", "tilt_deg"), along(self.normal_impulse)))
+            out["friction_over_normal_impulse"] = (total - nn * total.dot(nn)).norm() / abs(total.dot(nn))
+        return out
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
@@ -209,8 +205,9 @@ class Collision:
             frag.append({"ids": p, "mass": sum(share), "from": 0 if share[0] >= share[1] else 1,
                          "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
-        e_speed, deflection, e_impulse = 0.0, None, 0.0
-        self.impulse_angle = self.e_normal = self.tilt = self.friction_ratio = None
+        e_speed, deflection = 0.0, None
+        impulse = dict.fromkeys(("e_impulse", "impulse_angle_deg", "e_normal", "tilt_deg", "friction_over_normal_impulse"))
+        impulse["e_impulse"] = 0.0
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
         else:
@@ -218,12 +215,11 @@ class Collision:
             dv = b["v"] - a["v"]
             e = side * dv.dot(self.n) / v_rel
             e_speed = dv.norm() / v_rel  # with what the surfaces' tilt turned sideways
-            e_impulse = self._impulse_restitution(dv, side, v_rel)
+            impulse.update(self._impulse_measures(dv, side, v_rel))
             deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
             broken = 1.0 - (a["mass"] + b["mass"]) / total
-        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, "e_impulse": e_impulse,
-                "e_normal": self.e_normal, "tilt_deg": self.tilt, "impulse_angle_deg": self.impulse_angle,
-                "friction_over_normal_impulse": self.friction_ratio, "stuck": stuck, "broken_mass_fraction": broken,
+        return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, **impulse,
+                "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds,

@@ -74,21 +74,33 @@ def misfit(forces, rows):
     return math.sqrt(sum(x * x for x in d) / len(d)), max(abs(x) for x in d)
 
 
+def _closed_form(params, info, v, **adhesion):
+    """theory.pair_collision of the fitted law's pair at relative speed v [m/s]."""
+    a12, m_r = geometry(info)[:2]
+    return theory.pair_collision(v, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r, **adhesion)
+
+
 def theory_overlap(params, info, speeds):
     """The closed form's largest overlap [d0 of 0.01 mm] of the fitted law's pair at each relative
     speed [mm/us], counted from the law's contact start (delta = shift, which the cycles place
     (touch - shift)/d0 below their first touch): how deep a collision presses, against the
     cycles' amplitudes."""
-    a12, m_r = geometry(info)[:2]
-    return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).delta_max
-            / (0.01 * MM) for v in speeds]
+    return [_closed_form(params, info, v * SPEED).delta_max / (0.01 * MM) for v in speeds]
 
 
 def theory_e(params, info, speeds):
     """The closed form's e at each relative speed [mm/us] (no viscosity, no adhesion beyond kc)."""
-    a12, m_r = geometry(info)[:2]
-    return [theory.pair_collision(v * SPEED, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r).e
-            for v in speeds]
+    return [_closed_form(params, info, v * SPEED).e for v in speeds]
+
+
+def _threshold(lo, hi, sticks):
+    """Where ``sticks`` changes between lo and hi (each on its own side): geometric bisection, 100
+    halvings; returns the upper end."""
+    at_lo = sticks(lo)
+    for _ in range(100):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if sticks(mid) == at_lo else (lo, mid)
+    return hi
 
 
 def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.2):
@@ -98,39 +110,23 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
     to where they turned (``below`` d0 below the touch ``touch`` [mm], drive.BELOW_TOUCH) measured from the fitted
     law's own contact end (delta = shift), kca = fa/that. A longer tail only holds on harder.
     Returns fa [N], kca [N/m], the closed form's e at ``speeds`` [mm/us], the speed [m/s] below
-    which the pair sticks, and the smallest fa on the same tail that sticks it at the slowest speed
-    (bisections on the closed form; fa itself if that one does not, 1e-12 fa if every fa tried does)."""
-    a12, m_r = geometry(info)[:2]
+    which the pair sticks (0 if it rebounds at 1e-6 m/s, inf if it sticks at 1e4 m/s), and the
+    smallest fa on the same tail that sticks it at the slowest speed (fa itself if that one does
+    not, 1e-12 fa if every fa tried does)."""
     fa = -plateau * FORCE
     reach = params.get("shift", 0.0) - (touch - below * d0) * MM
     if not (fa > 0 and reach > 0):
         return None
-    kca = fa / reach
 
-    def e(v):  # v in m/s
-        return theory.pair_collision(v, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r,
-                                     fa=fa, kca=kca, adhesion="jumpIn").e
+    def e(v, f=fa):  # v in m/s, fa = f on the same tail
+        return _closed_form(params, info, v, fa=f, kca=f / reach, adhesion="jumpIn").e
     lo, hi = 1e-6, 1e4
-    if e(lo) > 0:
-        stick = 0.0
-    elif e(hi) == 0:
-        stick = math.inf  # sticks at every speed tried
-    else:
-        for _ in range(100):
-            mid = math.sqrt(lo * hi)
-            lo, hi = (lo, mid) if e(mid) > 0 else (mid, hi)
-        stick = hi
-    def e_with(f, v):  # fa = f on the same tail
-        return theory.pair_collision(v, params["k1"], params["kp"], params["kc"], params["phiF"], a12, m_r,
-                                     fa=f, kca=f / reach, adhesion="jumpIn").e
+    stick = 0.0 if e(lo) > 0 else math.inf if e(hi) == 0 else _threshold(lo, hi, lambda v: e(v) == 0)
     slowest = min(speeds) * SPEED
     lo_f, hi_f = fa * 1e-12, fa
-    if e_with(lo_f, slowest) > 0 and e_with(hi_f, slowest) == 0:
-        for _ in range(100):
-            mid = math.sqrt(lo_f * hi_f)
-            lo_f, hi_f = (lo_f, mid) if e_with(mid, slowest) == 0 else (mid, hi_f)
-    return {"fa_N": fa, "kca_N_m": kca, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds], "sticks_below_m_s": stick,
-            "fa_sticking_slowest_N": hi_f, "slowest_m_s": slowest}
+    least = _threshold(lo_f, hi_f, lambda f: e(slowest, f) == 0) if e(slowest, lo_f) > 0 and e(slowest, hi_f) == 0 else hi_f
+    return {"fa_N": fa, "kca_N_m": fa / reach, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds],
+            "sticks_below_m_s": stick, "fa_sticking_slowest_N": least, "slowest_m_s": slowest}
 
 
 def meso_material(params, radius, mass, gammaN=0.0):

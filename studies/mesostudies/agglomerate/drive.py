@@ -180,10 +180,7 @@ class Wall(Pair):
     def set_gap(self, gap):
         """Moves the wall until its face lies ``gap`` [mm] from the agglomerate's nearest surface."""
         reach = max(O.bodies[i].state.pos[0] + O.bodies[i].shape.radius for i in self.members[0])
-        O.bodies[self.wall].state.pos += Vector3(reach + gap - self.face(), 0, 0)
-        for e in O.engines:
-            if isinstance(e, _w.InsertionSortCollider):
-                e.doSort = True
+        make._translate([self.wall], Vector3(reach + gap - self.face(), 0, 0))
         return self.delta()
 
     def delta(self):

@@ -114,11 +114,20 @@ def meso_overlap(members, radii):
     return radii[0] + radii[1] - (c[0] - c[1]).norm()
 
 
-def contacts_between(first, second):
-    """The contacts in overlap that join a body of ``first`` to one of ``second``."""
+def joining(first, second):
+    """The contacts in overlap that join a body of ``first`` to one of ``second``: (interaction,
+    whether its id2 is the body of ``second``)."""
     other = set(second)
-    return sum(1 for i in first for I in O.bodies[i].intrs()
-               if I.isReal and I.geom.penetrationDepth > 0 and (I.id2 if I.id1 == i else I.id1) in other)
+    for i in first:
+        for I in O.bodies[i].intrs():
+            j = I.id2 if I.id1 == i else I.id1
+            if j in other and I.isReal and I.geom.penetrationDepth > 0:
+                yield I, I.id2 == j
+
+
+def contacts_between(first, second):
+    """How many contacts in overlap join a body of ``first`` to one of ``second``."""
+    return sum(1 for _ in joining(first, second))
 
 
 X_AXIS = (1.0, 0.0, 0.0)

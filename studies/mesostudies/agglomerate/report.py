@@ -135,32 +135,33 @@ def _directions(s):
           "off where they stick).", "",
           "| v [m/s] | x | " + " | ".join(f"direction {d['index']}" for d in dirs) + " | spread of rebounds |",
           "|---|---|" + "---|" * len(dirs) + "---|"]
-    rows = [("x", s["e_normal"], s["tilt_deg"], s["stuck"], s["fragmented"], s["e_agglomerate"], s["deflection_deg"],
-             s["friction_over_normal_impulse"])]
-    rows += [(d["index"], d["e_normal"], d["tilt_deg"], d["stuck"], d["broken_mass_fraction"], d["e"], d["deflection_deg"],
-              d["friction_over_normal_impulse"]) for d in dirs]
+    x = {"index": "x", "e": s["e_agglomerate"], "broken_mass_fraction": s["fragmented"],
+         **{k: s[k] for k in ("e_normal", "tilt_deg", "stuck", "deflection_deg", "friction_over_normal_impulse")}}
+    runs = [x] + dirs
 
     def flags(stuck, broken):
         return (" (s)" if stuck else "") + (" (b)" if broken is not None and broken >= 0.01 else "")
     for k, v in enumerate(s["speeds"]):
         cells, rebounds = [], []
-        for _, en, tilt, stuck, broken, *_ in rows:
-            if en[k] is None and not stuck[k]:
+        for r in runs:
+            en, tilt, stuck = r["e_normal"][k], r["tilt_deg"][k], r["stuck"][k]
+            if en is None and not stuck:
                 cells.append("–")
                 continue
-            cells.append(("0" if stuck[k] else f"{en[k]:.3f}") + (f" ({tilt[k]:.0f}°)" if tilt[k] is not None else "")
-                         + flags(stuck[k], broken[k]))
-            if not stuck[k] and en[k] is not None:
-                rebounds.append(en[k])
+            cells.append(("0" if stuck else f"{en:.3f}") + (f" ({tilt:.0f}°)" if tilt is not None else "")
+                         + flags(stuck, r["broken_mass_fraction"][k]))
+            if not stuck and en is not None:
+                rebounds.append(en)
         spread = max(rebounds) - min(rebounds) if len(rebounds) > 1 else None
         md.append(f"| {v:g} | " + " | ".join(cells) + f" | {_f(spread)} |")
-    md += ["", "| v [m/s] | " + " | ".join(f"{'x' if r[0] == 'x' else 'direction ' + str(r[0])}: e along the approach, "
-                                          "deflection, friction/normal" for r in rows) + " |",
-           "|---|" + "---|" * len(rows)]
+    md += ["", "| v [m/s] | " + " | ".join(f"{'x' if r['index'] == 'x' else 'direction ' + str(r['index'])}: e along the "
+                                          "approach, deflection, friction/normal" for r in runs) + " |",
+           "|---|" + "---|" * len(runs)]
     for k, v in enumerate(s["speeds"]):
         md.append(f"| {v:g} | " + " | ".join(
-            f"stuck, {r[4][k]:.3f} broken off" if r[3][k] else f"{r[5][k]:.3f}, {_f(r[6][k], '{:.0f}')}°, {_f(r[7][k], '{:.2f}')}"
-            for r in rows) + " |")
+            f"stuck, {r['broken_mass_fraction'][k]:.3f} broken off" if r["stuck"][k]
+            else f"{r['e'][k]:.3f}, {_f(r['deflection_deg'][k], '{:.0f}')}°, {_f(r['friction_over_normal_impulse'][k], '{:.2f}')}"
+            for r in runs) + " |")
     md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
     return md
 

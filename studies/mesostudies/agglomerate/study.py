@@ -242,17 +242,17 @@ def compare_job(a):
                    "e_meso": compare.meso_collisions(params, info, [v / 1e3 for v in speeds], gammaN=gamma)}
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
     # The cycles' tension taken as the law's non-contact force: one estimate per unloading of the fitted run.
+    cycles = _cycles_summary(runs, measures)
     adhesion = []
-    for p, amp in zip(measures[fitted_run]["tension_plateaus"], _cycles_summary(runs, measures)[fitted_run]["amplitudes_d0"]):
+    for p, amp in zip(measures[fitted_run]["tension_plateaus"], cycles[fitted_run]["amplitudes_d0"]):
         c = compare.adhesion_consequence(params, info, p, runs[fitted_run]["touch_delta_mm"], [v / 1e3 for v in speeds]) \
             if p is not None and p < 0 else None
         if c:
             adhesion.append(dict(c, after_d0=amp))
-    pair_cycles = _cycles_summary(runs, measures)[fitted_run]
-    pair_turns = dict(zip(pair_cycles["amplitudes_d0"], pair_cycles["turn_forces"]))
+    pair_turns = dict(zip(cycles[fitted_run]["amplitudes_d0"], cycles[fitted_run]["turn_forces"]))
     walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m, pair_turns) for m in drive.WALL_MATERIALS}
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
-               "cycles": _cycles_summary(runs, measures),
+               "cycles": cycles,
                "rate_check": compare.rate_check(measures),
                "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
