@@ -23,11 +23,27 @@ from yade import O, pack, utils, wrapper as w
 
 from mesocontact import outputs, scene
 
+
+def steps(text):
+    """--steps: O.run(0) and O.run(-n) run without end, and beyond 2**62 O.iter + steps overflows
+    after the scenes were settled: refused before any work."""
+    allowed = "must be a whole number of steps in [1, 2**62] (O.run(0) or less runs forever)"
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is invalid: {allowed}") from None
+    if not 1 <= n <= 2 ** 62:
+        raise argparse.ArgumentTypeError(f"{text!r} is invalid: {allowed}")
+    return n
+
+
 ap = argparse.ArgumentParser(prog="yade -j1 -n -x scripts/restart_check.py")
-ap.add_argument("--steps", type=int, default=5000)
+ap.add_argument("--steps", type=steps, default=5000)
 ap.add_argument("--out", default=None)
 ap.add_argument("--sorted", action="store_true", help="InteractionLoop.loopOnSortedInteractions in every scene")
 a = ap.parse_args(sys.argv[1:])
+if a.out is not None and not os.access(os.path.dirname(os.path.abspath(a.out)), os.W_OK):  # not after the whole run
+    ap.error(f"argument --out: {a.out!r} is invalid: its directory does not exist or is not writable")
 MATERIALS = {
     "MesoPhys (normal, jump-in adhesion, lab drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0, adhesion="jumpIn",
                                                            gammaN=1e-4, density=2000), "lab"),

@@ -119,6 +119,7 @@ std::string firstDifference(const PairParams& a, const PairParams& b);
 struct PairGeometry {
 	double invDeltaMaxP = 0;         // 1/deltaMaxP (0 if kp == k1) [1/m]; first: the normal law reads only this
 	double radius1 = 0, radius2 = 0; // sphere radii; 0 for a wall, box or facet [m]
+	int    meshFacet = -1;           // a facet contact: the facet of the mesh it lies on now (-1: the one that made it)
 	double a12() const { return reducedRadius(radius1, radius2); }
 	// Limit overlap kp/(kp-k1) phiF a12 (Eq. 10), +inf if kp == k1 [m]; kept as its inverse, which the hot path uses.
 	double deltaMaxP() const { return 1 / invDeltaMaxP; }

@@ -42,6 +42,12 @@ public:
 	void                        setDensity(Real d);
 	Real                        getYoung() const { return young; }
 	void                        setYoung(Real y);
+	Real                        getPoisson() const { return poisson; }
+	void                        setPoisson(Real p);
+	std::string                 getLabel() const { return label; }
+	void                        setLabel(std::string l) { label = std::move(l); }
+	int                         getId() const { return id; }
+	void                        setId(int i) { id = i; }
 	void                        pyHandleCustomCtorArgs(boost::python::tuple& args, boost::python::dict& kw) override;
 	static void                 registerChecked(boost::python::object& cls);      // attributes that name themselves in a type error
 	void                        updateAttrsChecked(const boost::python::dict& d); // types checked before any is set
@@ -83,8 +89,10 @@ public:
 	virtual ~MesoPairParams() = default;
 	void postLoad(MesoPairParams&); // a saved pair checked (meso::validatePair)
 	                                // clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`).",
-		((meso::PairParams,params,,Attr::hidden,"The mixed parameters."))
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`). Made alone, the pair of two default MesoMat.",
+		((meso::PairParams,params,,Attr::hidden,"The mixed parameters.")),
+		/* a valid pair from the start: YADE's own self-test saves and reloads every class made by default */
+		params = meso::mixPair(meso::MaterialParams(), meso::MaterialParams());
 	);
 	                                // clang-format on
 };
@@ -116,6 +124,7 @@ public:
 		.add_property("deltaMaxP",&MesoPhys::getDeltaMaxP,"Limit overlap $\\delta_{max}^p$ (Eq. 10) [m]; inf when $k_p=k_1$.")
 		.add_property("delta0P",&MesoPhys::getDelta0P,"Plastic overlap $\\phi_f a_{12}$ on the limit branch (Eq. 11) [m].")
 		.add_property("deltaA",&MesoPhys::getDeltaA,"Range of the non-contact force $-f_a/k_{ca}$ (0 without adhesion) [m].")
+		.add_property("meshFacet",&MesoPhys::getMeshFacet,"A contact with a mesh of facets: the facet it lies on now, which may be another than the facet of the interaction that holds it (the contact travels across the mesh's edges with its history); -1 for the holder's own facet and for other contacts.")
 		.add_property("a12",&MesoPhys::getA12,"Reduced radius $2a_1a_2/(a_1+a_2)$ ($2a$ against a wall) [m].")
 		.add_property("branch",&MesoPhys::getBranch,"Branch of the law the contact was on at the last step: 'loading' ($k_1$), 'limit' (the limit branch $k_p$ beyond $\\delta_{max}^p$), 'unloading' (an un-/re-loading line $k_2$), 'tensile' (the tensile limit $-k_c\\delta$), 'nonContact' (no overlap, the non-contact adhesion acting), 'apart' (no overlap, no force) or 'new' (no step yet). Read back from the stored state: it costs the law nothing.")
 		.add_property("branchIndex",&MesoPhys::getBranchIndex,"``branch`` as a number for VTK and numpy: 0 new, 1 apart, 2 nonContact, 3 loading, 4 limit, 5 unloading, 6 tensile.")
@@ -156,6 +165,7 @@ public:
 	Real        getDelta0P() const { return geometry.delta0P(pair()); }
 	Real        getDeltaA() const { return pair().deltaA; }
 	Real        getA12() const { return geometry.a12(); }
+	int         getMeshFacet() const { return geometry.meshFacet; }
 	std::string getAdhesion() const { return meso::adhesionName(pair().adhesion); }
 	std::string getK2Interpolation() const { return meso::k2InterpolationName(pair().k2Interpolation); }
 	Real        getFh() const { return fHysteretic; }
@@ -327,9 +337,12 @@ namespace serialization {
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
 	}
-	template <class Ar> void serialize(Ar& ar, meso::PairGeometry& g, const unsigned int)
+	// Version 1 added meshFacet (version 0 files: -1, the contact on the facet that made it).
+	template <class Ar> void serialize(Ar& ar, meso::PairGeometry& g, const unsigned int version)
 	{
 		ar& make_nvp("radius1", g.radius1) & make_nvp("radius2", g.radius2) & make_nvp("invDeltaMaxP", g.invDeltaMaxP);
+		if (version >= 1) ar& make_nvp("meshFacet", g.meshFacet);
+		else g.meshFacet = -1;
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{
@@ -348,3 +361,4 @@ namespace serialization {
 }
 } // namespace boost::serialization
 BOOST_CLASS_VERSION(meso::PairParams, 1)
+BOOST_CLASS_VERSION(meso::PairGeometry, 1)

@@ -63,6 +63,10 @@ void MesoMat::registerChecked(boost::python::object& cls)
 	pychecks::checked(cls, "frictionAngle", &MesoMat::getFrictionAngle, &MesoMat::setFrictionAngle);
 	pychecks::checked(cls, "density", &MesoMat::getDensity, &MesoMat::setDensity);
 	pychecks::checked(cls, "young", &MesoMat::getYoung, &MesoMat::setYoung);
+	pychecks::checked(cls, "poisson", &MesoMat::getPoisson, &MesoMat::setPoisson);
+	// inherited attributes, only typed: a wrong type names them instead of Boost's "None.None(...)"
+	pychecks::checked(cls, "label", &MesoMat::getLabel, &MesoMat::setLabel);
+	pychecks::checked(cls, "id", &MesoMat::getId, &MesoMat::setId);
 }
 
 meso::MaterialParams MesoMat::parse() const
@@ -86,8 +90,13 @@ meso::MaterialParams MesoMat::parse() const
 		throw std::invalid_argument(
 		        "density = " + pychecks::digits(density)
 		        + " is invalid: must be a finite number in [1e-100, 1e100] [kg/m^3] (masses and 1/m stay within floating point)");
-	if (!(std::isfinite(young) && young > 0))
-		throw std::invalid_argument("young = " + pychecks::digits(young) + " is invalid: must be a finite number > 0 [Pa] (not used by the law)");
+	if (!(std::isfinite(young) && young >= meso::kSmallestValue && young <= meso::kLargestValue))
+		throw std::invalid_argument("young = " + pychecks::digits(young)
+		                            + " is invalid: must be a finite number in [1e-100, 1e100] [Pa] (not used by the law; PWaveTimeStep reads it)");
+	// YADE's FrictMat laws take it as the ratio ks/kn: a MesoMat-FrictMat contact with NaN there moves bodies to NaN.
+	if (!(std::isfinite(poisson) && poisson >= 0 && poisson <= 1))
+		throw std::invalid_argument("poisson = " + pychecks::digits(poisson)
+		                            + " is invalid: must be a finite number in [0, 1] (not used by the law; YADE's FrictMat laws read it as ks/kn)");
 	return m;
 }
 
@@ -140,6 +149,11 @@ void MesoMat::setDensity(Real d)
 void MesoMat::setYoung(Real y)
 {
 	change([y](MesoMat& c) { c.young = y; });
+}
+
+void MesoMat::setPoisson(Real p)
+{
+	change([p](MesoMat& c) { c.poisson = p; });
 }
 
 void MesoMat::pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw)
@@ -204,6 +218,7 @@ void MesoPhys::postLoad(MesoPhys&)
 	if (!(std::isfinite(geometry.radius2) && geometry.radius2 >= 0 && geometry.radius1 + geometry.radius2 > 0))
 		refuse("radius2", geometry.radius2, "must be finite and >= 0, one radius > 0");
 	if (!(std::isfinite(geometry.invDeltaMaxP) && geometry.invDeltaMaxP >= 0)) refuse("invDeltaMaxP", geometry.invDeltaMaxP, "must be finite and >= 0");
+	if (geometry.meshFacet < -1) refuse("meshFacet", geometry.meshFacet, "must be a body id or -1");
 	const bool springs = dynamic_cast<const MesoTangentialPhys*>(this) != nullptr;
 	if (pairParams->params.tangential != springs)
 		throw std::runtime_error(

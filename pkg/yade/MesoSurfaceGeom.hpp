@@ -3,6 +3,7 @@
 // Ig2_Wall_Sphere_ScGeom make a contact only in overlap). In overlap they give YADE's geometry
 // (facets: shrinkFactor 0, walls: as YADE). mesocontact.scene.set_detection() puts them in place.
 #pragma once
+#include "MesoMeshContacts.hpp"
 #include "PyChecks.hpp"
 #include <core/Dispatching.hpp>
 #include <pkg/common/Facet.hpp>
@@ -49,7 +50,9 @@ struct MesoDetectionCheck {
 
 class Ig2_Facet_Sphere_MesoScGeom : public IGeomFunctor {
 	MesoDetectionCheck detection;
-	std::atomic<bool>  vertexWarned { false };
+	std::atomic<bool>  vertexWarned { false }, overlapWarned { false };
+	MesoMeshContacts   mesh; // where each contact with the facets lies now
+	void               rebuildMesh(MesoMeshContacts& table, long iter);
 
 protected:
 	// The geometry of a sphere against a facet, made (isNew) or updated; false when the pair is not
@@ -63,9 +66,6 @@ protected:
 	        bool                           force,
 	        const shared_ptr<Interaction>& c,
 	        bool                           sixD);
-	// Whether another facet of the sphere holds this contact (meso::leftToOtherFacet): p the nearest
-	// point, centre the sphere's, both in this pair's image of the sphere (shift2).
-	bool leftToOtherFacet(const Vector3r& p, const Vector3r& centre, Real radius, const Vector3r& shift2, const Interaction& c) const;
 
 public:
 	MESO_SURFACE_GO
@@ -78,7 +78,11 @@ public:
 		"that distance (negative across a gap); radius1 = 2 radius, radius2 = radius. One contact per surface: a sphere over the "
 		"edge two facets share (coplanar, or a convex edge), or over one facet near that edge, touches the mesh at one point, "
 		"which only one facet holds (the nearer; of two at the same point the smaller id), as one large facet would; facets "
-		"meeting in a valley touch the sphere at separate points and keep a contact each.",
+		"meeting in a valley touch the sphere at separate points and keep a contact each. A contact keeps its history across the "
+		"mesh: the interaction that made it holds it while it travels over the edges and vertices to neighbouring facets of the same "
+		"material (the facets that share its point), as one large facet would (:yref:`MesoPhys.meshFacet` tells where it lies); "
+		"force and torque go to the holding facet. At a facet of another material the contact ends and that facet makes its own. "
+		"Overlapping facets (a duplicated triangle) make one contact, with a warning.",
 		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC)),
 		/* ctor */,
 		/* a wrong type named with the attribute, not Boost's "None.None(...)" */;

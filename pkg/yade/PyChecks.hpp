@@ -148,6 +148,8 @@ namespace pychecks {
 		if constexpr (std::is_same_v<T, bool>) return flag(name, v);
 		else if constexpr (std::is_same_v<T, std::string>)
 			return text(name, v);
+		else if constexpr (std::is_same_v<T, int>)
+			return integer(name, v);
 		else
 			return static_cast<T>(number(name, v));
 	}

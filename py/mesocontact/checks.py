@@ -38,3 +38,23 @@ def finite_array(name, value):
     if bad.size:
         raise ValueError(f"{name}[{bad[0]}] = {a[bad[0]]!r} is invalid: must be finite")
     return a
+
+
+def vector(name, value, length=3):
+    """``value`` as a tuple of ``length`` finite floats (a tuple, list, numpy array or YADE Vector3);
+    a TypeError (not a sequence of numbers) or ValueError (length, NaN, inf) naming ``name``."""
+    allowed = f"must be a sequence of {length} finite numbers"
+    try:
+        items = None if isinstance(value, (str, bytes)) else list(value)
+    except TypeError:
+        items = None
+    if items is None:
+        raise TypeError(f"{name} = {value!r} is invalid: {allowed}")
+    if len(items) != length:
+        raise ValueError(f"{name} = {value!r} is invalid: {allowed} (it has {len(items)})")
+    for i, x in enumerate(items):
+        if not is_number(x):
+            raise TypeError(f"{name} = {value!r} is invalid: {allowed} ({name}[{i}] = {x!r})")
+        if not math.isfinite(x):
+            raise ValueError(f"{name} = {value!r} is invalid: {allowed} ({name}[{i}] = {x!r})")
+    return tuple(float(x) for x in items)

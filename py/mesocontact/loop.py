@@ -13,6 +13,15 @@ after a fix (``register`` or ``runner`` again, then ``O.run``) repeats no step.
 
 A scene saved with such a runner and loaded in another process finds its label unregistered; the
 runner then stops the run the same way, naming the label (install it again after ``O.load``).
+
+``KeyboardInterrupt`` and ``SystemExit`` are requests, not errors (YADE's own PyRunner leaves a
+half-done step for the first and hangs the process on the second in ``O.run``). Both let the step
+complete. A ``KeyboardInterrupt`` pauses ``O.run`` after it (``O.run`` again goes on from the next
+step); under ``O.step()`` there is no run to pause, so the next step's start raises it as an error
+above. A ``SystemExit`` in ``O.run`` pauses the run and is raised in the main thread, where the
+script's ``O.run(..., True)`` or ``O.wait()`` returns: the process ends as a script's
+``sys.exit(code)`` does (``finally``, ``atexit``, its exit code); under ``O.step()`` it ends the
+process at once, as YADE does.
 """
 
 _CALLBACKS = {}
@@ -72,6 +81,49 @@ def call(label):
         fn()
     except Exception as exc:  # noqa: BLE001 - any error of the user's callable is deferred, none is lost
         _defer(label, exc)
+    except KeyboardInterrupt as exc:
+        _interrupted(label, exc)
+    except SystemExit as exc:
+        _exit(label, exc)
+
+
+def _interrupted(label, exc):
+    """A stop request: this step completes (call returns), then O.run pauses. Under O.step() (not
+    running) pausing does nothing and the caller's loop would go on: the next step's start raises it."""
+    import sys
+    from yade import O
+    if not O.running:
+        _defer(label, exc)
+        return
+    print(f"mesocontact.loop: the runner {label!r} raised KeyboardInterrupt at iteration {O.iter}: this step is "
+          f"completed and the run paused; O.run goes on from the next step", file=sys.stderr, flush=True)
+    O.pause()
+
+
+def _exit(label, exc):
+    """sys.exit() in a callback. In the main thread (O.step()) YADE's PyRunner ends the process
+    itself; re-raised. In O.run's thread YADE's PyRunner would finalize Python from that thread while
+    the main thread waits for the run: the process hangs. So the run pauses after this step and the
+    main thread gets the SystemExit where it waits (O.run(..., True), O.wait()) and ends the process
+    as a script's sys.exit does."""
+    import ctypes
+    import os
+    import sys
+    import threading
+    from yade import O
+    main = threading.main_thread()
+    if threading.current_thread() is main:
+        raise exc
+    print(f"mesocontact.loop: the runner {label!r} raised SystemExit({exc.code!r}) at iteration {O.iter}: this step is "
+          f"completed, the run paused and the process ends", file=sys.stderr, flush=True)
+    O.pause()
+    # An asynchronous exception can only be a class: one that carries this exit code.
+    code = exc.code
+    carrier = type("SystemExit", (SystemExit,), {"__init__": lambda self, *args: SystemExit.__init__(self, code)})
+    if ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(main.ident), ctypes.py_object(carrier)) != 1:
+        sys.stderr.flush()  # no main thread to hand it to: end here rather than hang
+        sys.stdout.flush()
+        os._exit(code if isinstance(code, int) else 1)
 
 
 def _defer(label, exc):
@@ -104,9 +156,10 @@ def raise_pending():
     (label, it, exc), rest = _PENDING[0], len(_PENDING) - 1
     _PENDING.clear()
     more = f" (and {rest} more error{'s' if rest > 1 else ''} in that step, printed then)" if rest else ""
-    raise RuntimeError(f"the runner {label!r} raised at iteration {it}: {type(exc).__name__}: {exc}{more}. That step "
-                       f"was completed; the run stopped before iteration {O.iter}: fix the callable (loop.register) "
-                       f"and run on, no step is repeated") from exc
+    todo = "run on" if isinstance(exc, KeyboardInterrupt) else "fix the callable (loop.register) and run on"
+    what = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+    raise RuntimeError(f"the runner {label!r} raised at iteration {it}: {what}{more}. That step "
+                       f"was completed; the run stopped before iteration {O.iter}: {todo}, no step is repeated") from exc
 
 
 def registered():

@@ -4,6 +4,7 @@ import math
 from yade import O
 
 from .scene_names import BRANCHES  # noqa: F401  (MesoPhys.branch's names, in branchIndex order)
+from . import checks
 from .checks import is_number
 from . import theory
 
@@ -26,6 +27,7 @@ def engines(gravity=(0, 0, -9.81), sorted_loop=False):
     collider makes them again in another order); it costs 2.6 times the step (2000 spheres on a
     floor, scripts/restart_check.py and docs/usage.md)."""
     from yade import wrapper as w
+    gravity = checks.vector("gravity", gravity)  # NaN would move every body to NaN; Boost names no argument
     if not isinstance(sorted_loop, bool):
         raise TypeError(f"sorted_loop = {sorted_loop!r} is invalid: must be True or False")
     return [
@@ -53,6 +55,35 @@ _SURFACE_FUNCTORS = {"Ig2_Facet_Sphere_ScGeom": "Ig2_Facet_Sphere_MesoScGeom",
                      "Ig2_Wall_Sphere_ScGeom": "Ig2_Wall_Sphere_MesoScGeom"}
 
 
+def check():
+    """Refuses, naming the body or material, what YADE would abort on or run on without a word:
+    a Wall whose axis is not 0, 1 or 2 (YADE takes any integer, and its Bo1_Wall_Aabb aborts the
+    process at the first step), a Facet with a vertex that is not finite (no collider or functor
+    can find it), a Sphere whose radius is not a finite number > 0, and a material with a young
+    or poisson (MesoMat, FrictMat: YADE's FrictMat laws read them) that is not finite. set_detection
+    and time_step call it; a scene builder calls it before running."""
+    from yade import wrapper as w
+    for b in O.bodies:
+        if b is None:
+            continue
+        if isinstance(b.shape, w.Wall) and b.shape.axis not in (0, 1, 2):
+            raise ValueError(f"body #{b.id}: Wall.axis = {b.shape.axis!r} is invalid: must be 0, 1 or 2 (x, y, z); "
+                             f"YADE's Bo1_Wall_Aabb aborts the process on another")
+        if isinstance(b.shape, w.Facet) and not all(math.isfinite(x) for v in list(b.shape.vertices) + [b.state.pos] for x in v):
+            raise ValueError(f"body #{b.id} is a Facet with a vertex that is not finite (NaN or inf): "
+                             f"no collider or functor can find it")
+        if isinstance(b.shape, w.Sphere) and not (math.isfinite(b.shape.radius) and b.shape.radius > 0):
+            raise ValueError(f"body #{b.id}: Sphere.radius = {b.shape.radius!r} is invalid: must be a finite number > 0 [m]")
+    # a body's material need not be in O.materials (utils.sphere(material=MesoMat(...)))
+    materials = {id(m): m for m in list(O.materials) + [b.material for b in O.bodies if b is not None and b.material]}
+    for m in materials.values():
+        if isinstance(m, w.ElastMat):
+            for name in ("young", "poisson"):
+                if not math.isfinite(getattr(m, name)):
+                    raise ValueError(f"{type(m).__name__} {m.label or '#' + str(m.id)}: {name} = {getattr(m, name)!r} is "
+                                     f"invalid: must be finite")
+
+
 def set_detection(margin=1.2):
     """Makes the collider and the geometry functors in O.engines see pairs at the adhesion range,
     so that reversible pull-in acts before contact (YADE's default factors find pairs only in
@@ -63,39 +94,59 @@ def set_detection(margin=1.2):
     detection distance: each is replaced by this package's (Ig2_Facet_Sphere_MesoScGeom[6D],
     Ig2_Wall_Sphere_MesoScGeom), the same geometry in overlap (a facet's shrinkFactor must be 0,
     neither may be hertzian). Call it after O.engines, O.materials and the spheres are in place;
-    returns the factor (1.0 when no material is adhesive, leaving the engines unchanged)."""
+    returns the factor (1.0 when no material is adhesive: then only YADE's facet functors are
+    replaced, for one contact per mesh surface with its history kept across edges). A refused
+    margin or scene (check()) changes nothing."""
     from yade import wrapper as w
-    if not (is_number(margin) and margin >= 1):
-        raise ValueError(f"margin = {margin!r} is invalid: must be a number >= 1")
-    for b in O.bodies:  # YADE takes any integer; its own Bo1_Wall_Aabb aborts on another
-        if b is not None and isinstance(b.shape, w.Wall) and b.shape.axis not in (0, 1, 2):
-            raise ValueError(f"set_detection: body #{b.id}'s Wall.axis = {b.shape.axis} is invalid: must be 0, 1 or 2 (x, y, z)")
-        if b is not None and isinstance(b.shape, w.Facet) and not all(
-                math.isfinite(x) for v in list(b.shape.vertices) + [b.state.pos] for x in v):
-            raise ValueError(f"set_detection: body #{b.id} is a Facet with a vertex that is not finite (NaN or inf): "
-                             f"no collider or functor can find it")
+    if not (is_number(margin) and math.isfinite(margin) and margin >= 1):  # inf made every factor inf
+        raise ValueError(f"margin = {margin!r} is invalid: must be a finite number >= 1")
+    check()
     gap = adhesion_range()
     radii = [b.shape.radius for b in O.bodies if b is not None and isinstance(b.shape, w.Sphere)]
     if gap <= 0:
+        _facets_as_one_surface()
         return 1.0
     if not radii:
         raise ValueError("set_detection: O.bodies holds no sphere (add the particles first)")
     factor = 1.0 + margin * gap / min(radii)
+    if not math.isfinite(factor):
+        raise ValueError(f"margin = {margin!r} is invalid here: 1 + margin range/a_min overflows (range {gap:.3g} m, "
+                         f"a_min {min(radii):.3g} m)")
     bounds = [f for e in O.engines if isinstance(e, w.Collider) and hasattr(e, "boundDispatcher")
               for f in e.boundDispatcher.functors if isinstance(f, w.Bo1_Sphere_Aabb)]
     if not bounds:
         raise ValueError("set_detection: no Bo1_Sphere_Aabb in O.engines' collider (define O.engines first)")
     # every replacement made (and refused) before anything changes
     loops = [(e, [_with_detection(f) for f in e.geomDispatcher.functors]) for e in O.engines if isinstance(e, w.InteractionLoop)]
-    for f in bounds:
-        f.aabbEnlargeFactor = factor
+    factors = [(f, "aabbEnlargeFactor") for f in bounds] + \
+        [(f, "interactionDetectionFactor") for _, functors in loops for f in functors if hasattr(f, "interactionDetectionFactor")]
+    before = [(f, name, getattr(f, name)) for f, name in factors]
+    try:  # a functor that refuses the factor leaves none set
+        for f, name in factors:
+            setattr(f, name, factor)
+    except Exception:
+        for f, name, value in before:
+            setattr(f, name, value)
+        raise
     for e, functors in loops:
-        for f in functors:
-            if hasattr(f, "interactionDetectionFactor"):
-                f.interactionDetectionFactor = factor
         if any(a is not b for a, b in zip(functors, e.geomDispatcher.functors)):
             e.geomDispatcher.functors = functors
     return factor
+
+
+def _facets_as_one_surface():
+    """Without a pull-in to detect, YADE's facet functors are still replaced by this package's (as
+    they are, factor 1), which makes one contact per mesh surface and carries its history across
+    the mesh's edges; one set to what they lack (hertzian, shrinkFactor) is left as it is."""
+    from yade import wrapper as w
+    for e in O.engines:
+        if not isinstance(e, w.InteractionLoop):
+            continue
+        functors = list(e.geomDispatcher.functors)
+        made = [_with_detection(f) if type(f).__name__.startswith("Ig2_Facet_Sphere_ScGeom")
+                and not getattr(f, "hertzian", False) and getattr(f, "shrinkFactor", 0) == 0 else f for f in functors]
+        if any(a is not b for a, b in zip(made, functors)):
+            e.geomDispatcher.functors = made
 
 
 def _with_detection(functor):
@@ -137,6 +188,7 @@ def time_step(safety=0.05):
     from yade import wrapper as w
     if not (is_number(safety) and 0 < safety < math.inf):
         raise ValueError(f"safety = {safety!r} is invalid: must be a finite number > 0 (at most 1 for a stable step)")
+    check()
     if safety > 1:
         warnings.warn(f"time_step(safety={safety!r}): the step exceeds the stability bound of the scene's stiffest "
                       "contact element; the integration will blow up", stacklevel=2)
@@ -253,10 +305,14 @@ def export_contacts(base, number=None):
     contacts: no file)."""
     import os
     from yade import wrapper as w
+    import numbers
+    if not isinstance(base, (str, os.PathLike)):  # None would write None-intrs-....vtk
+        raise TypeError(f"base = {base!r} is invalid: must be a path (str), the files' prefix")
     if number is None:
         number = O.iter
-    if not (isinstance(number, int) and not isinstance(number, bool) and 0 <= number < 10 ** 12):
-        raise ValueError(f"number = {number!r} is invalid: a non-negative integer (the file's number)")
+    if not (isinstance(number, numbers.Integral) and not isinstance(number, bool) and 0 <= number < 10 ** 12):
+        raise ValueError(f"number = {number!r} is invalid: must be an integer in [0, 10**12) (the file's number)")
+    number = int(number)
     contacts = [i for i in O.interactions if i.isReal]
     if not contacts:
         return None

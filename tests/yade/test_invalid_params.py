@@ -35,6 +35,13 @@ cases = [
     (dict(phiD=1.2), "phiD"),
     (dict(frictionAngle=-0.1), "frictionAngle"),
     (dict(frictionAngle=2.0), "frictionAngle"),
+    # not the law's, but read by YADE (PWaveTimeStep; FrictMat laws take poisson as ks/kn): issue #57
+    (dict(young=1e300), "young"),
+    (dict(young=1e-300), "young"),
+    (dict(poisson=nan), "poisson"),
+    (dict(poisson=float("inf")), "poisson"),
+    (dict(poisson=3.0), "poisson"),
+    (dict(poisson=-0.1), "poisson"),
 ]
 for kw, name in cases:
     try:
@@ -56,6 +63,20 @@ for kw, name in cases:
     after = {a: getattr(m, a) for a in before}
     if after != before:
         failures.append(f"assignment {kw}: the material changed: {after}")
+
+# Inherited attributes of a wrong type name themselves (not Boost's "None.None(...)").
+for name, value in (("poisson", "abc"), ("label", 3), ("id", 1.5), ("young", "x")):
+    m = MesoMat()
+    try:
+        setattr(m, name, value)
+        failures.append(f"{name} = {value!r}: no exception")
+    except TypeError as e:
+        if not str(e).startswith(name):
+            failures.append(f"{name} = {value!r}: message does not name it: {e}")
+m = MesoMat(label="powder", poisson=0.3)
+m.label, m.id = "powder2", 4
+if (m.label, m.id, m.poisson) != ("powder2", 4, 0.3):
+    failures.append(f"valid label, id, poisson not kept: {m.label!r}, {m.id!r}, {m.poisson!r}")
 
 # The lever-arm convention of the Ip2.
 try:

@@ -2,8 +2,17 @@
 # a registered callable runs as often as a plain PyRunner of the same period, its label can be
 # re-pointed, nothing is left in builtins or __main__ (a pair collision, which uses it, included),
 # an unregistered label stops the run naming it, bad labels are refused; and mesocontact.mpi's
-# check of the yade.mpy functions it replaces.
+# check of the yade.mpy functions it replaces. KeyboardInterrupt and SystemExit in a callback, in a
+# YADE subprocess with a timeout (issue #57 item 4): the first left a half-done step that the next
+# O.run repeated, the second hung the process in O.run; now the step completes, KeyboardInterrupt
+# pauses the run (O.run goes on, no step repeated) and SystemExit ends the process with its code.
 import builtins
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
 import types
 
 import __main__
@@ -77,4 +86,103 @@ for change, words in ((dict(parallelCollide=lambda steps: None), f"parallelColli
         check(False, f"an mpy with {words} refused", "accepted")
     except RuntimeError as e:
         check(words in str(e), f"refused: {e}")
+
+# KeyboardInterrupt and SystemExit in a callback: the runner after Newton, so a half-done step (Newton
+# applied, O.iter not advanced) shows as a repeated step in the falling sphere's velocity.
+CHILD = '''
+import atexit, json, sys
+from yade import O, utils
+from yade import wrapper as w
+from mesocontact import loop
+how, fail_at = sys.argv[1], int(sys.argv[2])
+seen = []
+
+def build(stop):
+    O.reset()
+    O.bodies.append(utils.sphere((0, 0, 0), 1e-3))
+    O.dt = 1e-3
+    seen.clear()
+    def callback():
+        seen.append(O.iter)
+        if O.iter == stop:
+            raise {"interrupt": KeyboardInterrupt, "exit": SystemExit(7)}[how.split("-")[0]]
+    O.engines = [w.ForceResetter(), w.NewtonIntegrator(damping=0, gravity=(0, 0, -10)), loop.runner(callback, 1, "probeStop")]
+
+def outcome():
+    return [O.iter, list(O.bodies[0].state.vel), list(O.bodies[0].state.pos)]
+
+build(None)
+O.run(20, True)
+reference = outcome()
+build(fail_at)
+atexit.register(lambda: print("ATEXIT " + json.dumps(outcome()), flush=True))
+result = {}
+try:
+    if how.endswith("run"):
+        O.run(20, True)
+        result["after_run"] = outcome()
+        result["running"] = O.running
+        O.run(20 - O.iter, True)
+    else:
+        for _ in range(40):  # a caller's O.step() loop that goes on after an error
+            if O.iter == 20:
+                break
+            try:
+                O.step()
+            except RuntimeError as e:
+                result.setdefault("errors", []).append([O.iter, str(e)[:300]])
+finally:
+    print("FINALLY", flush=True)
+result.update(final=outcome(), reference=reference, seen=seen)
+print("RESULT " + json.dumps(result), flush=True)
+'''
+child = os.path.join(tempfile.mkdtemp(prefix="loop-stop-"), "child.py")
+with open(child, "w") as f:
+    f.write(CHILD)
+launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
+if not os.path.exists(launcher):
+    launcher = sys.argv[0]
+
+
+def child_run(how, fail_at=5):
+    t0 = time.time()
+    try:
+        p = subprocess.run([launcher, "-j1", "-n", "-x", child, how, str(fail_at)], capture_output=True, text=True, timeout=120)
+    except subprocess.TimeoutExpired as e:
+        out = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or "")
+        return None, out, time.time() - t0
+    return p.returncode, p.stdout + p.stderr, time.time() - t0
+
+
+def result_of(text):
+    lines = [line for line in text.splitlines() if line.startswith("RESULT ")]
+    return json.loads(lines[-1][7:]) if lines else None
+
+
+rc, text, secs = child_run("interrupt-run")
+r = result_of(text)
+check(rc == 0 and r is not None and r["after_run"][0] == 6 and not r["running"],
+      "KeyboardInterrupt in O.run: the step completed (O.iter 6 after failing at 5) and the run paused",
+      f"rc {rc}, {r and r['after_run'][0]}, {secs:.0f} s" if r else f"rc {rc}: {text[-300:]}")
+check(r is not None and r["final"] == r["reference"] and r["seen"] == list(range(1, 20)),
+      "O.run after the interrupt goes on: the uninterrupted run to the bit, no step repeated",
+      f"{r and r['final']} against {r and r['reference']}, callback at {r and r['seen']}")
+check("KeyboardInterrupt" in text and "paused" in text, "the pause is announced on stderr")
+rc, text, secs = child_run("interrupt-step")
+r = result_of(text)
+errors = r.get("errors", []) if r else []
+check(rc == 0 and len(errors) == 1 and errors[0][0] == 6 and "KeyboardInterrupt" in errors[0][1],
+      "KeyboardInterrupt under O.step(): the step completes, the next O.step() stops with it before any engine acts",
+      str(errors)[:200] if r else f"rc {rc}: {text[-300:]}")
+check(r is not None and r["final"] == r["reference"] and r["seen"] == list(range(1, 20)),
+      "O.step() on after it: the uninterrupted run to the bit, no step repeated", f"{r and r['final']}")
+for how in ("exit-run", "exit-step"):
+    rc, text, secs = child_run(how)
+    done = [line for line in text.splitlines() if line.startswith("ATEXIT ")]
+    check(rc == 7 and "RESULT " not in text and secs < 120,
+          f"SystemExit(7) in a callback under {'O.run' if how == 'exit-run' else 'O.step()'} ends the process with code 7",
+          f"rc {rc} ({'timed out: hung' if rc is None else 'exited'}) after {secs:.0f} s")
+    if how == "exit-run":
+        check("FINALLY" in text and done and json.loads(done[-1][7:])[0] == 6,
+              "... as sys.exit does in the script: finally and atexit run, the step completed (O.iter 6)", done[-1:] or text[-200:])
 finish()

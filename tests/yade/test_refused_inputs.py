@@ -10,6 +10,9 @@
 #   segfaulted), its energy balance intact;
 # - the pair drivers refuse a step above the pair's stable step (a collision there made e = 6.9),
 #   naming what set it (dt or steps_per_contact), and a radius whose mass leaves floating point.
+# - (issue #57 items 3, 5) scene.engines' gravity: NaN was taken (NaN positions followed), None or a
+#   pair gave Boost's unnamed converter error; export_contacts' base and number; scripts/restart_check.py
+#   --steps 0 or less ran forever and an unwritable --out failed only after the whole run.
 import math
 import os
 import re
@@ -195,4 +198,54 @@ for gB, gBR, refused in ((1.01 * mass / 1e-6, 0.0, True), (0.99 * mass / 1e-6, 0
     except RuntimeError as e:
         check(refused and "gammaB = " in str(e) and "O.dt" in str(e) and O.iter == 0,
               f"gammaB {gB:.4g}, gammaBR {gBR:.4g}: refused at the first step, naming them", str(e)[:150])
+
+# 13. (issue #57) The scene helpers' arguments and restart_check's options, named before anything runs.
+import subprocess  # noqa: E402
+import time  # noqa: E402
+from yade import Vector3  # noqa: E402
+import mesocontact  # noqa: E402
+from mesocontact import scene  # noqa: E402
+
+for gravity, error in ((None, TypeError), ((0, 0), ValueError), ((0, 0, -9.81, 0), ValueError), ((math.nan, 0, 0), ValueError),
+                       ((0, math.inf, 0), ValueError), ((0, 0, "-9.81"), TypeError), ("xyz", TypeError), (9.81, TypeError),
+                       ((True, 0, 0), TypeError)):
+    try:
+        scene.engines(gravity=gravity)
+        check(False, f"engines(gravity={gravity!r}) refused", "accepted")
+    except error as e:
+        check(str(e).startswith(f"gravity = {gravity!r} is invalid"), f"engines(gravity={gravity!r}): {error.__name__} naming it", str(e))
+    except Exception as e:  # noqa: BLE001 - the wrong kind of error is the finding
+        check(False, f"engines(gravity={gravity!r}): {error.__name__} naming it", f"{type(e).__name__}: {e}"[:160])
+for gravity in (Vector3(0, 0, -9.81), np.array([0.0, 0.0, -9.81]), [0, 0, -9.81]):
+    check(tuple(scene.engines(gravity=gravity)[-1].gravity) == (0, 0, -9.81), f"engines(gravity={gravity!r}) taken")
+pair_scene()  # a contact to write
+with tempfile.TemporaryDirectory() as d:
+    for base, number, error, words in ((None, None, TypeError, "base = None"), (3, None, TypeError, "base = 3"),
+                                       (os.path.join(d, "c"), -1, ValueError, "number = -1"),
+                                       (os.path.join(d, "c"), 1.0, ValueError, "number = 1.0")):
+        try:
+            scene.export_contacts(base, number)
+            check(False, f"export_contacts({base!r}, {number!r}) refused", f"accepted: {os.listdir(d) + os.listdir('.')}"[:200])
+        except error as e:
+            check(str(e).startswith(words), f"export_contacts({base!r}, {number!r}): {error.__name__} naming it", str(e))
+    try:
+        name = scene.export_contacts(os.path.join(d, "c"), np.int64(7))
+    except ValueError as e:
+        name = f"ValueError: {e}"
+    check(name is not None and name.endswith("c-intrs-00000007.vtk"), "export_contacts takes a numpy integer as number", str(name))
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__))))
+launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
+for args, option in ((["--steps", "0"], "--steps"), (["--steps", "-5"], "--steps"), (["--steps", "2.5"], "--steps"),
+                     (["--out", os.path.join(ROOT, "no-such-directory", "r.json")], "--out")):
+    t0 = time.time()
+    try:
+        p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(ROOT, "scripts", "restart_check.py"), *args],
+                           capture_output=True, text=True, timeout=90)
+        rc, text = p.returncode, p.stdout + p.stderr
+    except subprocess.TimeoutExpired:
+        rc, text = None, "still running after 90 s"
+    last = [line for line in text.splitlines() if option in line][-1:] or text.splitlines()[-1:]
+    check(rc == 2 and f"argument {option}: " in text and time.time() - t0 < 90,
+          f"restart_check.py {' '.join(args)}: refused at once, naming {option}", f"rc {rc}, {time.time() - t0:.0f} s: {last}")
 finish()

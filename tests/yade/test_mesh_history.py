@@ -1,0 +1,98 @@
+# ctest (inside yade; also run with -j2): a contact keeps its history across a mesh's edges and
+# vertices (issue #57). A sphere is pressed onto the limit branch, partly unloaded, then dragged
+# slowly (prescribed x, y velocity; z free under a constant force) over a floor of facets: across the
+# diagonal two coplanar facets share (a geom.facetBox floor), and through the vertex four facets
+# share. The same drag over one large facet is the reference: the contact force (normal and
+# sliding, whose springs hold history too) must follow it step by step, to the rounding of a
+# nearest point computed on another facet (1e-9 of the force), with one contact at every step and
+# no warning. Before the fix the force jumped 66x the weight at the edge (a fresh contact on the
+# loading branch). A save and load after the crossing goes on bitwise (MesoPhys.meshFacet saved).
+import math
+
+from yade import O, utils
+from yade import wrapper as w
+from mesocontact import scene
+from harness import check, finish, Stderr
+
+R, RHO = 1e-3, 2000.0
+MAT = dict(k1=100.0, kp=500.0, kc=100.0, phiF=0.1, gammaN=0.05, kt=50.0, frictionAngle=0.5, density=RHO)
+L = 5 * R
+PRESS, HOLD = 0.03, 0.01  # [N]: beyond k1 * deltaMaxP = 0.025 N (the limit branch), then unloaded
+V_DRAG = 1e-3  # [m/s]: 0.2 R in 8000 steps
+
+diagonal = [[(-L, -L, 0), (L, -L, 0), (L, L, 0)], [(-L, -L, 0), (L, L, 0), (-L, L, 0)]]
+four = [[(0, 0, 0), (L, -L, 0), (L, L, 0)], [(0, 0, 0), (L, L, 0), (-L, L, 0)],
+        [(0, 0, 0), (-L, L, 0), (-L, -L, 0)], [(0, 0, 0), (-L, -L, 0), (L, -L, 0)]]
+large = [[(-4 * L, -4 * L, 0), (4 * L, -4 * L, 0), (0, 4 * L, 0)]]
+S = 0.1 * R  # a strip of small squares along x, each split on its diagonal: many hand-overs
+strip = [t for k in range(-30, 30) for t in ([(k * S, -S, 0), ((k + 1) * S, -S, 0), ((k + 1) * S, S, 0)],
+                                              [(k * S, -S, 0), ((k + 1) * S, S, 0), (k * S, S, 0)])]
+
+
+def drag(facets, start, direction, distance, save_at=None):
+    """Forces on the sphere's contacts (x, y, z) at every step of the drag, the most facet contacts
+    at one step, the facets the contact lay on (meshFacet), and the stderr of the run."""
+    scene.reset()
+    O.materials.append(w.MesoMat(**MAT))
+    ids = [O.bodies.append(utils.facet(v, fixed=True, material=0)) for v in facets]
+    ball = O.bodies.append(utils.sphere((start[0], start[1], R), R, material=0))
+    b = O.bodies[ball]
+    b.state.blockedDOFs = "xyXYZ"
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb()], verletDist=0),
+                 w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.NewtonIntegrator(damping=0)]
+    scene.set_detection()
+    m = b.state.mass
+    O.dt = 0.2 * math.sqrt(m / MAT["kp"])
+    forces, most, seen = [], 0, set()
+    with Stderr() as err:
+        O.forces.setPermF(ball, (0, 0, -PRESS))
+        O.run(600, True)
+        O.forces.setPermF(ball, (0, 0, -HOLD))
+        O.run(600, True)
+        n = math.hypot(*direction)
+        b.state.vel = (V_DRAG * direction[0] / n, V_DRAG * direction[1] / n, 0)
+        steps = int(round(distance / V_DRAG / O.dt))
+        for k in range(steps):
+            if save_at is not None and k == save_at:
+                O.saveTmp("mesh")
+                O.loadTmp("mesh")
+                O.forces.setPermF(ball, (0, 0, -HOLD))  # not saved with the scene
+            O.step()
+            real = [O.interactions[i, ball] for i in ids if O.interactions.has(i, ball) and O.interactions[i, ball].isReal]
+            most = max(most, len(real))
+            f = [0.0, 0.0, 0.0]
+            for i in real:
+                seen.add(i.phys.meshFacet)
+                t = i.phys.normalForce + i.phys.shearForce
+                f = [f[j] + t[j] for j in range(3)]
+            forces.append(f)
+    return forces, most, seen, err.text
+
+
+def largest_step(forces, j):
+    return max(abs(forces[k + 1][j] - forces[k][j]) for k in range(len(forces) - 1))
+
+
+# The strip's save comes when the contact lies 1.5 R from the facet that made it: beyond the
+# sphere's bounds, so only the saved meshFacet (not a search from that facet) finds it again.
+cases = (("edge (two coplanar facets)", diagonal, (0.1 * R, -0.1 * R), (-1, 1), 0.3 * R * math.sqrt(2), 0.5),
+         ("vertex (four facets)", four, (0.2 * R, 0.1 * R), (-2, -1), 0.4 * R * math.sqrt(1.25), 0.5),
+         ("strip (120 small facets)", strip, (-1.0 * R, 0.03 * R), (1, 0.02), 2.0 * R, 0.75))
+for name, mesh, start, direction, distance, save_fraction in cases:
+    f_mesh, most, seen, err = drag(mesh, start, direction, distance)
+    f_ref, most_ref, _, err_ref = drag(large, start, direction, distance)
+    check(most == 1 and most_ref == 1, f"{name}: one contact at every step", f"at most {most} (large facet {most_ref})")
+    check(len(seen - {-1}) >= 1, f"{name}: the contact travelled to another facet (meshFacet)", f"{len(seen - {-1})} others")
+    gap = max(math.dist(a, c) for a, c in zip(f_mesh, f_ref))
+    check(gap <= 1e-9 * PRESS, f"{name}: the force follows the large facet's at every step", f"largest difference {gap:.3g} N")
+    for j, axis in ((2, "normal (z)"), (0, "sliding (x)")):
+        dm, dr = largest_step(f_mesh, j), largest_step(f_ref, j)
+        print(f"   {name}: largest one-step change of the {axis} force {dm:.4g} N (one large facet {dr:.4g} N)")
+    check("IGeomFunctor returned false" not in err and "WARNING" not in err, f"{name}: no warning", err.strip()[:300])
+    # Saved and loaded after the crossing: bitwise the same continuation.
+    f_saved, _, _, _ = drag(mesh, start, direction, distance, save_at=int(save_fraction * len(f_mesh)))
+    check(f_saved == f_mesh, f"{name}: a save and load after the crossing goes on bitwise",
+          f"largest difference {max(math.dist(a, c) for a, c in zip(f_saved, f_mesh)):.3g} N")
+finish()
