@@ -23,7 +23,9 @@ check "no __pycache__ and nothing under /usr/local" "! grep -q '__pycache__\|^./
 tmp=$(mktemp -d); dpkg-deb -x "$deb" "$tmp"
 size=$(stat -c %s "$tmp$libdir/libyade_meso.so")
 docs=$(du -sb "$tmp/usr/share/doc/yade-meso" | cut -f1)
-check "prose docs and their pictures: $docs bytes (<= 5 MB)" "[ $docs -le 5000000 ]"
+check "the library's docs only, no study page or picture: $docs bytes (<= 1 MB)" "[ $docs -le 1000000 ] && ! grep -q 'doc/yade-meso/docs/\(tablet\|figures\|agglomerate\)' <<< \"\$files\""
+debsize=$(stat -c %s "$deb")
+check "the package itself: $debsize bytes (<= 3 MB)" "[ $debsize -le 3000000 ]"
 check "plugin stripped: $size bytes, no debug sections" "[ $size -lt 15000000 ] && ! readelf -S '$tmp$libdir/libyade_meso.so' | grep -q debug_info"
 rm -rf "$tmp"
 ver=$(dpkg-query -W -f='${Version}' libyade)
