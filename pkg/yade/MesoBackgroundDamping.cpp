@@ -49,6 +49,7 @@ void MesoBackgroundDamping::pyHandleCustomCtorArgs(boost::python::tuple&, boost:
 	using pychecks::Kind;
 	static const pychecks::Field fields[] = { { "gammaB", Kind::Number }, { "gammaBR", Kind::Number }, { "reference", Kind::Text } };
 	pychecks::checkKeywords(kw, fields);
+	pychecks::ctorKeywords(*this, kw, { "lawSumSteps" });
 }
 
 void MesoBackgroundDamping::registerChecked(boost::python::object& cls)

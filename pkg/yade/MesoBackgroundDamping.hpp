@@ -3,6 +3,7 @@
 // reference is the lab frame (at rest) or the rigid motion of the particle's contact neighbours,
 // so that a cluster moving as a body, or the imposed homogeneous deformation, is not dragged.
 #pragma once
+#include "PyChecks.hpp"
 #include "MesoNeighbourSums.hpp"
 #include <core/GlobalEngine.hpp>
 #include <vector>
@@ -47,7 +48,7 @@ public:
 		((std::vector<int>,hasPrev,,Attr::hidden,"Whether a body got a drag at the previous step (1) or not (0)."))
 		((int,energyIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoBackground' in O.energy")),
 		/*ctor*/ validGammaB = gammaB; validGammaBR = gammaBR; validReference = reference;,
-		/*py*/; MesoBackgroundDamping::registerChecked(_classObj)
+		/*py*/; MesoBackgroundDamping::registerChecked(_classObj); pychecks::guard(_classObj)
 	);
 	// clang-format on
 };

@@ -75,7 +75,8 @@ public:
 		.add_property("young",&MesoMat::getYoung,&MesoMat::setYoung,"Elastic modulus [Pa], finite and > 0 (checked on assignment); not used by the law. :yref:`PWaveTimeStep` reads it but sees none of the law's stiffnesses: set O.dt with ``mesocontact.scene.time_step()``.")
 		.def("updateAttrs",&MesoMat::updateAttrsChecked,(boost::python::arg("attrs")),"Sets several attributes at once: an unknown name (AttributeError), a wrong type (TypeError) or an invalid value (ValueError) names the attribute and leaves every attribute as it was.")
 		.def("adhesionModes",&MesoMat::adhesionModes,"The names ``adhesion`` takes, in the order of their saved values.").staticmethod("adhesionModes");
-		MesoMat::registerChecked(_classObj)
+		MesoMat::registerChecked(_classObj);
+		pychecks::refuseUnknown(_classObj)
 	);
 	// clang-format on
 	REGISTER_CLASS_INDEX(MesoMat, FrictMat);
@@ -89,10 +90,11 @@ public:
 	virtual ~MesoPairParams() = default;
 	void postLoad(MesoPairParams&); // a saved pair checked (meso::validatePair)
 	                                // clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`). Made alone, the pair of two default MesoMat.",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoPairParams,Serializable,"Mixed parameters of one pair of :yref:`MesoMat`, shared by all :yref:`MesoPhys` of that pair (read them through :yref:`MesoPhys`). Made alone, the pair of two default MesoMat.",
 		((meso::PairParams,params,,Attr::hidden,"The mixed parameters.")),
 		/* a valid pair from the start: YADE's own self-test saves and reloads every class made by default */
-		params = meso::mixPair(meso::MaterialParams(), meso::MaterialParams());
+		params = meso::mixPair(meso::MaterialParams(), meso::MaterialParams());,
+		/*py*/; pychecks::guard(_classObj)
 	);
 	                                // clang-format on
 };
@@ -148,7 +150,8 @@ public:
 		.add_property("leverArm",&MesoPhys::getLeverArm,"Lever arm $a'_{12}$ of rolling and torsion at the last step [m].")
 		.add_property("muS",&MesoPhys::getMuS,"Static sliding coefficient of the pair [-].")
 		.add_property("byteSize",&MesoPhys::byteSize,"Memory of this object [bytes] (what each contact costs; a MesoTangentialPhys is larger).")
-		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.")
+		.add_property("frictPhysByteSize",&MesoPhys::frictPhysByteSize,"Memory of one FrictPhys object [bytes], for comparison.");
+		pychecks::guard(_classObj)
 	);
 	// clang-format on
 	// The pair's parameters; defaults for a MesoPhys not made by the Ip2 (so that reading it cannot crash).
@@ -258,7 +261,8 @@ public:
 		.def("stableStep",&Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("radius1"),boost::python::arg("radius2")=0,boost::python::arg("rotations")=true),"The stable time step [s] of a contact between a free sphere of ``material1`` and radius ``radius1`` and a free sphere of ``material2`` and ``radius2`` (0: a fixed wall, box or facet), masses and inertia from the materials' densities: the bound :yref:`stableDt<Ip2_MesoMat_MesoMat_MesoPhys.stableDt>` applies to each contact, from the same code, before any contact exists. ``mesocontact.scene.time_step`` takes its minimum over a scene.")
 		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'torsion' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
 		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.");
-		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm)
+		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm);
+		pychecks::guard(_classObj)
 	);
 	// clang-format on
 	FUNCTOR2D(MesoMat, MesoMat);
@@ -291,8 +295,9 @@ public:
 	// neighbour motion there, so that the drag needs no pass of its own (null: nothing to add).
 	shared_ptr<MesoNeighbourSums> neighbourSums;
 	bool                          go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
+	void pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
 		((int,plasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoPlastic' in O.energy"))
 		((int,adhesiveIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoAdhesive' in O.energy"))
@@ -300,7 +305,9 @@ public:
 		((int,springsIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSprings' in O.energy"))
 		((int,slidingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoSliding' in O.energy"))
 		((int,rollingIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoRolling' in O.energy"))
-		((int,torsionIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoTorsion' in O.energy"))
+		((int,torsionIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoTorsion' in O.energy")),
+		/*ctor*/,
+		/*py*/; pychecks::guard(_classObj)
 	);
 	// clang-format on
 	FUNCTOR2D(ScGeom, MesoPhys);

@@ -8,6 +8,8 @@
 #include <core/Omega.hpp>
 #include <core/Scene.hpp>
 #include <lib/serialization/ObjectIO.hpp>
+#include <cstdint>
+#include <cstdio>
 #include <boost/serialization/shared_ptr.hpp>
 #include <boost/serialization/vector.hpp>
 #include <boost/python/stl_iterator.hpp>
@@ -21,7 +23,22 @@ YADE_PLUGIN((MesoContactStore));
 
 namespace {
 	// Marks the bytes as ours, so that other bytes are refused before boost reads lengths from them.
-	const std::string contactsTag = "mesocontact contacts 1\n";
+	// Version 2 carries a checksum of the archive: Boost's binary archive trusts its input, and a
+	// damaged export could crash it (a forged one still can: import only what exportContacts made).
+	const std::string contactsTag = "mesocontact contacts 2\n";
+	const std::size_t sumDigits   = 16;
+
+	std::string checksum(const std::string& bytes, std::size_t from) // FNV-1a, 64 bits, as hex digits
+	{
+		std::uint64_t h = 14695981039346656037ull;
+		for (std::size_t k = from; k < bytes.size(); ++k) {
+			h ^= static_cast<unsigned char>(bytes[k]);
+			h *= 1099511628211ull;
+		}
+		char digits[sumDigits + 1];
+		std::snprintf(digits, sizeof(digits), "%016llx", static_cast<unsigned long long>(h));
+		return std::string(digits, sumDigits);
+	}
 }
 
 void MesoContactStore::keepFor(const shared_ptr<Scene>& scene)
@@ -135,9 +152,9 @@ boost::python::object MesoContactStore::exportContacts(const boost::python::obje
 	for (const auto& I : *Omega::instance().getScene()->interactions)
 		if (I->isReal() && (wanted.count(I->getId1()) || wanted.count(I->getId2()))) contacts.push_back(I);
 	std::ostringstream out;
-	out << contactsTag;
 	ObjectIO::save<decltype(contacts), boost::archive::binary_oarchive>(out, "contacts", contacts);
-	const std::string bytes = out.str();
+	const std::string archive = out.str();
+	const std::string bytes   = contactsTag + checksum(archive, 0) + "\n" + archive;
 	return boost::python::object(boost::python::handle<>(PyBytes_FromStringAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size()))));
 }
 
@@ -149,7 +166,10 @@ long MesoContactStore::importContacts(const boost::python::object& data)
 	if (PyBytes_AsStringAndSize(data.ptr(), &buffer, &size) != 0) boost::python::throw_error_already_set();
 	const std::string bytes(buffer, static_cast<size_t>(size));
 	if (bytes.compare(0, contactsTag.size(), contactsTag) != 0) throw std::invalid_argument("data: not contacts made by MesoContactStore.exportContacts");
-	std::istringstream                   in(bytes.substr(contactsTag.size()));
+	const std::size_t start = contactsTag.size() + sumDigits + 1;
+	if (bytes.size() < start || bytes[start - 1] != '\n' || bytes.compare(contactsTag.size(), sumDigits, checksum(bytes, start)) != 0)
+		throw std::invalid_argument("data: damaged contacts (their checksum does not match; made by MesoContactStore.exportContacts?)");
+	std::istringstream                   in(bytes.substr(start));
 	std::vector<shared_ptr<Interaction>> contacts;
 	try {
 		ObjectIO::load<decltype(contacts), boost::archive::binary_iarchive>(in, "contacts", contacts);

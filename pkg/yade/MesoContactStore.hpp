@@ -40,7 +40,8 @@ public:
 		.def("restore",&MesoContactStore::restore,"Gives the kept geometry and physics back to every pair that exists again without them (both bodies present, the collider's candidate interaction made), with the bodies in the order the contact was made for, so it goes on with its history; pairs still real keep their own. Forgets the kept contacts and returns how many it gave back (none if the scene is not the one they were kept from). ``ValueError`` (and nothing given back, the contacts still kept) if a kept geometry is not of the class this scene's :yref:`InteractionLoop` makes for its pair (contacts from a scene with other Ig2 functors: YADE's functors would cast it to the wrong type).")
 		.def("exportContacts",&MesoContactStore::exportContacts,(boost::python::arg("ids")),"The real interactions of the scene that involve any of the bodies ``ids`` (a sequence or set of ids), serialized as ``O.save`` does, as bytes: for another process (``mesocontact.mpi`` sends them with the bodies that :yref:`yade.mpy` moves to another worker). Keeps nothing.")
 		.def("importContacts",&MesoContactStore::importContacts,(boost::python::arg("data")),"Adds the contacts of ``data`` (bytes from :yref:`exportContacts<MesoContactStore.exportContacts>`) to the kept ones, which :yref:`restore<MesoContactStore.restore>` gives to their pairs; call it after :yref:`keep<MesoContactStore.keep>`, which forgets what was kept before. Returns how many; ``ValueError`` if ``data`` is not such bytes (bytes appended to an export included).")
-		.add_property("size",&MesoContactStore::size,"How many contacts are kept now.")
+		.add_property("size",&MesoContactStore::size,"How many contacts are kept now.");
+		pychecks::guard(_classObj)
 	);
 	// clang-format on
 };

@@ -36,6 +36,7 @@ void Ip2_MesoMat_MesoMat_MesoPhys::pyHandleCustomCtorArgs(boost::python::tuple&,
 {
 	static const pychecks::Field fields[] = { { "leverArm", pychecks::Kind::Text } };
 	pychecks::checkKeywords(kw, fields);
+	pychecks::ctorKeywords(*this, kw, { "stableDt" });
 }
 
 namespace {

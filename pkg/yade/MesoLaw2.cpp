@@ -94,10 +94,14 @@ namespace {
 		Vector3r     relVel; // v1 - v2, the periodic cell's shift included
 		Real         vn;     // d(delta)/dt, > 0 while approaching
 	};
-	MESO_HOT PairMotion pairMotion(const Scene* scene, const ScGeom& geom, const Interaction* I)
+	// meshFacet: a facet contact that travelled onto another facet of its mesh moves with that facet.
+	MESO_HOT PairMotion pairMotion(const Scene* scene, const ScGeom& geom, const Interaction* I, int meshFacet)
 	{
 		const auto& bodies = scene->bodies->body; // the vector itself: its operator[] inlines
-		PairMotion  m { bodies[I->getId1()]->state.get(), bodies[I->getId2()]->state.get(), Vector3r::Zero(), 0 };
+		Body::id_t  id1    = I->getId1();
+		if (meshFacet >= 0 && size_t(meshFacet) < bodies.size() && bodies[meshFacet]) [[unlikely]]
+			id1 = meshFacet;
+		PairMotion m { bodies[id1]->state.get(), bodies[I->getId2()]->state.get(), Vector3r::Zero(), 0 };
 		m.relVel = m.s1->vel - m.s2->vel;
 		if (scene->isPeriodic) m.relVel -= scene->cell->intrShiftVel(I->cellDist);
 		m.vn = meso::dot(m.relVel, geom.normal);
@@ -206,7 +210,7 @@ bool Law2_ScGeom_MesoPhys_Meso::go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip,
 	const auto&      p     = phys->pairParams->params;
 	const Real       delta = geom.penetrationDepth;
 	const Vector3r&  n     = geom.normal; // from 1 to 2
-	const PairMotion m     = pairMotion(scene, geom, I);
+	const PairMotion m     = pairMotion(scene, geom, I, phys->geometry.meshFacet);
 	if (neighbourSums) neighbourSums->add(*I, geom, *m.s1, *m.s2, phys->geometry.radius1 > 0, phys->geometry.radius2 > 0, scene);
 	const meso::NormalForce f = normalStep(*phys, p, delta, m.vn);
 	phys->normalForce         = f.total() * n;

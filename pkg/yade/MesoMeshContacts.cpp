@@ -20,14 +20,17 @@ void MesoMeshContacts::record(Id sphere, Id holder, Id at, long iter)
 	put(sphere, holder, at, iter);
 }
 
-MesoMeshContacts::Id MesoMeshContacts::at(Id sphere, Id holder)
+MesoMeshContacts::Id MesoMeshContacts::at(Id sphere, Id holder, long iter, std::vector<Entry>& others)
 {
+	others.clear();
+	Id                                where = holder;
 	const std::lock_guard<std::mutex> lock(mutex);
 	const auto                        found = bySphere.find(sphere);
 	if (found != bySphere.end())
 		for (const Entry& e : found->second)
-			if (e.holder == holder) return e.at;
-	return holder;
+			if (e.holder == holder) where = e.at;
+			else if (e.iter >= iter - 1) others.push_back(e);
+	return where;
 }
 
 void MesoMeshContacts::forget(Id sphere, Id holder)
@@ -45,15 +48,14 @@ void MesoMeshContacts::forget(Id sphere, Id holder)
 	if (entries.empty()) bySphere.erase(found);
 }
 
-std::vector<MesoMeshContacts::Entry> MesoMeshContacts::others(Id sphere, Id holder, long iter)
+void MesoMeshContacts::others(Id sphere, Id holder, long iter, std::vector<Entry>& out)
 {
-	std::vector<Entry>                out;
+	out.clear();
 	const std::lock_guard<std::mutex> lock(mutex);
 	const auto                        found = bySphere.find(sphere);
-	if (found == bySphere.end()) return out;
+	if (found == bySphere.end()) return;
 	for (const Entry& e : found->second)
 		if (e.holder != holder && e.iter >= iter - 1) out.push_back(e);
-	return out;
 }
 
 } // namespace yade

@@ -38,12 +38,13 @@ public:
 		seenScene = scene;
 		seenIter.store(iter, std::memory_order_release);
 	}
-	// Where the holder's contact lay at the last update (the holder itself if unknown).
-	Id at(Id sphere, Id holder);
+	// Where the holder's contact lay at the last update (the holder itself if unknown); others: the
+	// sphere's other contacts updated at iter - 1 or later (one lock for both, once per step).
+	Id at(Id sphere, Id holder, long iter, std::vector<Entry>& others);
 	void       record(Id sphere, Id holder, Id at, long iter);
 	void       forget(Id sphere, Id holder);
 	// The contacts of the sphere held by other facets, updated at iter - 1 or later.
-	std::vector<Entry> others(Id sphere, Id holder, long iter);
+	void others(Id sphere, Id holder, long iter, std::vector<Entry>& out);
 	// record() without the lock: for rebuild only, which runs under it.
 	void put(Id sphere, Id holder, Id at, long iter);
 

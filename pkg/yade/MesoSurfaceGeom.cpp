@@ -223,8 +223,10 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	if (!real) {
 		// A new contact: only where no other facet holds the point, nor one of the sphere's contacts stands.
 		if (sphere && leavesTo(scene, self, nearestE, centreE, tol, *sphere, sphereId, shift2, Which::Any, overlapWarned)) return false;
+		static thread_local std::vector<MesoMeshContacts::Entry> others; // kept: no allocation per call
+		if (sphere) mesh.others(sphereId, facetId, iter, others);
 		if (sphere)
-			for (const MesoMeshContacts::Entry& e : mesh.others(sphereId, facetId, iter)) {
+			for (const MesoMeshContacts::Entry& e : others) {
 				FacetView        from;
 				const Body::id_t start = sphere->intrs.count(e.at) ? e.at : e.holder;
 				const auto       found = sphere->intrs.find(start);
@@ -235,7 +237,8 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 		mesh.record(sphereId, facetId, facetId, iter);
 	} else if (sphere) {
 		// A contact goes on where the surface is nearest the sphere, across the mesh's edges (walk()).
-		const Body::id_t startId = mesh.at(sphereId, facetId);
+		static thread_local std::vector<MesoMeshContacts::Entry> others; // kept: no allocation per call
+		const Body::id_t                                          startId = mesh.at(sphereId, facetId, iter, others);
 		FacetView        cur     = self;
 		if (startId != facetId) {
 			const auto found = sphere->intrs.find(startId);
@@ -257,9 +260,11 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 				on                      = cur.body->state.get();
 			}
 		}
-		// Two contacts met on one facet (out of a valley, say): the holder of the smaller id goes on.
-		for (const MesoMeshContacts::Entry& e : mesh.others(sphereId, facetId, iter))
-			if (e.at == cur.id && e.holder < facetId) {
+		// Two contacts met on one facet: out of a fold, where this one's nearest point ceased to be a
+		// nearest point of the surface. The one that came ends; of two that came in one step (or
+		// stood on one facet since), the holder of the smaller id goes on.
+		for (const MesoMeshContacts::Entry& e : others)
+			if (e.at == cur.id && (startId != cur.id || e.holder < facetId)) {
 				mesh.forget(sphereId, facetId);
 				return false;
 			}

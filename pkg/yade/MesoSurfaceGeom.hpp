@@ -70,6 +70,7 @@ protected:
 public:
 	MESO_SURFACE_GO
 	void postLoad(Ig2_Facet_Sphere_MesoScGeom&) { detection.check("Ig2_Facet_Sphere_MesoScGeom", interactionDetectionFactor); }
+	void pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Facet_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Facet` and a :yref:`Sphere` (yade-meso): YADE's "
@@ -86,7 +87,8 @@ public:
 		((Real, interactionDetectionFactor, 1, Attr::triggerPostLoad, MESO_DETECTION_DOC)),
 		/* ctor */,
 		/* a wrong type named with the attribute, not Boost's "None.None(...)" */;
-		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Facet_Sphere_MesoScGeom::interactionDetectionFactor)
+		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Facet_Sphere_MesoScGeom::interactionDetectionFactor);
+		pychecks::guard(_classObj)
 	);
 	// clang-format on
 	FUNCTOR2D(Facet, Sphere);
@@ -114,6 +116,7 @@ class Ig2_Wall_Sphere_MesoScGeom : public IGeomFunctor {
 public:
 	MESO_SURFACE_GO
 	void postLoad(Ig2_Wall_Sphere_MesoScGeom&) { detection.check("Ig2_Wall_Sphere_MesoScGeom", interactionDetectionFactor); }
+	void pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Ig2_Wall_Sphere_MesoScGeom, IGeomFunctor,
 		"Create/update a :yref:`ScGeom` of a :yref:`Wall` and a :yref:`Sphere` (yade-meso): YADE's "
@@ -122,7 +125,8 @@ public:
 		((bool, noRatch, true, , "Avoid granular ratcheting (as :yref:`Ig2_Wall_Sphere_ScGeom.noRatch`).")),
 		/* ctor */,
 		;
-		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Wall_Sphere_MesoScGeom::interactionDetectionFactor)
+		pychecks::checked(_classObj, "interactionDetectionFactor", &Ig2_Wall_Sphere_MesoScGeom::interactionDetectionFactor);
+		pychecks::guard(_classObj)
 	);
 	// clang-format on
 	FUNCTOR2D(Wall, Sphere);

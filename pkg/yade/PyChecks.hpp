@@ -5,7 +5,10 @@
 #pragma once
 #include <boost/python.hpp>
 #include <boost/shared_ptr.hpp>
+#include <climits>
+#include <initializer_list>
 #include <limits>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -134,6 +137,7 @@ namespace pychecks {
 			if (kw.has_key(f.name)) {
 				check(f.name, f.kind, kw[f.name]);
 				if (f.kind == Kind::Number) kw[f.name] = number(f.name, kw[f.name]);
+				if (f.kind == Kind::Integer) kw[f.name] = integer(f.name, kw[f.name]); // a numpy integer as Python's
 			}
 	}
 
@@ -183,5 +187,97 @@ namespace pychecks {
 		        bp::make_function(setter, bp::default_call_policies(), boost::mpl::vector<void, C&, const bp::object&>()));
 	}
 
+	// The type an attribute holds now (read back from Python), for one whose value comes unchecked:
+	// a value of another type is refused naming the attribute, a numpy scalar taken as its Python type.
+	inline boost::python::object typedLike(const char* name, const boost::python::object& current, const boost::python::object& v)
+	{
+		namespace bp = boost::python;
+		if (PyBool_Check(current.ptr())) return bp::object(flag(name, v));
+		if (PyLong_Check(current.ptr())) return bp::object(static_cast<long>(integerIn(name, v, "an integer", LONG_MIN, LONG_MAX)));
+		if (PyFloat_Check(current.ptr())) return bp::object(number(name, v));
+		if (PyUnicode_Check(current.ptr())) return bp::object(text(name, v));
+		return v; // vectors, objects: YADE's converters name what they take
+	}
+
+	inline std::string className(const boost::python::object& self)
+	{
+		return boost::python::extract<std::string>(self.attr("__class__").attr("__name__"));
+	}
+
+	// obj.name = v: an unknown name (a typo) is an AttributeError, not a new attribute nothing reads;
+	// a value of the wrong type names the attribute.
+	inline void setChecked(boost::python::object self, const boost::python::str& nameObj, const boost::python::object& v)
+	{
+		namespace bp            = boost::python;
+		const std::string name  = bp::extract<std::string>(nameObj);
+		const bp::object  klass = self.attr("__class__");
+		if (!PyObject_HasAttrString(klass.ptr(), name.c_str())) {
+			PyErr_SetString(PyExc_AttributeError, (className(self) + " has no attribute '" + name + "' (a misspelt name would do nothing)").c_str());
+			bp::throw_error_already_set();
+		}
+		bp::object value = v;
+		if (PyObject_HasAttrString(self.ptr(), name.c_str())) value = typedLike(name.c_str(), bp::object(self.attr(name.c_str())), v);
+		bp::import("builtins").attr("object").attr("__setattr__")(self, nameObj, value);
+	}
+
+	// updateAttrs(d) all or nothing: every name known first, then set one by one (each checked as
+	// above); a refused value puts back the ones already set.
+	inline void updateAllOrNothing(boost::python::object self, const boost::python::dict& d)
+	{
+		namespace bp                   = boost::python;
+		const bp::list           items = d.items();
+		const bp::object         klass = self.attr("__class__");
+		std::vector<std::string> names;
+		for (bp::ssize_t k = 0; k < bp::len(items); ++k) {
+			const std::string name = bp::extract<std::string>(bp::str(bp::object(items[k][0])));
+			if (!PyObject_HasAttrString(klass.ptr(), name.c_str())) {
+				PyErr_SetString(PyExc_AttributeError, (className(self) + " has no attribute '" + name + "': nothing was set").c_str());
+				bp::throw_error_already_set();
+			}
+			names.push_back(name);
+		}
+		bp::list old;
+		for (const std::string& n : names)
+			old.append(bp::object(self.attr(n.c_str())));
+		bp::ssize_t set = 0;
+		try {
+			for (; set < bp::len(items); ++set)
+				setChecked(self, bp::str(names[set]), bp::object(items[set][1]));
+		} catch (...) {
+			PyObject *type, *value, *trace; // the refusal is kept while the old values go back
+			PyErr_Fetch(&type, &value, &trace);
+			for (bp::ssize_t k = 0; k < set; ++k)
+				bp::import("builtins").attr("object").attr("__setattr__")(self, bp::str(names[k]), bp::object(old[k]));
+			PyErr_Restore(type, value, trace);
+			throw;
+		}
+	}
+
+	// Constructor keywords (before YADE applies them): unknown names and read-only attributes refused,
+	// each value of the type the attribute holds (from the instance's own defaults, pyDict).
+	template <class C> void ctorKeywords(const C& self, boost::python::dict& kw, std::initializer_list<const char*> readOnly = {})
+	{
+		namespace bp             = boost::python;
+		const bp::dict  defaults = self.pyDict();
+		const bp::list  keys     = kw.keys();
+		for (bp::ssize_t k = 0; k < bp::len(keys); ++k) {
+			const std::string name = bp::extract<std::string>(bp::str(bp::object(keys[k])));
+			for (const char* r : readOnly)
+				if (name == r) throw std::invalid_argument(name + " is read-only: the functor or engine sets it");
+			if (!defaults.has_key(name)) continue; // YADE names an unknown keyword itself
+			kw[name] = typedLike(name.c_str(), bp::object(defaults[name]), bp::object(kw[name]));
+		}
+	}
+
+	// What every class of the plugin gets from Python (YADE's own classes accept a misspelt name and
+	// set updateAttrs' keys before a bad one).
+	inline void refuseUnknown(boost::python::object& cls) { boost::python::setattr(cls, "__setattr__", boost::python::make_function(&setChecked)); }
+
+	inline void guard(boost::python::object& cls)
+	{
+		namespace bp = boost::python;
+		refuseUnknown(cls);
+		bp::setattr(cls, "updateAttrs", bp::make_function(&updateAllOrNothing, bp::default_call_policies(), (bp::arg("self"), bp::arg("attrs"))));
+	}
 }
 } // namespace yade::pychecks
