@@ -5,6 +5,8 @@
 # DATA.csv: a header naming v, e and optionally sigma (SI units, # comments). Prints the fit and
 # writes DIR/calibration.json and DIR/calibration.png; then runs the fitted parameters through
 # YADE pair collisions at the data's speeds (--no-yade-check skips it, --yade names the launcher).
+# --against names the collision the data come from: one material gives another e(v) on a wall
+# (twice the reduced radius) than between two particles.
 import argparse
 import json
 import math
@@ -52,7 +54,10 @@ def parse(argv):
     p.add_argument("--radius", type=float, required=True, help="particle radius [m]")
     p.add_argument("--density", type=float, required=True, help="particle density [kg/m^3]")
     p.add_argument("--against", choices=cal.AGAINST, default="particle",
-                   help="particle: two equal spheres (a12 = R, m_r = m/2); wall: a sphere on a wall (a12 = 2R, m_r = m)")
+                   help="the collision the data come from: particle, two equal spheres (a12 = R, m_r = m/2); wall, a "
+                        "sphere on a wall (a12 = 2R, m_r = m). One material gives different e(v) in the two: the wall "
+                        "contact has twice the reduced radius (and mass), so its v_p is sqrt(2) times the pair's and "
+                        "e_pair(v) = e_wall(sqrt(2) v) without adhesion (docs/calibration.md)")
     p.add_argument("--adhesion", choices=("none", "reversible", "jumpIn"), default="none")
     p.add_argument("--interpolation", choices=("linear", "sqrt"), default="linear", help="k2(deltaMax) rule")
     p.add_argument("--free", default=None, help="comma-separated free parameters among k1,kp,kc,phiF,fa "
@@ -61,7 +66,9 @@ def parse(argv):
                     ("kp", "limit stiffness [N/m]"), ("kc", "tensile stiffness [N/m] (default 0 when fixed)"),
                     ("phiF", "plasticity depth"), ("fa", "non-contact force [N] (default 0 when fixed)")):
         p.add_argument("--" + n, type=float, default=None, help=what)
-    p.add_argument("--kca", type=float, default=math.inf, help="stiffness of the non-contact force [N/m] (fixed)")
+    p.add_argument("--kca", type=float, default=math.inf,
+                   help="stiffness of the non-contact force [N/m]: assumed, not fitted; the fitted fa (and kc, kp) follow "
+                        "it, and the report says how much")
     p.add_argument("--starts", type=int, default=40, help="starting points of the fit")
     p.add_argument("--bootstrap", type=int, default=200, help="bootstrap resamples (0: none)")
     p.add_argument("--seed", type=int, default=0)

@@ -170,7 +170,8 @@ def tables(summary):
             cv = f"{cov['inside']}/{cov['of']}" if cov else "—"
             if und:
                 cv += f" (undetermined in {und})"
-            out.append(f"| {name} | {n} | {t:.4g} | {f[n]:.4g}{' (undetermined)' if n in f['undetermined'] else ''} | "
+            point = f.get("fit_point") or f  # an undetermined parameter is null in calibration.json, its fit's point here
+            out.append(f"| {name} | {n} | {t:.4g} | {point[n]:.4g}{' (undetermined)' if n in f['undetermined'] else ''} | "
                        f"[{_fmt(lo)}, {_fmt(hi)}] | " + (f"[{_fmt(b[0])}, {_fmt(b[1])}]" if b else "—")
                        + f" | {'yes' if inside else 'NO'} | {cv} |")
     out += ["", "| set | points | what it lacks or shows | undetermined | statements | fit s | YADE worst abs de |",

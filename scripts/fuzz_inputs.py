@@ -86,6 +86,21 @@ def count(category, outcome, detail="", cls=None):
                               "detail": str(detail)[:1000]}) + "\n")
 
 
+def timed_call(category, argnames, desc, call):
+    """call() counted as rejected clearly (a ValueError/TypeError naming one of argnames) or other;
+    its time kept as the category's slowest. The result, or None when it raised."""
+    t = time.time()
+    try:
+        return call()
+    except (ValueError, TypeError) as e:
+        count(category, "rejected clearly" if named(e, argnames) else "other", f"{desc}: {type(e).__name__}: {e}")
+    except Exception as e:  # noqa: BLE001
+        count(category, "other", f"{desc}: {type(e).__name__}: {e}")
+    finally:
+        slowest[category] = max(slowest.get(category, 0.0), time.time() - t)
+    return None
+
+
 def value_for(name):
     """A plausible value most of the time, an adversarial one otherwise."""
     if rng.random() < 0.35:
@@ -1268,17 +1283,9 @@ with quiet_fd2():
     for _ in range(args.n):
         how, d, F, a12, kw = cycles_input()
         desc = f"{how}, a12={a12!r}, {kw!r}"[:300]
-        t = time.time()
-        try:
-            f = calibrate.fit_cycles(d, F, a12, **kw)
-        except (ValueError, TypeError) as e:
-            count("fit_cycles", "rejected clearly" if named(e, CYCLE_ARGS) else "other", f"{desc}: {type(e).__name__}: {e}")
+        f = timed_call("fit_cycles", CYCLE_ARGS, desc, lambda: calibrate.fit_cycles(d, F, a12, **kw))
+        if f is None:
             continue
-        except Exception as e:  # noqa: BLE001
-            count("fit_cycles", "other", f"{desc}: {type(e).__name__}: {e}")
-            continue
-        finally:
-            slowest["fit_cycles"] = max(slowest.get("fit_cycles", 0.0), time.time() - t)
         p = f.params
         ok = (all(isinstance(p[k], float) and math.isfinite(p[k]) for k in p) and p["k1"] > 0 and p["kp"] >= p["k1"] and p["kc"] >= 0
               and 0 < p["phiF"] <= 1 and math.isfinite(f.rms_residual))
@@ -1286,17 +1293,9 @@ with quiet_fd2():
     # 26. params.material_from with each argument made adversarial (empty, equal, negative, bools, extreme).
     for _ in range(args.n):
         kw = material_input()
-        t = time.time()
-        try:
-            m = params.material_from(**kw)
-        except (ValueError, TypeError) as e:
-            count("material_from", "rejected clearly" if named(e, MF_ARGS) else "other", f"{kw!r}: {type(e).__name__}: {e}")
+        m = timed_call("material_from", MF_ARGS, repr(kw), lambda: params.material_from(**kw))
+        if m is None:
             continue
-        except Exception as e:  # noqa: BLE001
-            count("material_from", "other", f"{kw!r}: {type(e).__name__}: {e}")
-            continue
-        finally:
-            slowest["material_from"] = max(slowest.get("material_from", 0.0), time.time() - t)
         problem = usable_material(m)
         count("material_from", "other" if problem else "accepted and ran clean", f"{kw!r}: {problem}")
     # 27. params.scale_material: materials (dicts, MesoMat objects, broken) and factors.

@@ -295,7 +295,7 @@ public:
 	// neighbour motion there, so that the drag needs no pass of its own (null: nothing to add).
 	shared_ptr<MesoNeighbourSums> neighbourSums;
 	bool                          go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
-	void pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
+	void                          pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
@@ -349,7 +349,8 @@ namespace serialization {
 	{
 		ar& make_nvp("radius1", g.radius1) & make_nvp("radius2", g.radius2) & make_nvp("invDeltaMaxP", g.invDeltaMaxP);
 		if (version >= 1) ar& make_nvp("meshFacet", g.meshFacet);
-		else g.meshFacet = -1;
+		else
+			g.meshFacet = -1;
 	}
 	template <class Ar> void serialize(Ar& ar, meso::NormalHistory& h, const unsigned int)
 	{

@@ -91,12 +91,14 @@ meso::MaterialParams MesoMat::parse() const
 		        "density = " + pychecks::digits(density)
 		        + " is invalid: must be a finite number in [1e-100, 1e100] [kg/m^3] (masses and 1/m stay within floating point)");
 	if (!(std::isfinite(young) && young >= meso::kSmallestValue && young <= meso::kLargestValue))
-		throw std::invalid_argument("young = " + pychecks::digits(young)
-		                            + " is invalid: must be a finite number in [1e-100, 1e100] [Pa] (not used by the law; PWaveTimeStep reads it)");
+		throw std::invalid_argument(
+		        "young = " + pychecks::digits(young)
+		        + " is invalid: must be a finite number in [1e-100, 1e100] [Pa] (not used by the law; PWaveTimeStep reads it)");
 	// YADE's FrictMat laws take it as the ratio ks/kn: a MesoMat-FrictMat contact with NaN there moves bodies to NaN.
 	if (!(std::isfinite(poisson) && poisson >= 0 && poisson <= 1))
-		throw std::invalid_argument("poisson = " + pychecks::digits(poisson)
-		                            + " is invalid: must be a finite number in [0, 1] (not used by the law; YADE's FrictMat laws read it as ks/kn)");
+		throw std::invalid_argument(
+		        "poisson = " + pychecks::digits(poisson)
+		        + " is invalid: must be a finite number in [0, 1] (not used by the law; YADE's FrictMat laws read it as ks/kn)");
 	return m;
 }
 

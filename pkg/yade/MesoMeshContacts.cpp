@@ -29,7 +29,8 @@ MesoMeshContacts::Id MesoMeshContacts::at(Id sphere, Id holder, long iter, std::
 	if (found != bySphere.end())
 		for (const Entry& e : found->second)
 			if (e.holder == holder) where = e.at;
-			else if (e.iter >= iter - 1) others.push_back(e);
+			else if (e.iter >= iter - 1)
+				others.push_back(e);
 	return where;
 }
 

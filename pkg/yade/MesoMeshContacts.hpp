@@ -19,9 +19,9 @@ class MesoMeshContacts {
 public:
 	using Id = int;
 	struct Entry {
-		Id holder; // the facet whose interaction holds the contact
-		Id at;     // the facet the contact lies on now
-		long       iter;   // the step of the last update; older than the last step: a contact gone
+		Id   holder; // the facet whose interaction holds the contact
+		Id   at;     // the facet the contact lies on now
+		long iter;   // the step of the last update; older than the last step: a contact gone
 	};
 	// Called first by every geometry call: a new step carries the table over; a load, a new
 	// scene or a gap in the steps rebuilds it (rebuild(table) fills it from the real interactions).
@@ -40,19 +40,19 @@ public:
 	}
 	// Where the holder's contact lay at the last update (the holder itself if unknown); others: the
 	// sphere's other contacts updated at iter - 1 or later (one lock for both, once per step).
-	Id at(Id sphere, Id holder, long iter, std::vector<Entry>& others);
-	void       record(Id sphere, Id holder, Id at, long iter);
-	void       forget(Id sphere, Id holder);
+	Id   at(Id sphere, Id holder, long iter, std::vector<Entry>& others);
+	void record(Id sphere, Id holder, Id at, long iter);
+	void forget(Id sphere, Id holder);
 	// The contacts of the sphere held by other facets, updated at iter - 1 or later.
 	void others(Id sphere, Id holder, long iter, std::vector<Entry>& out);
 	// record() without the lock: for rebuild only, which runs under it.
 	void put(Id sphere, Id holder, Id at, long iter);
 
 private:
-	std::mutex                                         mutex;
+	std::mutex                                 mutex;
 	std::unordered_map<Id, std::vector<Entry>> bySphere;
-	std::atomic<long>                                  seenIter { -2 };
-	const Scene*                                       seenScene = nullptr;
+	std::atomic<long>                          seenIter { -2 };
+	const Scene*                               seenScene = nullptr;
 };
 
 } // namespace yade

@@ -111,66 +111,73 @@ namespace {
 }
 
 namespace {
-// The sphere's facets, each facetView()'d, to f (stops when f returns true); true if it did.
-template <class F> bool anyFacet(Scene* scene, const Body& sphere, Body::id_t sphereId, const Vector3r& shift2, Body::id_t skip, F&& f)
-{
-	for (const auto& [otherId, other] : sphere.intrs) {
-		FacetView view;
-		if (otherId == skip || !other || !facetView(scene, otherId, *other, sphereId, shift2, view)) continue;
-		if (f(view)) return true;
+	// The sphere's facets, each facetView()'d, to f (stops when f returns true); true if it did.
+	template <class F> bool anyFacet(Scene* scene, const Body& sphere, Body::id_t sphereId, const Vector3r& shift2, Body::id_t skip, F&& f)
+	{
+		for (const auto& [otherId, other] : sphere.intrs) {
+			FacetView view;
+			if (otherId == skip || !other || !facetView(scene, otherId, *other, sphereId, shift2, view)) continue;
+			if (f(view)) return true;
+		}
+		return false;
 	}
-	return false;
-}
 
-enum class Which { Any, Same, Other }; // which facets may take a contact: by material, against the one it is on
+	enum class Which { Any, Same, Other }; // which facets may take a contact: by material, against the one it is on
 
-// Whether the contact point p of facet `from` is another facet's (meso::leftToOtherFacet).
-bool leavesTo(
-        Scene*                 scene,
-        const FacetView&       from,
-        const Eigen::Vector3d& p,
-        const Eigen::Vector3d& centre,
-        double                 tol,
-        const Body&            sphere,
-        Body::id_t             sphereId,
-        const Vector3r&        shift2,
-        Which                  which,
-        std::atomic<bool>&     overlapWarned)
-{
-	const bool interior = !onEdge(from, p, tol);
-	return anyFacet(scene, sphere, sphereId, shift2, from.id, [&](const FacetView& other) {
-		const bool same = other.body->material == from.body->material;
-		if ((which == Which::Same && !same) || (which == Which::Other && same)) return false;
-		if (!meso::leftToOtherFacet(p, from.id, centre, other.v[0], other.v[1], other.v[2], other.id, tol)) return false;
-		if (interior && !overlapWarned.exchange(true)) // a point inside one facet lies on another: they overlap
-			std::cerr << "WARNING Ig2_Facet_Sphere_MesoScGeom: facets #" << from.id << " and #" << other.id << " overlap where sphere #"
-			          << sphereId << " touches them (a duplicated triangle, as STL exports may hold?): one contact is made, held by "
-			          << "the facet of the smaller id. (Warned once.)" << std::endl;
-		return true;
-	});
-}
-
-// From facet cur, the contact followed over the sphere's facets of the same material, each hop to
-// the facet that holds the point (meso::leftToOtherFacet), to where the surface is nearest the
-// sphere: the facet the contact lies on now, and p, its point.
-FacetView
-walk(Scene* scene, FacetView cur, const Eigen::Vector3d& centre, double tol, const Body& sphere, Body::id_t sphereId, const Vector3r& shift2, Eigen::Vector3d& p)
-{
-	p = nearestOn(cur, centre);
-	// Each hop goes to a strictly nearer point, or to the same point on a facet of smaller id: no cycle.
-	for (std::size_t hop = 0; hop <= sphere.intrs.size() && onEdge(cur, p, tol); ++hop) {
-		const bool moved = anyFacet(scene, sphere, sphereId, shift2, cur.id, [&](const FacetView& next) {
-			if (next.body->material != cur.body->material
-			    || !meso::leftToOtherFacet(p, cur.id, centre, next.v[0], next.v[1], next.v[2], next.id, tol))
-				return false;
-			cur = next;
-			p   = nearestOn(cur, centre);
+	// Whether the contact point p of facet `from` is another facet's (meso::leftToOtherFacet).
+	bool leavesTo(
+	        Scene*                 scene,
+	        const FacetView&       from,
+	        const Eigen::Vector3d& p,
+	        const Eigen::Vector3d& centre,
+	        double                 tol,
+	        const Body&            sphere,
+	        Body::id_t             sphereId,
+	        const Vector3r&        shift2,
+	        Which                  which,
+	        std::atomic<bool>&     overlapWarned)
+	{
+		const bool interior = !onEdge(from, p, tol);
+		return anyFacet(scene, sphere, sphereId, shift2, from.id, [&](const FacetView& other) {
+			const bool same = other.body->material == from.body->material;
+			if ((which == Which::Same && !same) || (which == Which::Other && same)) return false;
+			if (!meso::leftToOtherFacet(p, from.id, centre, other.v[0], other.v[1], other.v[2], other.id, tol)) return false;
+			if (interior && !overlapWarned.exchange(true)) // a point inside one facet lies on another: they overlap
+				std::cerr << "WARNING Ig2_Facet_Sphere_MesoScGeom: facets #" << from.id << " and #" << other.id << " overlap where sphere #"
+				          << sphereId << " touches them (a duplicated triangle, as STL exports may hold?): one contact is made, held by "
+				          << "the facet of the smaller id. (Warned once.)" << std::endl;
 			return true;
 		});
-		if (!moved) break;
 	}
-	return cur;
-}
+
+	// From facet cur, the contact followed over the sphere's facets of the same material, each hop to
+	// the facet that holds the point (meso::leftToOtherFacet), to where the surface is nearest the
+	// sphere: the facet the contact lies on now, and p, its point.
+	FacetView
+	walk(Scene*                 scene,
+	     FacetView              cur,
+	     const Eigen::Vector3d& centre,
+	     double                 tol,
+	     const Body&            sphere,
+	     Body::id_t             sphereId,
+	     const Vector3r&        shift2,
+	     Eigen::Vector3d&       p)
+	{
+		p = nearestOn(cur, centre);
+		// Each hop goes to a strictly nearer point, or to the same point on a facet of smaller id: no cycle.
+		for (std::size_t hop = 0; hop <= sphere.intrs.size() && onEdge(cur, p, tol); ++hop) {
+			const bool moved = anyFacet(scene, sphere, sphereId, shift2, cur.id, [&](const FacetView& next) {
+				if (next.body->material != cur.body->material
+				    || !meso::leftToOtherFacet(p, cur.id, centre, next.v[0], next.v[1], next.v[2], next.id, tol))
+					return false;
+				cur = next;
+				p   = nearestOn(cur, centre);
+				return true;
+			});
+			if (!moved) break;
+		}
+		return cur;
+	}
 } // namespace
 
 void Ig2_Facet_Sphere_MesoScGeom::rebuildMesh(MesoMeshContacts& table, long iter)
@@ -211,15 +218,15 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	const Body::id_t facetId  = c->getId1();
 	const Body::id_t sphereId = c->getId2();
 	if (!real && !force && !(overlap > -(interactionDetectionFactor - 1) * radius)) return false;
-	const double     tol    = edgeTolerance(radius, centre);
+	const double            tol    = edgeTolerance(radius, centre);
 	const shared_ptr<Body>& sphere = Body::byId(sphereId, scene);
-	FacetView        self;
+	FacetView               self;
 	self.id   = facetId;
 	self.body = Body::byId(facetId, scene).get();
 	corners(facet, s1, self.v);
 	const Eigen::Vector3d centreE = toEigen(centre), nearestE = toEigen(s1.pos + toGlobal * nearest);
-	const State*     on   = &s1; // the state of the facet the contact lies on
-	Vector3r         normal;
+	const State*          on = &s1; // the state of the facet the contact lies on
+	Vector3r              normal;
 	if (!real) {
 		// A new contact: only where no other facet holds the point, nor one of the sphere's contacts stands.
 		if (sphere && leavesTo(scene, self, nearestE, centreE, tol, *sphere, sphereId, shift2, Which::Any, overlapWarned)) return false;
@@ -230,7 +237,8 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 				FacetView        from;
 				const Body::id_t start = sphere->intrs.count(e.at) ? e.at : e.holder;
 				const auto       found = sphere->intrs.find(start);
-				if (found == sphere->intrs.end() || !found->second || !facetView(scene, start, *found->second, sphereId, shift2, from)) continue;
+				if (found == sphere->intrs.end() || !found->second || !facetView(scene, start, *found->second, sphereId, shift2, from))
+					continue;
 				Eigen::Vector3d p;
 				if (walk(scene, from, centreE, tol, *sphere, sphereId, shift2, p).id == facetId) return false;
 			}
@@ -238,8 +246,8 @@ bool Ig2_Facet_Sphere_MesoScGeom::geometry(
 	} else if (sphere) {
 		// A contact goes on where the surface is nearest the sphere, across the mesh's edges (walk()).
 		static thread_local std::vector<MesoMeshContacts::Entry> others; // kept: no allocation per call
-		const Body::id_t                                          startId = mesh.at(sphereId, facetId, iter, others);
-		FacetView        cur     = self;
+		const Body::id_t                                         startId = mesh.at(sphereId, facetId, iter, others);
+		FacetView                                                cur     = self;
 		if (startId != facetId) {
 			const auto found = sphere->intrs.find(startId);
 			if (found != sphere->intrs.end() && found->second) facetView(scene, startId, *found->second, sphereId, shift2, cur);

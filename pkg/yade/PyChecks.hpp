@@ -196,13 +196,35 @@ namespace pychecks {
 		if (PyLong_Check(current.ptr())) return bp::object(static_cast<long>(integerIn(name, v, "an integer", LONG_MIN, LONG_MAX)));
 		if (PyFloat_Check(current.ptr())) return bp::object(number(name, v));
 		if (PyUnicode_Check(current.ptr())) return bp::object(text(name, v));
-		return v; // vectors, objects: YADE's converters name what they take
+		// a vector (Vector3, ...): a sequence of as many numbers, not a number, a string or a mapping
+		const Py_ssize_t n = PyObject_HasAttrString(current.ptr(), "__len__") && !PyUnicode_Check(current.ptr()) ? PyObject_Length(current.ptr()) : -1;
+		if (n < 0) PyErr_Clear();
+		if (n > 0) {
+			const bool       sequence = PySequence_Check(v.ptr()) && !PyUnicode_Check(v.ptr()) && !PyDict_Check(v.ptr());
+			const Py_ssize_t m        = sequence ? PyObject_Length(v.ptr()) : -1;
+			if (m < 0) PyErr_Clear();
+			if (m != n) typeError(std::string(name) + " = " + describe(v) + " is invalid: must be a sequence of " + std::to_string(n) + " numbers");
+			for (Py_ssize_t k = 0; k < n; ++k)
+				number(name, bp::object(v[k]));
+		}
+		return v; // objects: YADE's converters name what they take
 	}
 
-	inline std::string className(const boost::python::object& self)
+	// A read-only property (YADE's Attr::readonly, a getter without setter) named, not Python's
+	// "property of 'X' object has no setter".
+	inline void refuseReadOnly(const boost::python::object& self, const std::string& name)
 	{
-		return boost::python::extract<std::string>(self.attr("__class__").attr("__name__"));
+		namespace bp           = boost::python;
+		const bp::object descr = bp::object(self.attr("__class__").attr(name.c_str()));
+		if (PyObject_IsInstance(descr.ptr(), reinterpret_cast<PyObject*>(&PyProperty_Type)) == 1 && bp::object(descr.attr("fset")).is_none()) {
+			PyErr_SetString(
+			        PyExc_AttributeError,
+			        (name + " is read-only (" + bp::extract<std::string>(self.attr("__class__").attr("__name__"))() + " sets it)").c_str());
+			bp::throw_error_already_set();
+		}
 	}
+
+	inline std::string className(const boost::python::object& self) { return boost::python::extract<std::string>(self.attr("__class__").attr("__name__")); }
 
 	// obj.name = v: an unknown name (a typo) is an AttributeError, not a new attribute nothing reads;
 	// a value of the wrong type names the attribute.
@@ -212,9 +234,11 @@ namespace pychecks {
 		const std::string name  = bp::extract<std::string>(nameObj);
 		const bp::object  klass = self.attr("__class__");
 		if (!PyObject_HasAttrString(klass.ptr(), name.c_str())) {
-			PyErr_SetString(PyExc_AttributeError, (className(self) + " has no attribute '" + name + "' (a misspelt name would do nothing)").c_str());
+			PyErr_SetString(
+			        PyExc_AttributeError, (className(self) + " has no attribute '" + name + "' (a misspelt name would do nothing)").c_str());
 			bp::throw_error_already_set();
 		}
+		refuseReadOnly(self, name);
 		bp::object value = v;
 		if (PyObject_HasAttrString(self.ptr(), name.c_str())) value = typedLike(name.c_str(), bp::object(self.attr(name.c_str())), v);
 		bp::import("builtins").attr("object").attr("__setattr__")(self, nameObj, value);
@@ -234,6 +258,7 @@ namespace pychecks {
 				PyErr_SetString(PyExc_AttributeError, (className(self) + " has no attribute '" + name + "': nothing was set").c_str());
 				bp::throw_error_already_set();
 			}
+			refuseReadOnly(self, name);
 			names.push_back(name);
 		}
 		bp::list old;
@@ -257,9 +282,9 @@ namespace pychecks {
 	// each value of the type the attribute holds (from the instance's own defaults, pyDict).
 	template <class C> void ctorKeywords(const C& self, boost::python::dict& kw, std::initializer_list<const char*> readOnly = {})
 	{
-		namespace bp             = boost::python;
-		const bp::dict  defaults = self.pyDict();
-		const bp::list  keys     = kw.keys();
+		namespace bp            = boost::python;
+		const bp::dict defaults = self.pyDict();
+		const bp::list keys     = kw.keys();
 		for (bp::ssize_t k = 0; k < bp::len(keys); ++k) {
 			const std::string name = bp::extract<std::string>(bp::str(bp::object(keys[k])));
 			for (const char* r : readOnly)

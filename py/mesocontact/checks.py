@@ -45,7 +45,9 @@ def vector(name, value, length=3):
     a TypeError (not a sequence of numbers) or ValueError (length, NaN, inf) naming ``name``."""
     allowed = f"must be a sequence of {length} finite numbers"
     try:
-        items = None if isinstance(value, (str, bytes)) else list(value)
+        # a mapping iterates its keys and a set has no order: neither is a vector
+        unordered = isinstance(value, (str, bytes, dict, set, frozenset)) or hasattr(value, "keys")
+        items = None if unordered else list(value)
     except TypeError:
         items = None
     if items is None:

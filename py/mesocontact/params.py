@@ -1,6 +1,7 @@
 """Parameter helpers for the meso-particle law (plain Python, SI units)."""
 import inspect
 import math
+import sys
 
 from .checks import is_number, nonnegative, positive, positive_or_inf
 
@@ -33,7 +34,7 @@ def sphere_mass(radius, density):
         m = 4.0 / 3.0 * math.pi * radius ** 3 * density
     except OverflowError:
         m = math.inf
-    if not (0 < m < math.inf):
+    if not (sys.float_info.min <= m < math.inf):  # a subnormal mass has lost its digits
         raise ValueError(f"radius = {radius!r}, density = {density!r}: the mass {m!r} kg is out of floating-point range")
     return m
 
@@ -157,6 +158,9 @@ def _newton(f, x, tol=1e-13):
     return None
 
 
+K1_RANGE = (1e-200, 1e200)  # the stiffnesses material_from tries [N/m]: their collisions' products stay inside floating point
+
+
 def material_from(radius, density, impact_speed, restitution, contact_time, phiF=None, plastic_overlap=None,
                   kc_over_kp=0.0, pull_off_force=None, fa=0.0, kca=None, adhesion="jumpIn", radius2=None,
                   interpolation="linear", limit=None):
@@ -183,7 +187,7 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     - not fixed here: the viscosity gammaN (0: one e mixes it with plasticity) and the sliding,
       rolling and torsion elements (docs/tangential.md).
     Raises ValueError naming the input that no parameters reproduce."""
-    from .theory import ADHESION_MODES, contact_duration, pair_collision
+    from .theory import ADHESION_MODES, K2_INTERPOLATIONS, contact_duration, pair_collision
     positive("radius", radius)
     positive("density", density)
     positive("impact_speed", impact_speed)
@@ -200,9 +204,18 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
         raise ValueError("adhesion = 'none' is invalid with fa > 0: choose 'reversible' or 'jumpIn', or set fa = 0")
     if limit not in (None, True, False):
         raise ValueError(f"limit = {limit!r} is invalid: None, True or False")
+    if interpolation not in K2_INTERPOLATIONS:
+        raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
     radius2 = radius if radius2 is None else radius2
     positive_or_inf("radius2", radius2)
-    m_r = reduced_mass(sphere_mass(radius, density), math.inf if math.isinf(radius2) else sphere_mass(radius2, density))
+    if not 1e-100 <= density <= 1e100:  # what MesoMat takes; beyond, the masses leave floating point
+        raise ValueError(f"density = {density!r} is invalid: must lie in [1e-100, 1e100] [kg/m^3], as MesoMat's")
+    m1 = sphere_mass(radius, density)
+    try:
+        m2 = math.inf if math.isinf(radius2) else sphere_mass(radius2, density)
+    except ValueError as e:
+        raise ValueError(f"radius2 = {radius2!r}: {e}") from None
+    m_r = reduced_mass(m1, m2)
     a12 = reduced_radius(radius, radius2)
     if (phiF is None) == (plastic_overlap is None):
         raise ValueError("phiF, plastic_overlap: give exactly one (phiF = plastic_overlap/a12)")
@@ -242,19 +255,30 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     # where the pull-off force ties kc to kp): a grid finds the cells where both misfits change
     # sign, Newton refines each. The loading arc alone lasts pi/2 sqrt(m_r/k1) or longer, so
     # k1 >= m_r (pi/(2 contact_time))^2; the grid spans e^10 above that, kp/k1 - 1 in [1e-6, 1.3e3].
-    a0 = math.log(m_r * (0.5 * math.pi / contact_time) ** 2)
+    # In logarithms: m_r (pi/(2 contact_time))^2 itself over- or underflows for contact times like 1e-300 or 1e300 s.
+    a0 = math.log(m_r) + 2 * (math.log(0.5 * math.pi) - math.log(contact_time))
+    lo, hi = math.log(K1_RANGE[0]), math.log(K1_RANGE[1])
+    if not lo <= a0 <= hi - 10:
+        raise ValueError(f"contact_time = {contact_time!r} is out of range for radius = {radius!r}, density = {density!r}: "
+                         f"the stiffness of a contact that lasts that long, m_r (pi/(2 contact_time))^2 = "
+                         f"1e{a0 / math.log(10):+.0f} N/m (m_r = {m_r:.4g} kg), lies outside {K1_RANGE[0]:g} to {K1_RANGE[1]:g} N/m")
     xs = [a0 + 10 * i / 80 for i in range(81)]
     ys = [math.log(1e-6) + 21 * j / 80 for j in range(81)]
-    grid = [[gaps((x, y)) for y in ys] for x in xs]
-    found = []
-    for i in range(80):
-        for j in range(80):
-            corners = [grid[i][j], grid[i + 1][j], grid[i][j + 1], grid[i + 1][j + 1]]
-            if None in corners or any(len({c[n] > 0 for c in corners}) < 2 for n in (0, 1)):
-                continue
-            x = _newton(gaps, [0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1])])
-            if x and not any(abs(x[0] - f[0]) < 1e-6 and abs(x[1] - f[1]) < 1e-6 for f in found):
-                found.append(x)
+    try:
+        grid = [[gaps((x, y)) for y in ys] for x in xs]
+        found = []
+        for i in range(80):
+            for j in range(80):
+                corners = [grid[i][j], grid[i + 1][j], grid[i][j + 1], grid[i + 1][j + 1]]
+                if None in corners or any(len({c[n] > 0 for c in corners}) < 2 for n in (0, 1)):
+                    continue
+                x = _newton(gaps, [0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1])])
+                if x and not any(abs(x[0] - f[0]) < 1e-6 and abs(x[1] - f[1]) < 1e-6 for f in found):
+                    found.append(x)
+    except ValueError as e:  # the inputs are each valid: together they put the trial collisions outside floating point
+        raise ValueError(f"impact_speed = {impact_speed!r}, contact_time = {contact_time!r}, kc_over_kp = {kc_over_kp!r}, "
+                         f"pull_off_force = {pull_off_force!r}, fa = {fa!r}, kca = {kca!r}: the trial collisions (k1 from "
+                         f"{math.exp(xs[0]):.3g} to {math.exp(xs[-1]):.3g} N/m) cannot be computed: {e}") from None
     reached = {tuple(x): pair_collision(impact_speed, **law(x)).plastic_limit for x in found}
     if limit is not None:
         found = [x for x in found if reached[tuple(x)] == limit]
@@ -270,6 +294,7 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     p = law(found[0])
     out = FittedMaterial(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=phiF, fa=fa, kca=p["kca"], adhesion=p["adhesion"],
                          k2Interpolation=interpolation, gammaN=0.0, density=density)
+    _within_mesomat(out, f"radius = {radius!r}, density = {density!r}, fa = {fa!r}, contact_time = {contact_time!r}")
     out.stable_step = 2.0 * math.sqrt(m_r / p["kp"])
     out.report = (f"kp/k1 = {p['kp'] / p['k1']:.3g} (kp = {p['kp']:.4g} N/m); the stiffest element of this pair, kp on "
                   f"the reduced mass, is stable for dt < 2 sqrt(m_r/kp) = {out.stable_step:.3g} s: a scene of these "
@@ -299,5 +324,74 @@ def _why_not(grid, restitution, contact_time):
                 "or the speed)")
     near = sorted(cells, key=lambda c: abs(c[0]))[:max(3, len(cells) // 50)]  # the trial materials closest to e
     times = [contact_time * (1 + c[1]) for c in near]
+    if not math.isfinite(min(times)):  # theory.contact_duration loses its precision on a tensile pull far below k1's
+        return (f": the materials that give e = {restitution!r} have no finite contact time in the closed form (a kc or fa "
+                "below about 1e-16 of k1's scale is lost to rounding there: give kc_over_kp = 0 or fa = 0 instead)")
     return (f": the materials that give e = {restitution!r} last {min(times):.3g} to {max(times):.3g} s in contact "
             f"(relax contact_time towards that range, or change phiF or the adhesion, which shift it)")
+
+
+# scale_material: how each MesoMat attribute goes with the particles' size (x s) and density (x r) when
+# the approach speeds are kept: times then go x s, masses x r s^3 and every force x r s^2 (m v^2/L).
+_SCALED = {**{k: (1, 1) for k in ("k1", "kp", "kc", "kca", "kt", "kr", "ko")},   # N/m: x r s
+           **{k: (1, 2) for k in ("fa", "gammaN", "gammaT", "gammaR", "gammaO")},  # N and kg/s: x r s^2
+           "density": (1, 0), "young": (1, 0)}                                     # kg/m^3, Pa: x r
+_KEPT = ("phiF", "phiD", "muR", "muO", "frictionAngle", "poisson", "adhesion", "k2Interpolation", "dominant", "label")
+
+
+def scale_material(material, radius_factor, density_factor=1.0):
+    """A MesoMat's parameters for particles radius_factor times larger (and density_factor times
+    denser) whose collisions keep the restitution e(v) at every approach speed v: the law's
+    similarity (docs/calibration.md, "Larger particles, the same e(v)"). With lengths x s and the
+    speeds kept, times go x s, masses x r s^3 and every force x r s^2; so the stiffnesses (k1, kp,
+    kc, kca, kt, kr, ko) go x r s, fa and the dashpots (gamma*) x r s^2, density and young x r;
+    phiF, the friction coefficients, the adhesion mode and the k2 rule are kept.
+
+    Kept: e(v) at the same speeds, in every regime and adhesion mode, and so the plastic-limit
+    speed v_p, the sticking window and the speed below which the non-contact force holds a pair
+    (the stickiness limit); eta, beta, kca/k1, the adhesivity alpha at a given speed; overlaps
+    over the radius; the tangential response at the same speeds. Changed: overlaps and the
+    adhesion range fa/kca x s; forces (fa, the pull-off force kp kc/(kp + kc) phiF a12, the peak
+    force) x r s^2; contact durations and the stable time step x s; energies x r s^3; a body's
+    weight x r s^3, so gravity grows against the contact forces x s (the Bond number changes).
+
+    material: a dict of MesoMat keywords (calibrate.material, params.material_from) or a MesoMat.
+    Returns a dict for MesoMat(**...); a MesoMat's id is left out (O.materials gives one).
+    Raises ValueError naming an attribute it does not know or a value that leaves floating point."""
+    positive("radius_factor", radius_factor)
+    positive("density_factor", density_factor)
+    if hasattr(material, "keys"):
+        given = dict(material)
+    elif callable(getattr(material, "dict", None)):  # a YADE Serializable (MesoMat)
+        given = dict(material.dict())
+        given.pop("id", None)
+    else:
+        raise TypeError(f"material = {material!r:.80} is invalid: must be a dict of MesoMat keywords or a MesoMat")
+    out = {}
+    for k, v in given.items():
+        if k in _KEPT:
+            out[k] = v
+            continue
+        if k not in _SCALED:
+            raise ValueError(f"material[{k!r}] = {v!r}: not a MesoMat attribute scale_material knows how to scale")
+        if not (is_number(v) and math.isfinite(v)):
+            raise ValueError(f"material[{k!r}] = {v!r} is invalid: must be a finite number")
+        a, b = _SCALED[k]
+        try:
+            x = v * density_factor ** a * radius_factor ** b
+        except OverflowError:
+            x = math.inf
+        if not math.isfinite(x) or (v != 0 and abs(x) < sys.float_info.min):
+            raise ValueError(f"material[{k!r}] = {v!r} times {density_factor!r}^{a} {radius_factor!r}^{b} = {x!r} is out of "
+                             "floating-point range: the factors are too extreme")
+        out[k] = x
+    _within_mesomat(out, f"radius_factor = {radius_factor!r}, density_factor = {density_factor!r}")
+    return out
+
+
+def _within_mesomat(material, inputs):
+    """Every nonzero number of a material this module returns lies where MesoMat takes it
+    ([1e-100, 1e100]): a result MesoMat would refuse is refused here, naming the inputs."""
+    for k, v in material.items():
+        if is_number(v) and v != 0 and k not in ("frictionAngle", "poisson", "phiF", "phiD") and not 1e-100 <= abs(v) <= 1e100:
+            raise ValueError(f"{inputs}: they give {k} = {v!r}, outside the [1e-100, 1e100] a MesoMat takes (0 allowed)")

@@ -73,6 +73,32 @@ for name, value in (("poisson", "abc"), ("label", 3), ("id", 1.5), ("young", "x"
     except TypeError as e:
         if not str(e).startswith(name):
             failures.append(f"{name} = {value!r}: message does not name it: {e}")
+# Every class of the plugin: a misspelt name, a read-only attribute, a wrong type named; updateAttrs all or nothing.
+for make, name, value, error in ((Ip2_MesoMat_MesoMat_MesoPhys, "K1", 5.0, AttributeError), (Law2_ScGeom_MesoPhys_Meso, "label", 3, TypeError),
+                                 (Ip2_MesoMat_MesoMat_MesoPhys, "stableDt", 1.0, AttributeError), (MesoPhys, "deltaMax", 0.0, AttributeError),
+                                 (Ig2_Facet_Sphere_MesoScGeom, "interactionDetectionFactor", [1.0], TypeError),
+                                 (MesoBackgroundDamping, "dead", 1, TypeError), (MesoMat, "K1", 5.0, AttributeError),
+                                 (MesoPhys, "shearForce", 1e155, TypeError)):
+    obj = make()
+    try:
+        setattr(obj, name, value)
+        failures.append(f"{make.__name__}.{name} = {value!r}: no exception")
+    except error as e:
+        if name not in str(e):
+            failures.append(f"{make.__name__}.{name} = {value!r}: message does not name it: {e}")
+law = Law2_ScGeom_MesoPhys_Meso(label="before")
+try:
+    law.updateAttrs({"label": "after", "nonexistent": 1.0})
+    failures.append("updateAttrs with an unknown key: no exception")
+except AttributeError:
+    if law.label != "before":
+        failures.append(f"updateAttrs refused but set label: {law.label!r}")
+try:
+    Ip2_MesoMat_MesoMat_MesoPhys(stableDt=1.0)
+    failures.append("Ip2(stableDt=1.0): no exception")
+except ValueError as e:
+    if "stableDt" not in str(e):
+        failures.append(f"Ip2(stableDt=1.0) does not name it: {e}")
 m = MesoMat(label="powder", poisson=0.3)
 m.label, m.id = "powder2", 4
 if (m.label, m.id, m.poisson) != ("powder2", 4, 0.3):

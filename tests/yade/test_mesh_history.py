@@ -29,22 +29,29 @@ strip = [t for k in range(-30, 30) for t in ([(k * S, -S, 0), ((k + 1) * S, -S, 
                                               [(k * S, -S, 0), ((k + 1) * S, S, 0), (k * S, S, 0)])]
 
 
-def drag(facets, start, direction, distance, save_at=None):
-    """Forces on the sphere's contacts (x, y, z) at every step of the drag, the most facet contacts
-    at one step, the facets the contact lay on (meshFacet), and the stderr of the run."""
+def sphere_on(facets, centre, blocked):
+    """A fresh scene: ``facets`` (vertex triples, fixed) and a sphere at ``centre`` with ``blocked``
+    DOFs, YADE's facet functor replaced by set_detection(), the step 0.2 sqrt(m/kp). Returns the
+    facets' ids, the sphere's id and body."""
     scene.reset()
     O.materials.append(w.MesoMat(**MAT))
     ids = [O.bodies.append(utils.facet(v, fixed=True, material=0)) for v in facets]
-    ball = O.bodies.append(utils.sphere((start[0], start[1], R), R, material=0))
+    ball = O.bodies.append(utils.sphere(centre, R, material=0))
     b = O.bodies[ball]
-    b.state.blockedDOFs = "xyXYZ"
+    b.state.blockedDOFs = blocked
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb()], verletDist=0),
                  w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
                                    [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
     scene.set_detection()
-    m = b.state.mass
-    O.dt = 0.2 * math.sqrt(m / MAT["kp"])
+    O.dt = 0.2 * math.sqrt(b.state.mass / MAT["kp"])
+    return ids, ball, b
+
+
+def drag(facets, start, direction, distance, save_at=None):
+    """Forces on the sphere's contacts (x, y, z) at every step of the drag, the most facet contacts
+    at one step, the facets the contact lay on (meshFacet), and the stderr of the run."""
+    ids, ball, b = sphere_on(facets, (start[0], start[1], R), "xyXYZ")
     forces, most, seen = [], 0, set()
     with Stderr() as err:
         O.forces.setPermF(ball, (0, 0, -PRESS))
@@ -101,18 +108,7 @@ def belt(facets):
     """A sphere dragged 0.3 R in x over ``facets`` (from the fixed one onto the other: its contact
     walks), then all but the first moving along y at 1e-3 m/s (a belt) for 2000 steps: its y
     velocity, and whether its contact lies on another facet than the one that made it."""
-    scene.reset()
-    O.materials.append(w.MesoMat(**MAT))
-    ids = [O.bodies.append(utils.facet(v, fixed=True, material=0)) for v in facets]
-    ball = O.bodies.append(utils.sphere((-0.1 * R, 0, R), R, material=0))
-    b = O.bodies[ball]
-    b.state.blockedDOFs = "xXYZ"  # x prescribed, y and z free
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb()], verletDist=0),
-                 w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
-                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
-                 w.NewtonIntegrator(damping=0)]
-    scene.set_detection()
-    O.dt = 0.2 * math.sqrt(b.state.mass / MAT["kp"])
+    ids, ball, b = sphere_on(facets, (-0.1 * R, 0, R), "xXYZ")  # x prescribed, y and z free
     O.forces.setPermF(ball, (0, 0, -HOLD))
     O.run(1200, True)
     b.state.vel = (V_DRAG, 0, 0)
@@ -140,19 +136,8 @@ def fold(first, degrees=3.0):
     facet's interior is overlapped with no contact on it, the stderr."""
     t = math.tan(math.radians(degrees))
     tris = [[(0, -L, 0), (0, L, 0), (-L, 0, L * t)], [(0, L, 0), (0, -L, 0), (L, 0, L * t)]]
-    scene.reset()
-    O.materials.append(w.MesoMat(**MAT))
-    ids = [O.bodies.append(utils.facet(v, fixed=True, material=0)) for v in (tris if first == 0 else tris[::-1])]
     tris = tris if first == 0 else tris[::-1]
-    ball = O.bodies.append(utils.sphere((-0.3 * R, 0, R + 0.3 * R * t + 1e-6), R, material=0))
-    b = O.bodies[ball]
-    b.state.blockedDOFs = "xyXYZ"
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb()], verletDist=0),
-                 w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
-                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
-                 w.NewtonIntegrator(damping=0)]
-    scene.set_detection()
-    O.dt = 0.2 * math.sqrt(b.state.mass / MAT["kp"])
+    ids, ball, b = sphere_on(tris, (-0.3 * R, 0, R + 0.3 * R * t + 1e-6), "xyXYZ")
     doubled = uncovered = 0
     with Stderr() as err:
         O.forces.setPermF(ball, (0, 0, -PRESS))

@@ -208,7 +208,7 @@ from mesocontact import scene  # noqa: E402
 
 for gravity, error in ((None, TypeError), ((0, 0), ValueError), ((0, 0, -9.81, 0), ValueError), ((math.nan, 0, 0), ValueError),
                        ((0, math.inf, 0), ValueError), ((0, 0, "-9.81"), TypeError), ("xyz", TypeError), (9.81, TypeError),
-                       ((True, 0, 0), TypeError)):
+                       ((True, 0, 0), TypeError), ({0: 1, 1: 2, 2: 3}, TypeError), ({0.0, 1.0, -9.81}, TypeError)):
     try:
         scene.engines(gravity=gravity)
         check(False, f"engines(gravity={gravity!r}) refused", "accepted")

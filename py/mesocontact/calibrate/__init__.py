@@ -21,11 +21,11 @@ its result ``Fit``), ``cycles`` (``fit_cycles`` on F(delta), its result ``CycleF
 (parameters from dimensionless groups, from e and a contact time), ``verify`` (the fit through
 YADE, its picture). Every public name is reachable here.
 """
-from .data import AGAINST, PARAMETERS, Data, DataError, Setup, check_data, geometry, load_data  # noqa: F401
+from .data import AGAINST, PARAMETERS, SIGMA_MIN, UNITS, Data, DataError, Setup, check_data, geometry, load_data  # noqa: F401
 from .fitting import RESTARTS, Fit, fit  # noqa: F401
-from .cycles import CYCLE_PARAMETERS, CYCLE_STARTS, CycleFit, fit_cycles  # noqa: F401
+from .cycles import CYCLE_PARAMETERS, CYCLE_STARTS, MAGNITUDES, CycleFit, fit_cycles  # noqa: F401
 from .groups import contact_duration, from_groups, from_restitution_and_contact_time, material  # noqa: F401
-from .identify import NULL_RCOND, UNDETERMINED_FACTOR, Z95  # noqa: F401
+from .identify import EDGE_FACTOR, EDGE_POINTS, NULL_RCOND, UNDETERMINED_FACTOR, Z95, v_p_edge  # noqa: F401
 from .problem import EXPLORE_KEPT, EXPLORE_NFEV, SCREEN_CANDIDATES, SCREEN_POLISHED  # noqa: F401
 from .profile import MUTATIONS, PROFILE_CHI2, PROFILE_GRID, PROFILE_STARTS  # noqa: F401
 from .verify import plot, yade_check  # noqa: F401

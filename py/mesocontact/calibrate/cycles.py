@@ -14,12 +14,16 @@ from scipy.optimize import least_squares
 
 from .. import checks as _checks
 from .. import theory as _theory
-from .cycles_identify import _coverage, _identify, _profile
-from .fitting import RESTARTS, _open_ends
-from .problem import _from_x, _to_x
+from .cycles_identify import _OPEN_END, _coverage, _identify, _profile
+from .data import SIGMA_MIN, no_bools
+from .fitting import RESTARTS, _bound_text, _nulls, _open_ends
+from .problem import _check_result, _from_x, _names, _to_x
 
 CYCLE_PARAMETERS = ("k1", "kp", "kc", "phiF")
 CYCLE_STARTS = 3                  # the best grid starts (by their sum of squares) refitted to convergence
+# The largest |delta|, |force| and a12 the fit takes (any units): it is scale-free to 1e-150 and 1e150 (measured),
+# but its products (stiffness times overlap, squared residuals) leave floating point near 1e-300 and 1e300.
+MAGNITUDES = (1e-100, 1e100)
 
 
 @dataclass
@@ -50,10 +54,18 @@ class CycleFit:
         d = self.delta if delta is None else np.asarray(delta, float)
         return _theory.normal_force_path(d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12, self.interpolation)
 
+    def bound(self, n):
+        """The 95 % bound the cycles put on an undetermined parameter, in words (the data's units)."""
+        floor, top = _OPEN_END[n]
+        return _bound_text(self.ci95[n], (self.params["k1"] if floor is None else floor, top), "")
+
     def to_json(self):
+        # An undetermined parameter keeps its number here (studies read these keys as numbers); the reason says what it is.
         return {**{n: self.params[n] for n in CYCLE_PARAMETERS + ("shift",)}, "a12": self.a12,
+                "undetermined_reason": {n: f"undetermined by the cycles: {self.bound(n)}; the value is the fit's point, one "
+                                        "of many that fit as well" for n in self.undetermined},
                 "k2Interpolation": self.interpolation, "free": self.free, "ci95": _open_ends(self.ci95),
-                "correlation": {"names": self.free, "matrix": self.correlation}, "undetermined": self.undetermined,
+                "correlation": {"names": self.free, "matrix": _nulls(self.correlation)}, "undetermined": self.undetermined,
                 "statements": self.statements, "rms_residual": self.rms_residual, "max_residual": self.max_residual,
                 "force_scale": self.force_scale, "rms_relative": self.rms_residual / self.force_scale,
                 "max_relative": self.max_residual / self.force_scale, "chi2_reduced": self.chi2_reduced,
@@ -67,12 +79,16 @@ class CycleFit:
                  + (f", reduced chi2 {self.chi2_reduced:.3g}" if self.chi2_reduced is not None else "")
                  + f"; {self.wall_clock_s:.2f} s"]
         for n in CYCLE_PARAMETERS + ("shift",):
-            if n in self.free:
+            if n in self.undetermined:
+                lines.append(f"  {n:5s} = undetermined: {self.bound(n)} (95 %)")
+            elif n in self.free:
                 lo, hi = self.ci95[n]
-                lines.append(f"  {n:5s} = {self.params[n]:.6g}   95 %: [{lo:.4g}, {hi:.4g}]"
-                             + ("   UNDETERMINED" if n in self.undetermined else ""))
+                lines.append(f"  {n:5s} = {self.params[n]:.6g}   95 %: [{lo:.4g}, {hi:.4g}]")
             else:
                 lines.append(f"  {n:5s} = {self.params[n]:.6g}   (fixed)")
+        if self.undetermined:
+            lines.append("  (the curve uses the fit's point for " + ", ".join(f"{n} = {self.params[n]:.4g}" for n in self.undetermined)
+                         + ": one of many that fit as well)")
         lines.append("  branches: " + ", ".join(f"{k} {v}" for k, v in self.branches.items()))
         lines += ["  " + t for t in self.statements]
         return "\n".join(lines)
@@ -81,15 +97,27 @@ class CycleFit:
 def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
     """The inputs checked: (delta, force, weights, free names, values with the fixed ones).
     Raises ValueError naming what is wrong."""
+    for name, x in (("delta", delta), ("force", force), ("sigma", sigma)):
+        no_bools(name, x)
     d, F = _checks.finite_array("delta", delta), _checks.finite_array("force", force)
     if d.shape != F.shape:
         raise ValueError(f"delta and force must have the same length (got {len(d)} and {len(F)})")
+    if not d.size:
+        raise ValueError("delta and force are empty: there are no points to fit")
     _checks.positive("a12", a12)
+    lo, hi = MAGNITUDES
+    for name, x in (("delta", d), ("force", F), ("a12", np.array([a12]))):
+        big = float(np.max(np.abs(x)))
+        if big > hi or 0 < big < lo:
+            what = f"a12 = {a12!r}" if name == "a12" else f"{name}: the largest |{name}| = {big!r}"
+            raise ValueError(f"{what} is outside the range the fit computes in ({lo:g} to {hi:g}): rescale the units "
+                             "(any consistent units do, a12 in those of delta)")
     if interpolation not in _theory.K2_INTERPOLATIONS:
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {_theory.K2_INTERPOLATIONS}")
     if not isinstance(shift, bool):
         raise ValueError(f"shift = {shift!r} is invalid: must be True or False")
-    free = list(free)
+    free = _names("free", free, CYCLE_PARAMETERS)
+    free = list(CYCLE_PARAMETERS) if free is None else free
     for n in free:
         if n not in CYCLE_PARAMETERS:
             raise ValueError(f"free parameter {n!r} is unknown: must be among {CYCLE_PARAMETERS}"
@@ -100,6 +128,8 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
         free.append("shift")
     if not free:
         raise ValueError("free is empty: name a parameter to fit (or shift=True)")
+    if values is not None and not hasattr(values, "keys"):
+        raise TypeError(f"values = {values!r:.80} is invalid: must be a dict of parameter values")
     values = dict(values or {})
     for n in values:
         if n not in CYCLE_PARAMETERS + ("shift",):
@@ -123,18 +153,34 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
     if len(d) <= len(free):
         raise ValueError(f"delta: {len(d)} points cannot fix {len(free)} free parameters ({', '.join(free)}): "
                          "more points are needed than free parameters")
+    overlaps = len(np.unique(d))
+    if overlaps < len(free):
+        raise ValueError(f"delta: {overlaps} distinct overlap(s) ({d[0]!r}{', ...' if overlaps > 1 else ''}) cannot determine "
+                         f"{len(free)} free parameters ({', '.join(free)}): F(delta) needs a range of overlaps")
     scale = float(np.max(np.abs(F)))
     if not scale > 0:
         raise ValueError("force: every value is 0, there is no contact force to fit")
+    if not np.max(F) > 0:  # a fresh contact's first loading pushes (k1 delta > 0) whatever the parameters
+        raise ValueError(f"force: no value is > 0 (the largest is {float(np.max(F))!r}): the law's force is repulsive (> 0) "
+                         "on its first loading; if compression is negative in these data, pass -force")
+    if np.all(F == F[0]):
+        raise ValueError(f"force: all {len(F)} values are {F[0]!r}: a constant force carries no stiffness to fit "
+                         "(a wrong column?)")
     if sigma is None:
         w = np.full(len(d), 1.0 / scale)
     else:
+        if np.ndim(sigma) == 0 and not _checks.is_number(sigma):
+            raise ValueError(f"sigma = {sigma!r} is invalid: must be a number or one per point")
         s = np.broadcast_to(np.asarray(sigma, float), d.shape) if np.ndim(sigma) == 0 else _checks.finite_array("sigma", sigma)
         if s.shape != d.shape:
             raise ValueError(f"sigma must be one number or one per point ({len(s)} for {len(d)} points)")
         bad = np.flatnonzero(~(np.isfinite(s) & (s > 0)))
         if bad.size:
             raise ValueError(f"sigma[{bad[0]}] = {s[bad[0]]!r} is invalid: must be a finite number > 0")
+        bad = np.flatnonzero(s < SIGMA_MIN * scale)
+        if bad.size:
+            raise ValueError(f"sigma[{bad[0]}] = {s[bad[0]]!r} is invalid: must be >= {SIGMA_MIN:g} of the largest |force| "
+                             f"({scale!r}): the force is known to its rounding at best, and a smaller error overflows the weights")
         w = 1.0 / s
     return d, F, w, free, values
 
@@ -188,7 +234,9 @@ class _Cycles:
                     r = (self.force(self.params(names, x, fixed)) - self.F) * self.w
             except (ValueError, OverflowError, ZeroDivisionError):
                 r = np.full(len(self.d), np.inf)
-            return r if np.all(np.isfinite(r)) else np.full(len(self.d), 1e3)  # outside floating point: far from any data
+            if not np.all(np.isfinite(r)):
+                return np.full(len(self.d), 1e3)  # outside floating point: far from any data
+            return np.clip(r, -1e100, 1e100)  # finite but vast (a trial k of 1e250): the solver's differences stay finite
         return fun
 
     def solve(self, names, fixed, start):
@@ -227,6 +275,7 @@ def fit_cycles(delta, force, a12, free=CYCLE_PARAMETERS, values=None, sigma=None
         if "shift" in free:  # the law at the start's shift first: a free shift from a poor start runs off the data
             starts = [pb.best(free[:-1], fixed, starts, CYCLE_STARTS)[1]] + starts if len(free) > 1 else starts
         ssr_min, p = pb.best(free, fixed, starts, CYCLE_STARTS)
+        _check_result(p, free, "these F(delta)")
         res = pb.force(p) - F
         n, k = len(d), len(free)
         if sigma is None:

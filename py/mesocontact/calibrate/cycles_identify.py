@@ -33,7 +33,8 @@ def _jacobian(pb, names, p):
                 hi[n] = p[n]
             linear.append(False)
         step = (math.log(hi[n] / lo[n]) if not linear[-1] else (hi[n] - lo[n]) / (pb.dscale if n == "shift" else pb.kscale))
-        cols.append((pb.force(hi) - pb.force(lo)) * pb.w / step)
+        # a value so small that the step does not move it (a subnormal) has no derivative: the data do not see it
+        cols.append((pb.force(hi) - pb.force(lo)) * pb.w / step if step else np.zeros(len(pb.d)))
     return np.array(cols).T, linear
 
 
@@ -50,7 +51,7 @@ def _identify(pb, names, p, s2):
             if not (math.isfinite(half) and (n == "kc" or Z95 * sd[i] < 1)):  # shift: within the overlaps' size
                 undetermined.append(n)
             continue
-        f = math.exp(Z95 * sd[i]) if sd[i] < 700 else math.inf
+        f = math.exp(Z95 * sd[i]) if Z95 * sd[i] < 700 else math.inf  # exp overflows past 709
         ci[n] = [max(p[n] / f, p["k1"]) if n == "kp" else p[n] / f, min(p[n] * f, 1.0) if n == "phiF" else p[n] * f]
         if not f < UNDETERMINED_FACTOR:
             undetermined.append(n)
@@ -90,10 +91,12 @@ def _coverage(pb, p):
 def _moves(m, p, pb):
     """(side, value at the profile's far end, path t -> value from the fit (t = 0) to it (t = 1),
     the path's inverse): by UNDETERMINED_FACTOR either way, geometric (kp through eta; phiF capped
-    at 1); linear for shift (by the largest |delta|) and for kc at 0 (up to k1/10)."""
+    at 1); linear for shift (by the largest |delta|), for kc at 0 (up to k1/10) and for kp at k1
+    (eta = 0 to rounding, where no factor moves it: up to 2 k1)."""
     f, v = UNDETERMINED_FACTOR, p[m]
-    if m == "shift" or (m == "kc" and v <= 1e-12 * pb.kscale):
-        ends = [(0, v - pb.dscale), (1, v + pb.dscale)] if m == "shift" else [(1, 0.1 * pb.kscale)]
+    at_k1 = m == "kp" and not v / p["k1"] - 1 > 1e-12
+    if m == "shift" or (m == "kc" and v <= 1e-12 * pb.kscale) or at_k1:
+        ends = [(0, v - pb.dscale), (1, v + pb.dscale)] if m == "shift" else [(1, 2 * p["k1"] if at_k1 else 0.1 * pb.kscale)]
         return [(k, e, lambda t, e=e: v + t * (e - v), lambda x, e=e: (x - v) / (e - v)) for k, e in ends]
     k1 = p["k1"]
     g, g_inv = ((lambda x: x / k1 - 1), (lambda y: k1 * (1 + y))) if m == "kp" else ((lambda x: x), (lambda y: y))

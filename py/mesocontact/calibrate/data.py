@@ -11,6 +11,8 @@ from .. import theory as _theory
 
 PARAMETERS = ("k1", "kp", "kc", "phiF", "fa")
 AGAINST = ("particle", "wall")
+UNITS = {"k1": "N/m", "kp": "N/m", "kc": "N/m", "phiF": "", "fa": "N", "kca": "N/m"}  # SI units of the fitted parameters
+SIGMA_MIN = 1e-15                 # a restitution's error below this is below e's rounding (and its weight overflows)
 
 
 class DataError(ValueError):
@@ -25,9 +27,34 @@ class Data:
     source: str = ""
 
 
+def no_bools(name, value, error=ValueError):
+    """Refuses a bool among the numbers of ``value`` (a number or a sequence), naming it: numpy
+    reads True as 1.0, a speed or an overlap of 1, which is a slip, not a measurement."""
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind == "b" and value.size:
+            raise error(f"{name}[0] = {value.flat[0]!r} is invalid: a bool, not a number")
+        if value.dtype.kind != "O":
+            return
+        value = value.ravel().tolist()
+    if isinstance(value, (bool, np.bool_)):
+        raise error(f"{name} = {value!r} is invalid: a bool, not a number")
+    if isinstance(value, (list, tuple)):
+        for i, x in enumerate(value):
+            if isinstance(x, (bool, np.bool_)):
+                raise error(f"{name}[{i}] = {x!r} is invalid: a bool, not a number")
+
+
+def _floats(name, value, source):
+    no_bools(name, value, DataError)
+    try:
+        return np.asarray(value, float)
+    except (TypeError, ValueError):
+        raise DataError(f"{source}: {name} is invalid: must be a sequence of numbers (got {value!r:.80})") from None
+
+
 def check_data(v, e, sigma=None, source="data"):
-    """Data with every value checked: v > 0 and finite, 0 <= e <= 1, sigma > 0."""
-    v, e = np.asarray(v, float), np.asarray(e, float)
+    """Data with every value checked: v > 0 and finite, 0 <= e <= 1, sigma >= SIGMA_MIN."""
+    v, e = _floats("v", v, source), _floats("e", e, source)
     if v.shape != e.shape or v.ndim != 1:
         raise DataError(f"{source}: v and e must be two lists of the same length (got {v.shape} and {e.shape})")
     if len(v) == 0:
@@ -38,12 +65,16 @@ def check_data(v, e, sigma=None, source="data"):
         if bad.size:
             raise DataError(f"{source}: {name} = {x[bad[0]]!r} at point {bad[0] + 1} is invalid: must be {need}")
     if sigma is not None:
-        sigma = np.asarray(sigma, float)
+        sigma = _floats("sigma", sigma, source)
         if sigma.shape != v.shape:
             raise DataError(f"{source}: sigma must have one value per point ({sigma.shape} for {v.shape})")
         bad = np.flatnonzero(~(np.isfinite(sigma) & (sigma > 0)))
         if bad.size:
             raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be a finite number > 0")
+        bad = np.flatnonzero(sigma < SIGMA_MIN)
+        if bad.size:
+            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be >= {SIGMA_MIN:g} "
+                            "(e is known to its rounding at best; a smaller error overflows the fit's weights)")
     return Data(v, e, sigma, source)
 
 

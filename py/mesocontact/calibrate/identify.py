@@ -5,11 +5,17 @@ import math
 import numpy as np
 
 from .. import theory as _theory
+from .data import Setup
 from .problem import _scale
 
 Z95 = 1.959963984540054           # two-sided 95 % quantile of the normal distribution
 UNDETERMINED_FACTOR = 10.0        # a 95 % interval reaching beyond this factor either way: not determined
 NULL_RCOND = 1e-7                 # singular values below this fraction of the largest: a direction the data cannot see
+# v_p at the data's edge: fewer than EDGE_POINTS points faster than v_p (slower than it) while v_p lies
+# below EDGE_FACTOR times the fastest speed (above the slowest over EDGE_FACTOR): one point, or the
+# trend towards the last one, sets v_p, and the curve beyond it is the closed form's, not the data's.
+EDGE_POINTS = 2
+EDGE_FACTOR = 2.0
 
 
 def _log_jacobian(names, p, setup, data, w):
@@ -88,7 +94,7 @@ def _identify(names, p, setup, data, w, s2):
             if not math.isfinite(sd[i]):
                 undetermined.append(n)
             continue
-        f = math.exp(Z95 * sd[i]) if sd[i] < 700 else math.inf
+        f = math.exp(Z95 * sd[i]) if Z95 * sd[i] < 700 else math.inf  # exp overflows past 709
         lo, hi = p[n] / f, p[n] * f
         if n == "kp":
             lo = max(lo, p["k1"])
@@ -133,3 +139,70 @@ def _coverage_statements(setup, p, data, free):
             out.append("no point where the non-contact force changes e by more than 0.01: "
                        "fa needs slower collisions")
     return out
+
+
+def v_p_edge(v, v_p):
+    """Where v_p lies at the edge of the speeds v: a list of {"side": "fast" or "slow", "points":
+    the data points beyond v_p on that side, "speed": the fastest (slowest) speed}, empty when
+    v_p has EDGE_POINTS or more points on each side or lies far outside the data (EDGE_FACTOR)."""
+    v = np.asarray(v, float)
+    faster, slower = int(np.sum(v > v_p)), int(np.sum(v < v_p))
+    out = []
+    if faster < EDGE_POINTS and v_p < EDGE_FACTOR * v.max():
+        out.append({"side": "fast", "points": faster, "speed": float(v.max())})
+    if slower < EDGE_POINTS and v_p > v.min() / EDGE_FACTOR:
+        out.append({"side": "slow", "points": slower, "speed": float(v.min())})
+    return out
+
+
+def _edge_statements(edges, v_p, undetermined=()):
+    """v_p_edge's edges in words; v_p is the fit's point when a parameter it depends on is undetermined."""
+    loose = [n for n in undetermined if n in ("k1", "kp", "phiF", "fa")]
+    out = []
+    for e in edges:
+        n, speed = e["points"], e["speed"]
+        if e["side"] == "fast":
+            out.append(f"v_p = {v_p:.4g} m/s lies at the fast edge of the data: {n} point{'' if n == 1 else 's'} faster than it "
+                       f"(fewer than {EDGE_POINTS}; the fastest at {speed:.4g} m/s), so "
+                       + ("one point sets v_p" if n == 1 else "the trend towards the fastest points alone sets v_p")
+                       + "; beyond v_p the fitted e(v) climbs back towards 1 (Eq. 33), which the data do not show: "
+                       f"use the curve only up to {speed:.4g} m/s, or measure faster")
+        else:
+            out.append(f"v_p = {v_p:.4g} m/s lies at the slow edge of the data: {n} point{'' if n == 1 else 's'} slower than it "
+                       f"(fewer than {EDGE_POINTS}; the slowest at {speed:.4g} m/s), so e(v) below v_p (Eq. 32) rests on "
+                       + ("one point" if n == 1 else "no point") + f": use the curve only down to {speed:.4g} m/s, or measure slower")
+    if loose and out:
+        out[-1] += f" ({', '.join(loose)} undetermined: this v_p is the fit's point's, one of many that fit as well)"
+    return out
+
+
+def _kca_response(names, p, setup, data, w):
+    """How the fit moves with the assumed kca (kca is not fitted): d ln(parameter)/d ln(kca) of the
+    refitted free parameters, linearised at the fit (the least-squares response of the Jacobian
+    in the log coordinates, the directions the data cannot see left out). Parameters at 0 are
+    left out too (no logarithm)."""
+    J, at_zero = _log_jacobian(names, p, setup, data, w)
+    h = 1e-5
+    moved = [Setup(setup.m_r, setup.a12, setup.adhesion, setup.kca * math.exp(s * h), setup.interpolation) for s in (-1, 1)]
+    j = (moved[1].curve(data.v, p) - moved[0].curve(data.v, p)) * w / (2 * h)
+    dx = -np.linalg.lstsq(J, j, rcond=NULL_RCOND)[0]
+    return {n: float(dx[i]) for i, n in enumerate(names) if not at_zero[i]}
+
+
+def _kca_statements(setup, response):
+    """What the assumed kca does to the fit, in words (adhesion only)."""
+    if setup.adhesion == "none":
+        return []
+    if not math.isfinite(setup.kca):
+        return ["kca = inf is assumed, not fitted (--kca): no pull-off tail; a finite kca adds the tail's energy "
+                "fa^2/(2 kca) to what e(v) sees, and the fit then gives another fa"]
+    moves = [(n, s) for n, s in response.items() if abs(s) > 0.01]
+    head = (f"kca = {setup.kca:.4g} N/m is assumed, not fitted (--kca), and the fit holds for it: e(v) sees the non-contact "
+            "force through fa in contact and the pull-off tail's energy fa^2/(2 kca), so what the data fix is fa together "
+            "with kca")
+    if not moves:
+        return [head + "; at these speeds the fit hardly moves with kca (every d ln p/d ln kca below 0.01)"]
+    # x2, not x10: the slopes change along a decade of kca (measured: x2.5 predicted, x1.98 refitted)
+    return [head + "; assuming kca x2 moves the fit to " + ", ".join(f"{n} x{2 ** s:.3g}" for n, s in moves)
+            + " (" + ", ".join(f"d ln {n}/d ln kca = {s:+.3f}" for n, s in moves)
+            + ", linearised at the fit; refit with another kca for a larger change)"]

@@ -1,6 +1,7 @@
 """The least-squares problem: the fit's coordinates, the residuals, the starting points on grids of
 the dimensionless groups, the inputs checked, local solves and the multi-start."""
 import math
+import sys
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -21,13 +22,14 @@ SCREEN_POLISHED = 10              # ... in the fit itself (the profile's wider s
 def _to_x(name, p, scale):
     """The fit coordinate of a parameter (a start outside the domain, e.g. kp <= k1 after k1
     was moved, is put just inside it)."""
+    # A refit on data no law fits can run k1 to 0 or kp to inf (_exp): the coordinate stays a finite number.
     if name == "k1":
-        return math.log(p["k1"])
+        return min(math.log(max(p["k1"], sys.float_info.min)), 709.0)
     if name == "kp":
-        return math.log(max(p["kp"] - p["k1"], 1e-9 * p["k1"]))
+        return min(math.log(max(p["kp"] - p["k1"], 1e-9 * p["k1"], sys.float_info.min)), 709.0)
     if name == "phiF":
         return math.log(min(max(p["phiF"], 1e-12), 1.0))
-    return max(p[name], 0.0) / scale[name]  # kc, fa: linear, >= 0
+    return min(max(p[name], 0.0) / scale[name], 1e300)  # kc, fa: linear, >= 0
 
 
 def _from_x(names, x, fixed, scale):
@@ -35,10 +37,26 @@ def _from_x(names, x, fixed, scale):
     x = [float(xi) for xi in x]  # Python floats: the theory's range checks raise instead of numpy warning
     for name, xi in zip(names, x):
         if name not in ("kp",):
-            p[name] = math.exp(xi) if name in ("k1", "phiF") else xi * scale[name]
+            p[name] = _exp(xi) if name in ("k1", "phiF") else xi * scale[name]
     if "kp" in names:
-        p["kp"] = p["k1"] + math.exp(x[names.index("kp")])
+        p["kp"] = p["k1"] + _exp(x[names.index("kp")])
     return p
+
+
+def _exp(x):
+    """exp, inf beyond floating point instead of math's OverflowError (the residuals then say 'far')."""
+    return math.exp(x) if x < 709.0 else math.inf
+
+
+def _check_result(p, names, what):
+    """The fitted parameters must be numbers the law takes: data that no law fits can run the
+    solver to a k1 of 0 or an infinite kp. Raises ValueError naming the parameter and its value."""
+    for n in names:
+        v = p[n]
+        ok = math.isfinite(v) and (v >= 0 if n in ("kc", "fa") else True if n == "shift" else v >= sys.float_info.min)
+        if not ok:
+            raise ValueError(f"{n}: the fit ran it to {v!r}, out of floating point: {what} are not those of the law "
+                             "(check the columns, their signs and units)")
 
 
 def _bounds(names):
@@ -134,11 +152,17 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
     """The fit's inputs checked, with the defaults filled in: (Data, Setup, free names, values).
     Raises ValueError (DataError for the data) naming what is wrong."""
     if not isinstance(data, Data):
+        if not isinstance(data, (tuple, list)) or len(data) not in (2, 3):
+            raise TypeError(f"data = {data!r:.80} is invalid: must be a calibrate.Data or (v, e[, sigma])")
         data = check_data(*data)
     m_r, a12 = geometry(radius, density, against)
     if adhesion not in _theory.ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {_theory.ADHESION_MODES}")
+    if interpolation not in _theory.K2_INTERPOLATIONS:
+        raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {_theory.K2_INTERPOLATIONS}")
+    _checks.positive_or_inf("kca", kca)
     setup = Setup(m_r, a12, adhesion, kca, interpolation)
+    free = _names("free", free, PARAMETERS)
     free = list(free if free is not None else (("kp", "kc", "phiF") + (("fa",) if adhesion != "none" else ())))
     for n in free:
         if n not in PARAMETERS:
@@ -151,12 +175,17 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
         raise ValueError(f"kca = {kca!r} is invalid: must be > 0 with adhesion {adhesion!r} (inf allowed for 'jumpIn')")
     if adhesion == "reversible" and not math.isfinite(kca):
         raise ValueError("kca = inf is invalid with adhesion 'reversible': the pull-in range fa/kca needs a finite kca")
+    if values is not None and not hasattr(values, "keys"):
+        raise TypeError(f"values = {values!r:.80} is invalid: must be a dict of parameter values")
     values = dict(values or {})
     for n in values:
         if n not in PARAMETERS:
             raise ValueError(f"value given for unknown parameter {n!r}: must be among {PARAMETERS}")
     values.setdefault("kc", 0.0)
     values.setdefault("fa", 0.0)
+    for n, check in (("k1", _checks.positive), ("kc", _checks.nonnegative), ("fa", _checks.nonnegative)):
+        if n in values:
+            check(n, values[n])
     missing = [n for n in PARAMETERS if n not in values and n not in free]
     if "k1" not in values:
         missing = ["k1"] + [n for n in missing if n != "k1"]
@@ -174,7 +203,34 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
     if speeds < len(free):
         raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
                         "measure at more speeds or fix some (free=...)")
+    for i, v in enumerate(data.v):  # the fit moves from here: a collision outside floating point is named now
+        try:
+            setup.outcome(float(v), values)
+        except ValueError as e:
+            raise DataError(f"{data.source}: v = {v!r} at point {i + 1}: the collision with the starting values (k1 = "
+                            f"{values['k1']!r} N/m, kp = {values['kp']!r} N/m, phiF = {values['phiF']!r}; m_r = {m_r:.4g} kg, "
+                            f"a12 = {a12:.4g} m) cannot be computed: {e}") from None
     return data, setup, free, values
+
+
+def _names(what, names, allowed):
+    """``names`` (None, or an iterable of names) checked for its type: a string would be read letter by letter."""
+    if names is None:
+        return None
+    if isinstance(names, str):
+        raise TypeError(f"{what} = {names!r} is invalid: must be a list of names, e.g. {what}={[names]!r}")
+    try:
+        return list(names)
+    except TypeError:
+        raise TypeError(f"{what} = {names!r} is invalid: must be a list of names among {allowed}") from None
+
+
+def _count(name, value, least):
+    """An integer option (starts, bootstrap, seed) checked: a float or a bool is a slip."""
+    import numbers
+    if not (isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)) and value >= least):
+        raise ValueError(f"{name} = {value!r} is invalid: must be an integer >= {least}")
+    return int(value)
 
 
 class _Problem:

@@ -25,6 +25,8 @@ def _profile_values(m, p, setup, data):
     f = UNDETERMINED_FACTOR
     if m == "kp":
         eta = p["kp"] / p["k1"] - 1
+        if not eta > 1e-12:  # kp at k1 to rounding: no factor moves eta = 0; tried at eta = 1
+            return [(1, 2 * p["k1"])]
         return [(-1, p["k1"] * (1 + eta / f)), (1, p["k1"] * (1 + eta * f))]
     if m in ("kc", "fa") and p[m] <= 1e-12 * _scale(m, p["k1"], setup.m_r, data.v):
         return [(1, 0.1 * _scale(m, p["k1"], setup.m_r, data.v))]
@@ -39,6 +41,8 @@ def _path(m, p, moved):
     through eta), linear from 0 for a parameter at 0."""
     if m == "kp":
         e0, e1 = p["kp"] / p["k1"] - 1, moved / p["k1"] - 1
+        if not e0 > 1e-12:  # from eta = 0: linear in eta
+            return lambda t: p["k1"] * (1 + t * e1)
         return lambda t: p["k1"] * (1 + e0 * (e1 / e0) ** t)
     if p[m] <= 0:
         return lambda t: t * moved
@@ -50,6 +54,8 @@ def _path_fraction(m, p, moved, x):
     (beyond 1 past `moved`, negative on the other side of the fit)."""
     if m == "kp":
         e0, e1, e = p["kp"] / p["k1"] - 1, moved / p["k1"] - 1, x / p["k1"] - 1
+        if not e0 > 1e-12:
+            return e / e1
         return math.log(e / e0) / math.log(e1 / e0) if e > 0 else -math.inf
     if p[m] <= 0:
         return x / moved

@@ -1,10 +1,11 @@
 """A calibration run through YADE (pair collisions at the data's speeds) and its picture."""
 import math
+import warnings
 
 import numpy as np
 
 from .. import theory as _theory
-from .data import PARAMETERS, Setup, geometry
+from .data import PARAMETERS, UNITS, Setup, geometry
 from .groups import material
 
 
@@ -13,14 +14,17 @@ def yade_check(fitted, velocities, radius, density, against="particle", progress
     a list of (v, e_yade, e_fitted_curve). fitted: calibration.json's dict."""
     from .. import pair  # needs YADE
     kca = fitted["kca"] if fitted.get("kca") is not None else math.inf
-    mat = material(fitted, fitted["adhesion"], kca, fitted["k2Interpolation"], density)
+    with warnings.catch_warnings():  # the report said which parameters are undetermined; the check runs the fit's point
+        warnings.simplefilter("ignore", UserWarning)
+        mat = material(fitted, density=density)
+    point = fitted.get("fit_point") or fitted  # calibration.json before the fit's point was written: the values themselves
     setup = Setup(*geometry(radius, density, against), fitted["adhesion"], kca, fitted["k2Interpolation"])
     out = []
     for i, v in enumerate(velocities):
         s = pair.build(radius, float(v), dict(mat)) if against == "particle" else \
             pair.build_wall(radius, float(v), dict(mat), wall_material=dict(mat))
         r = pair.collide(s, max_contact_times=15)
-        e_fit = float(setup.curve(float(v), fitted)[0])
+        e_fit = float(setup.curve(float(v), point)[0])
         out.append((float(v), float(r.e), e_fit))
         if progress:
             print(f"  YADE check {i + 1}/{len(velocities)}: v = {v:.4g} m/s  e_yade = {r.e:.5f}  e_fit = {e_fit:.5f}", flush=True)
@@ -60,10 +64,24 @@ def plot(fit, path, yade_points=None, truth=None):
     ax.set_ylim(-0.03, 1.03)
     ax.set_xlabel("approach speed v [m/s]")
     ax.set_ylabel("restitution e")
-    txt = ", ".join(f"{n} = {p[n]:.3g}" for n in PARAMETERS if n != "fa" or fit.setup.adhesion != "none")
-    mode = "no adhesion" if fit.setup.adhesion == "none" else f"adhesion {fit.setup.adhesion!r}"
-    ax.set_title(f"{mode}; free: {', '.join(fit.free)}\n{txt} (N/m, N)", fontsize=9)
+    txt = ", ".join(_title_value(fit, n) for n in PARAMETERS if n != "fa" or fit.setup.adhesion != "none")
+    mode = "no adhesion" if fit.setup.adhesion == "none" else \
+        f"adhesion {fit.setup.adhesion!r}, kca = {fit.setup.kca:.3g} N/m assumed"
+    ax.set_title(f"{mode}; free: {', '.join(fit.free)}\n{txt}", fontsize=9)
+    if fit.v_p_edge:  # one point sets v_p: the curve past the data is the closed form's, not the data's
+        ax.plot([], [], " ", label=f"v_p at the data's {' and '.join(e['side'] for e in fit.v_p_edge)} edge: "
+                "the curve past the data is extrapolated")
+    for x in (d.v.min(), d.v.max()):  # the data's range: beyond it the curve is the model's alone
+        ax.axvline(x, color="0.5", lw=0.6, ls=":")
     ax.legend(fontsize=8, loc="best")
     fig.tight_layout()
     _out.savefig_atomic(fig, path, dpi=120)
     plt.close(fig)
+
+
+def _title_value(fit, n):
+    """'kp = 500 N/m', or 'kc undetermined (at most 0.0012 N/m)' for a parameter the data do not fix."""
+    if n in fit.undetermined:
+        b = fit.bound(n)
+        return f"{n} undetermined" + ("" if b.startswith("no bound") else f" ({b})")
+    return f"{n} = {fit.params[n]:.3g}" + (" " + UNITS[n] if UNITS[n] else "")

@@ -14,8 +14,8 @@ from .common import (
     FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
 )
 from .runs import (
-    PERTURBED, PERTURBED_MORE, RETURNS, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic, drag_share, factor_run,
-    large_compression, pull, rates, timestep_study,
+    PERTURBED, PERTURBED_MORE, REPEAT_AMPLITUDES, REPEAT_FACTORS, RETURNS, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic,
+    drag_share, factor_run, large_compression, pull, rates, repeats, timestep_study,
 )
 from .report import factor_report, factor_table
 from ..affine import run as affine_run
@@ -37,7 +37,8 @@ OPTIONS = (
                      help="fig17: pull until Dx = UNTIL (default 9); profile: likewise (default 0.3); fig19: compress until "
                           "Dx = -UNTIL (default 3) (in d0)")),
     ("--factors", dict(default=None, help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 "
-                                          "and the perturbed 1.000001, 1.000002, 0.999999)")),
+                                          "and the perturbed 1.000001, 1.000002, 0.999999); repeats: multiples of the "
+                                          "campaign's tension step (default 1 +- k 1e-6, k = 1..5)")),
     ("--runs", dict(default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")),
     ("--material", dict(default="appendixF", choices=sorted(sample.MATERIALS),
                         help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")),
@@ -74,7 +75,7 @@ OPTIONS = (
                         " fig17 without crack events and snapshots)")),
 )
 # The periods a job runs when --periods is not given (FAST, SLOW otherwise).
-DEFAULT_PERIODS = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"]}
+DEFAULT_PERIODS = {"rates": RATE_PERIODS, "fig19": (FAST,), "fig16": PERIODS["tension"], "repeats": PERIODS["tension"][:1]}
 MPI_FIGURES = ("fig16", "fig17", "fig18")
 PREPARATION_FIGURES = ("factors", "fig16", "fig18", "affine", "profile")  # the jobs that take --sinter and --seed
 
@@ -211,6 +212,10 @@ JOBS = {
     "fig19": (lambda a, amps, slow, periods: large_compression(a.out, a.quick, speed=a.speed, until=a.until or 3.0),
               "compression to large strain with snapshots (Fig. 19)."),
     "factors": (_factors, "one pull of the factor study (a preparation), then its table."),
+    "repeats": (lambda a, amps, slow, periods: repeats(a.out, amps or REPEAT_AMPLITUDES, a.factors or REPEAT_FACTORS, periods,
+                                                       a.quick),
+                "the tested sample's tension cycles with the campaign's step perturbed by 1e-6 .. 5e-6 (issue #60): the "
+                "spread of single runs' post-peak verdicts."),
     "affine": (lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
                "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
     "profile": (lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a), until=a.until or 0.3,

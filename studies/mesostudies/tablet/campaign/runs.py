@@ -322,6 +322,29 @@ def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) 
     return timestep_table(outdir, quick)
 
 
+# The repeats (issue #60): the tested sample's tension cycles with the campaign's step
+# (DT_FACTORS['tension']) multiplied by 1 + k 1e-6, k = +-1 .. +-5, far below any integration error:
+# the sample is chaotic after the peak, so the spread over these runs is what a single run's
+# post-peak verdict may move by. The unperturbed runs are the campaign's own (factor 1 repeats them).
+REPEAT_FACTORS = tuple(1 + s * k * 1e-6 for k in range(1, 6) for s in (1, -1))
+REPEAT_AMPLITUDES = (0.2, 0.1)
+
+
+def repeats(outdir, amplitudes=REPEAT_AMPLITUDES, factors=REPEAT_FACTORS, periods=PERIODS["tension"][:1], quick=False,
+            progress=True):
+    """The campaign's tension cycles (run_cycles) at each factor, amplitude and period, the step
+    DT_FACTORS['tension'] x factor, each named repeat-x<factor>-tension-Dx<a>-P<period> (complete
+    runs are read back). Returns {name: description}."""
+    out = {}
+    for factor in factors:
+        for amplitude in amplitudes:
+            for period in periods:
+                info, _ = run_cycles(outdir, "tension", amplitude, period, quick, progress,
+                                     prefix=f"repeat-x{factor:.10g}-", dt_factor=DT_FACTORS["tension"] * factor)
+                out[info["name"]] = info
+    return out
+
+
 def drag_share(outdir, quick=False, amplitude=0.2, period=FAST, progress=True):
     """How much of the tension peak the background drag supplies: one tension cycle with the
     drag relative to the lab (the old form), relative to the contacts (the tests' form) and
