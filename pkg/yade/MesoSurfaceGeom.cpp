@@ -122,7 +122,7 @@ namespace {
 		return false;
 	}
 
-	enum class Which { Any, Same, Other }; // which facets may take a contact: by material, against the one it is on
+	enum class Which { Any, Other }; // which facets may take a contact: any, or of another material than the one it is on
 
 	// Whether the contact point p of facet `from` is another facet's (meso::leftToOtherFacet).
 	bool leavesTo(
@@ -140,7 +140,7 @@ namespace {
 		const bool interior = !onEdge(from, p, tol);
 		return anyFacet(scene, sphere, sphereId, shift2, from.id, [&](const FacetView& other) {
 			const bool same = other.body->material == from.body->material;
-			if ((which == Which::Same && !same) || (which == Which::Other && same)) return false;
+			if (which == Which::Other && same) return false;
 			if (!meso::leftToOtherFacet(p, from.id, centre, other.v[0], other.v[1], other.v[2], other.id, tol)) return false;
 			if (interior && !overlapWarned.exchange(true)) // a point inside one facet lies on another: they overlap
 				std::cerr << "WARNING Ig2_Facet_Sphere_MesoScGeom: facets #" << from.id << " and #" << other.id << " overlap where sphere #"

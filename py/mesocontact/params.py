@@ -6,6 +6,10 @@ import sys
 from .checks import is_number, nonnegative, positive, positive_or_inf
 
 
+# Every nonzero number a MesoMat holds lies in this range (pkg/core/MesoParams.hpp, kSmallestValue/kLargestValue).
+MESOMAT_RANGE = (1e-100, 1e100)
+
+
 def _representable(f, zero_ok=False):
     """The helper's result must be a finite number > 0 (>= 0 where zero_ok): inputs whose result
     overflows or underflows raise ValueError naming them, instead of returning inf or 0."""
@@ -208,7 +212,7 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
     radius2 = radius if radius2 is None else radius2
     positive_or_inf("radius2", radius2)
-    if not 1e-100 <= density <= 1e100:  # what MesoMat takes; beyond, the masses leave floating point
+    if not MESOMAT_RANGE[0] <= density <= MESOMAT_RANGE[1]:  # what MesoMat takes; beyond, the masses leave floating point
         raise ValueError(f"density = {density!r} is invalid: must lie in [1e-100, 1e100] [kg/m^3], as MesoMat's")
     m1 = sphere_mass(radius, density)
     try:
@@ -393,5 +397,5 @@ def _within_mesomat(material, inputs):
     """Every nonzero number of a material this module returns lies where MesoMat takes it
     ([1e-100, 1e100]): a result MesoMat would refuse is refused here, naming the inputs."""
     for k, v in material.items():
-        if is_number(v) and v != 0 and k not in ("frictionAngle", "poisson", "phiF", "phiD") and not 1e-100 <= abs(v) <= 1e100:
+        if is_number(v) and v != 0 and k not in ("frictionAngle", "poisson", "phiF", "phiD") and not MESOMAT_RANGE[0] <= abs(v) <= MESOMAT_RANGE[1]:
             raise ValueError(f"{inputs}: they give {k} = {v!r}, outside the [1e-100, 1e100] a MesoMat takes (0 allowed)")
