@@ -24,7 +24,8 @@ O.materials.append(mat)
 h = 2 * R * 0.99  # lattice spacing: pressed 1 % of d into each neighbour
 z0 = (n + 2) * h
 members = [utils.sphere((i * h, j * h, z0 + k * h), R, material=mat)
-           for i in range(-n, n + 1) for j in range(-n, n + 1) for k in range(-n, n + 1) if i * i + j * j + k * k <= n * (n + 1)]  # no sphere with a single neighbour
+           for i in range(-n, n + 1) for j in range(-n, n + 1) for k in range(-n, n + 1)
+           if i * i + j * j + k * k <= n * (n + 1)]  # no sphere with a single neighbour
 ids = O.bodies.append(members)
 wall = O.bodies.append(utils.box((0, 0, -R), (20 * R, 20 * R, R), material=mat, fixed=True))
 O.engines = [
@@ -78,7 +79,8 @@ def watch():
     worst[0] = max(worst[0], abs(O.energy.total() - e0) / ek0)
     zc = sum(O.bodies[i].state.pos[2] for i in ids) / len(ids)
     vz = sum(O.bodies[i].state.vel[2] for i in ids) / len(ids)
-    plot.addData(t=O.time, z_com=zc, vz_com=vz, Ek=O.energy["kinetic"], dissipated=O.energy.total() - O.energy["kinetic"])
+    plot.addData(t=O.time, z_com=zc, vz_com=vz, Ek=O.energy["kinetic"],
+                 dissipated=O.energy.total() - O.energy["kinetic"])
 
 
 O.engines = O.engines + [w.PyRunner(iterPeriod=50, command="watch()")]

@@ -22,7 +22,8 @@ clumps = []
 for c in range(N):
     x, y, z = rnd.uniform(-6 * R, 6 * R), rnd.uniform(-6 * R, 6 * R), 3 * R + 3.5 * R * c
     shape = [(0, 0, 0), (1.6 * R, 0, 0)] if c % 2 else [(0, 0, 0), (1.6 * R, 0, 0), (0.8 * R, 1.4 * R, 0)]
-    cid, mids = O.bodies.appendClumped([utils.sphere((x + dx, y + dy, z + dz), R, material=mat) for dx, dy, dz in shape])
+    cid, mids = O.bodies.appendClumped([utils.sphere((x + dx, y + dy, z + dz), R, material=mat)
+                                        for dx, dy, dz in shape])
     O.bodies[cid].state.angVel = (rnd.uniform(-50, 50), rnd.uniform(-50, 50), 0)
     clumps.append((cid, mids))
 O.engines = [

@@ -48,7 +48,8 @@ def record():
 O.engines = [
     w.ForceResetter(),
     w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-    w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+    w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                      [w.Law2_ScGeom_MesoPhys_Meso()]),
     w.PeriTriaxController(goal=(-P0, -P0, -P0), stressMask=0b111, maxUnbalanced=0.05, maxStrainRate=(2.0, 2.0, 2.0),
                           dynCell=True, mass=0.2 * N * params.sphere_mass(R, RHO) / side, doneHook="done_isotropic()"),
     w.NewtonIntegrator(damping=0.3),
@@ -66,7 +67,8 @@ shear = [i for i, s in enumerate(d["shear"]) if s]
 qmax = max(d["q"][i] for i in shear)
 eps_end = d["eps_z"][shear[-1]]
 p_iso = d["p"][shear[0]]
-print(f"shear: {O.iter - stage['iter0']} steps, axial strain {eps_end:.3f}, peak q = {qmax:.4g} Pa = {qmax / P0:.2f} p0")
+print(f"shear: {O.iter - stage['iter0']} steps, axial strain {eps_end:.3f}, peak q = {qmax:.4g} Pa = "
+      f"{qmax / P0:.2f} p0")
 ok = abs(p_iso / P0 - 1) < 0.1 and qmax > 0.2 * P0
 print("periodic_triaxial: " + ("ok" if ok else "FAILED"))
 sys.exit(0 if ok else 1)

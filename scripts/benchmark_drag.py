@@ -39,7 +39,8 @@ def lattice():
     O.cell.setBox(n * s, n * s, n * s)
     K = 1e4
     O.materials.append(w.MesoMat(k1=K, kp=5 * K, kc=K, phiF=0.05, gammaN=1e-4, fa=1e-4, kca=1e3, adhesion="reversible",
-                                 frictionAngle=0.5, kt=0.2 * K, gammaT=2e-5, kr=0.1 * K, gammaR=5e-6, muR=0.1, ko=0.1 * K,
+                                 frictionAngle=0.5, kt=0.2 * K, gammaT=2e-5, kr=0.1 * K, gammaR=5e-6, muR=0.1,
+                                 ko=0.1 * K,
                                  gammaO=5e-6, muO=0.1, density=2000.0))
     rng = random.Random(1)
     for i in range(n):
@@ -90,19 +91,23 @@ def measure(name):
         O.run(a.steps, True)
         total = sum(e.execTime for e in O.engines)
         shares[v] = drag.execTime / total if total else None
-        engines[v] = {f"{k}:{type(e).__name__}": e.execTime * 1e-6 / a.steps for k, e in enumerate(O.engines)}  # ms per step
+        # ms per step
+        engines[v] = {f"{k}:{type(e).__name__}": e.execTime * 1e-6 / a.steps for k, e in enumerate(O.engines)}
         O.timingEnabled = False
     used = drag.lawSumSteps
-    rep = {"scene": name, "bodies": len(O.bodies), "contacts": contacts, "ms_per_step_median": {v: statistics.median(per[v]) for v in VARIANTS},
+    rep = {"scene": name, "bodies": len(O.bodies), "contacts": contacts,
+           "ms_per_step_median": {v: statistics.median(per[v]) for v in VARIANTS},
            "ratio_to_none_median": ratios, "drag_share_of_step": shares, "law_sum_steps": used,
-           "engine_ms_per_step": engines, "ns_per_contact_and_step_median": {v: statistics.median(per[v]) * 1e6 / contacts for v in VARIANTS},
+           "engine_ms_per_step": engines,
+           "ns_per_contact_and_step_median": {v: statistics.median(per[v]) * 1e6 / contacts for v in VARIANTS},
            "rounds": a.rounds, "steps_per_turn": a.steps}
     print(f"{name}: {len(O.bodies)} bodies, {contacts} contacts", flush=True)
     for v in VARIANTS:
         print(f"  {v:7s} {rep['ms_per_step_median'][v]:7.3f} ms/step  x{ratios[v]:.3f} of none  drag share "
               + (f"{shares[v] * 100:5.1f} %" if shares[v] is not None else "-"), flush=True)
     for v in ("engine", "law"):
-        print(f"  by engine ({v}): " + ", ".join(f"{k.split(':')[1]} {t:.3f}" for k, t in engines[v].items()) + " ms/step", flush=True)
+        print(f"  by engine ({v}): " + ", ".join(f"{k.split(':')[1]} {t:.3f}" for k, t in engines[v].items())
+              + " ms/step", flush=True)
     return rep
 
 

@@ -48,10 +48,13 @@ args = ap.parse_args()
 laws = args.laws.split(",")
 if any(n not in ALL for n in laws):
     sys.exit(f"benchmark_laws: --laws must be taken from {','.join(ALL)}")
-if args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 0 or (args.sessions == 0 and not args.merge):
-    sys.exit("benchmark_laws: --bodies must be >= 100, --steps >= 5, --rounds >= 3, --sessions >= 1 (0 only with --merge)")
+if (args.bodies < 100 or args.steps < 5 or args.rounds < 3 or args.sessions < 0
+        or (args.sessions == 0 and not args.merge)):
+    sys.exit("benchmark_laws: --bodies must be >= 100, --steps >= 5, --rounds >= 3, --sessions >= 1 "
+             "(0 only with --merge)")
 SCENE = os.path.join(here, "benchmark_laws_scene.py")
-PAIRS = (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"), ("meso-full-rotations", "cohesion-moment"),
+PAIRS = (("meso-normal", "cundall-strack"), ("meso-full", "cohesion-moment"),
+         ("meso-full-rotations", "cohesion-moment"),
          ("meso-normal", "cohesion-moment"), ("meso-full", "cundall-strack"))
 PROFILE_BODIES, PROFILE_STEPS = 2000, 30
 
@@ -66,7 +69,8 @@ def profile():
     inside the time steps only (not YADE's start-up): whole step and Law2::go() per contact, and
     what go() spends in its callees."""
     print(f"profile (callgrind instructions, {PROFILE_BODIES} spheres, -j1, all time steps):")
-    symbols = {"cundall-strack": "Law2_ScGeom_FrictPhys_CundallStrack::go(", "luding-basic": "Law2_ScGeom_LudingPhys_Basic::go(",
+    symbols = {"cundall-strack": "Law2_ScGeom_FrictPhys_CundallStrack::go(",
+               "luding-basic": "Law2_ScGeom_LudingPhys_Basic::go(",
                "meso-normal": "Law2_ScGeom_MesoPhys_Meso::go(", "meso-full": "Law2_ScGeom_MesoPhys_Meso::go(",
                "meso-full-rotations": "Law2_ScGeom_MesoPhys_Meso::go(",
                "cohesion-moment": "Law2_ScGeom6D_CohFrictPhys_CohesionMoment::go("}
@@ -76,11 +80,13 @@ def profile():
             # Only the time steps are collected (not YADE's start-up nor building the scene); the first step,
             # which creates the contacts, is among them, diluted over all.
             cmd = ["valgrind", "--tool=callgrind", "--trace-children=yes", "--collect-atstart=no",
-                   "--toggle-collect=yade::Scene::moveToNextTimeStep()", f"--callgrind-out-file={out}", args.yade, "-j1", "-n", "-x",
+                   "--toggle-collect=yade::Scene::moveToNextTimeStep()", f"--callgrind-out-file={out}", args.yade,
+                   "-j1", "-n", "-x",
                    SCENE, os.path.join(tmp, "p.json"), str(PROFILE_BODIES), str(PROFILE_STEPS), n, "1"]
             subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             prof = max((os.path.join(tmp, f) for f in os.listdir(tmp) if f.startswith("cg.")), key=os.path.getsize)
-            tree = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--tree=calling", prof], capture_output=True, text=True).stdout
+            tree = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--tree=calling", prof],
+                                  capture_output=True, text=True).stdout
             with open(os.path.join(tmp, "p.json")) as f:
                 contacts = json.load(f)["laws"][n]["contacts"]
         total = int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", tree).group(1).replace(",", ""))
@@ -100,12 +106,14 @@ def profile():
                 if not mc:
                     break
                 cost, count = callees.get(mc.group(2), (0, 0))
-                callees[mc.group(2)] = (cost + int(mc.group(1).replace(",", "")), count + int(mc.group(3).replace(",", "")))
+                callees[mc.group(2)] = (cost + int(mc.group(1).replace(",", "")),
+                                        count + int(mc.group(3).replace(",", "")))
         calls = max(int(m.group(1).replace(",", "")) for m in
-                    (re.search(r"\((\d[\d,]*)x\)", ln) for ln in lines if symbols[n] in ln and ">" in ln and "thunk" not in ln) if m)
+                    (re.search(r"\((\d[\d,]*)x\)", ln) for ln in lines if symbols[n] in ln and ">" in ln
+                     and "thunk" not in ln) if m)
         steps = calls / contacts
-        print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} step {total / calls:6.0f} per contact; Law2::go() {law / calls:5.0f} per call "
-              f"({law / total:5.1%} of the step); in go():")
+        print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} step {total / calls:6.0f} per contact; Law2::go() "
+              f"{law / calls:5.0f} per call ({law / total:5.1%} of the step); in go():")
         for name, (cost, count) in sorted(callees.items(), key=lambda kv: -kv[1][0]):
             print(f"      {cost / calls:6.0f}  {name[-60:]} ({count / calls:.1f} per call)")
         print(f"      ({steps:.0f} steps)")
@@ -115,27 +123,33 @@ if args.profile:
     profile()
     sys.exit(0)
 
-KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")  # per round, as the scene writes them
+# per round, as the scene writes them
+KEYS = ("step_ns", "interaction_loop_ns", "law2_ns", "split_step_ns", "serial_loop_ns")
 # Measurements merged over the sessions: runs[threads][law] = lists over all rounds.
 runs, info = {1: {}, 2: {}}, {}
 with tempfile.TemporaryDirectory() as tmp:
     for session in range(args.sessions):
         for threads in (1, 2):
             path = os.path.join(tmp, f"j{threads}.json")
-            cmd = [args.yade, f"-j{threads}", "-n", "-x", SCENE, path, str(args.bodies), str(args.steps), ",".join(laws), str(args.rounds), "1"]
+            cmd = [args.yade, f"-j{threads}", "-n", "-x", SCENE, path, str(args.bodies), str(args.steps),
+                   ",".join(laws), str(args.rounds), "1"]
             print(f"session {session + 1}/{args.sessions}:", " ".join(cmd), flush=True)
             subprocess.run(cmd, check=True, stdout=sys.stdout, stderr=subprocess.DEVNULL)
             with open(path) as f:
                 r = json.load(f)
-            info = {k: r[k] for k in ("bodies", "steps", "mesoPhys_bytes", "mesoTangentialPhys_bytes", "frictPhys_bytes")}
+            info = {k: r[k] for k in ("bodies", "steps", "mesoPhys_bytes", "mesoTangentialPhys_bytes",
+                                      "frictPhys_bytes")}
             for n, L in r["laws"].items():
                 M = runs[threads].setdefault(n, {"contacts": L["contacts"], "forces": L["forces"]})
                 for key in KEYS:
                     M.setdefault(key, []).extend(L[key])
 
-if args.json and args.sessions:  # this invocation's own measurements only, so that pooling them later counts nothing twice
+# this invocation's own measurements only, so that pooling them later counts nothing twice
+if args.json and args.sessions:
     with open(args.json, "w") as f:
-        json.dump({"info": info, "runs": {t: {n: {k: v for k, v in L.items() if k != "forces"} for n, L in r.items()} for t, r in runs.items()}}, f)
+        json.dump({"info": info,
+                   "runs": {t: {n: {k: v for k, v in L.items() if k != "forces"} for n, L in r.items()}
+                            for t, r in runs.items()}}, f)
 for path in args.merge:
     with open(path) as f:
         old = json.load(f)
@@ -154,17 +168,19 @@ for path in args.merge:
 
 r1, r2 = runs[1], runs[2]
 rounds_total = len(r1[laws[0]]["step_ns"])
-print(f"\n{info['bodies']} spheres, {r1[laws[0]]['contacts']} contacts; {rounds_total} rounds of {info['steps']} steps per law and thread "
-      f"count;\ncontact physics: MesoPhys {info['mesoPhys_bytes']} bytes, MesoTangentialPhys {info['mesoTangentialPhys_bytes']} "
-      f"(FrictPhys {info['frictPhys_bytes']})")
-print("medians over the rounds, per contact; Law2 = YADE's LawDispatcher, share = of the step with separate dispatchers")
+print(f"\n{info['bodies']} spheres, {r1[laws[0]]['contacts']} contacts; {rounds_total} rounds of {info['steps']} steps "
+      f"per law and thread count;\ncontact physics: MesoPhys {info['mesoPhys_bytes']} bytes, MesoTangentialPhys "
+      f"{info['mesoTangentialPhys_bytes']} (FrictPhys {info['frictPhys_bytes']})")
+print("medians over the rounds, per contact; Law2 = YADE's LawDispatcher, share = of the step with separate "
+      "dispatchers")
 for threads, r in runs.items():
-    print(f"\n-j{threads}: {'law':20s} {'step':>9s} {'fastest':>9s} {'InteractionLoop':>16s} {'Law2':>9s} {'Law2 share':>10s}  step/(a), quartiles")
+    print(f"\n-j{threads}: {'law':20s} {'step':>9s} {'fastest':>9s} {'InteractionLoop':>16s} {'Law2':>9s} "
+          f"{'Law2 share':>10s}  step/(a), quartiles")
     for n in laws:
         L, c = r[n], r[n]["contacts"]
         share = statistics.median(a / b for a, b in zip(L["law2_ns"], L["split_step_ns"]))
-        line = (f"      {'(' + LETTER[n] + ')':4s} {n:19s} {statistics.median(L['step_ns']) / c:6.1f} ns {min(L['step_ns']) / c:6.1f} ns "
-                f"{statistics.median(L['interaction_loop_ns']) / c:13.1f} ns "
+        line = (f"      {'(' + LETTER[n] + ')':4s} {n:19s} {statistics.median(L['step_ns']) / c:6.1f} ns "
+                f"{min(L['step_ns']) / c:6.1f} ns {statistics.median(L['interaction_loop_ns']) / c:13.1f} ns "
                 f"{statistics.median(L['law2_ns']) / c:6.1f} ns {share:9.1%}")
         if "cundall-strack" in r:
             q = quartiles([x / y for x, y in zip(L["step_ns"], r["cundall-strack"]["step_ns"])])
@@ -187,7 +203,8 @@ def bootstrap_relative(r1, r2, x, y, samples=2000):
     rng = random.Random(7)
     a = [p / q for p, q in zip(r1[x]["step_ns"], r1[y]["step_ns"])]
     b = [p / q for p, q in zip(r2[x]["step_ns"], r2[y]["step_ns"])]
-    est = sorted(statistics.median(rng.choices(a, k=len(a))) / statistics.median(rng.choices(b, k=len(b))) for _ in range(samples))
+    est = sorted(statistics.median(rng.choices(a, k=len(a))) / statistics.median(rng.choices(b, k=len(b)))
+                 for _ in range(samples))
     return est[int(0.05 * samples)], est[int(0.95 * samples) - 1]
 
 
@@ -209,7 +226,8 @@ if present:
 pairs = [(x, y) for x, y in PAIRS if x in laws and y in laws]
 if pairs:
     # speed-up(x)/speed-up(y) = [x/y at -j1]/[x/y at -j2]: the within-round ratios cancel the machine's state.
-    print("  -j2 speed-ups relative to each other (>= 1: at least as good), from the paired medians [90 % bootstrap interval")
+    print("  -j2 speed-ups relative to each other (>= 1: at least as good), from the paired medians [90 "
+          "% bootstrap interval")
     print("  over the rounds] and from the fastest bursts:")
     for x, y in pairs:
         rel = paired(r1, x, y)[1] / paired(r2, x, y)[1]
@@ -218,8 +236,10 @@ if pairs:
         print(f"      speed-up ({LETTER[x]}) / speed-up ({LETTER[y]}) = {rel:.3f} [{lo:.3f}, {hi:.3f}]; {relf:.3f}   "
               f"({verdict(rel >= 1)}; {verdict(relf >= 1)})")
 
-print("\nInteractionLoop speed-up with 2 threads, measured inside the -j2 runs: each burst against its neighbour with a")
-print("one-thread InteractionLoop (median of the per-round ratios [quartiles]); and each law's against the others', paired by round:")
+print("\nInteractionLoop speed-up with 2 threads, measured inside the -j2 runs: each burst against its neighbour "
+      "with a")
+print("one-thread InteractionLoop (median of the per-round ratios [quartiles]); and each law's against the "
+      "others', paired by round:")
 loop_speedup = {n: [a / b for a, b in zip(r2[n]["serial_loop_ns"], r2[n]["interaction_loop_ns"])] for n in laws}
 for n in laws:
     q = quartiles(loop_speedup[n])
@@ -229,7 +249,8 @@ for x, y in PAIRS:
         q = quartiles([a / b for a, b in zip(loop_speedup[x], loop_speedup[y])])
         print(f"      ({LETTER[x]}) / ({LETTER[y]}) = {q[1]:.3f} [{q[0]:.3f}, {q[2]:.3f}] ({verdict(q[1] >= 1)})")
 
-print("\n-j2 speed-up (ratio of the median whole steps; of the fastest) and serial/parallel difference of the forces and torques on the bodies:")
+print("\n-j2 speed-up (ratio of the median whole steps; of the fastest) and serial/parallel difference of the forces "
+      "and torques on the bodies:")
 for n in laws:
     s = statistics.median(r1[n]["step_ns"]) / statistics.median(r2[n]["step_ns"])
     sf = min(r1[n]["step_ns"]) / min(r2[n]["step_ns"])
@@ -241,4 +262,5 @@ for n in laws:
     for part in (slice(0, 3), slice(3, 6)):  # forces, then torques, each against its own scale
         scale = max(max(abs(a) for a in p[part]) for p in f1) or 1.0
         diff.append(max(max(abs(a - b) for a, b in zip(p[part], q[part])) for p, q in zip(f1, f2)) / scale)
-    print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} speed-up {s:.3f}; {sf:.3f}; max |F(-j2) - F(-j1)| / max |F| = {diff[0]:.1e}, same for torques {diff[1]:.1e}")
+    print(f"  {'(' + LETTER[n] + ')':4s} {n:19s} speed-up {s:.3f}; {sf:.3f}; max |F(-j2) - F(-j1)| / max "
+          f"|F| = {diff[0]:.1e}, same for torques {diff[1]:.1e}")

@@ -22,7 +22,8 @@ from yade import O, pack, wrapper as w
 out_path = sys.argv[1]
 n_target = int(sys.argv[2]) if len(sys.argv) > 2 else 6000
 steps = int(sys.argv[3]) if len(sys.argv) > 3 else 40
-names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full", "meso-full-rotations",
+names = sys.argv[4].split(",") if len(sys.argv) > 4 else ["cundall-strack", "luding-basic", "meso-normal", "meso-full",
+                                                          "meso-full-rotations",
                                                           "cohesion-moment"]
 rounds = int(sys.argv[5]) if len(sys.argv) > 5 else 15
 split = len(sys.argv) > 6 and sys.argv[6] == "1"
@@ -51,7 +52,8 @@ def law_setup(name):
     if name in ("meso-full", "meso-full-rotations"):
         return w.MesoMat(k1=K, kp=5 * K, kc=K, phiF=0.05, gammaN=1e-4, fa=1e-4, kca=1e3, adhesion="reversible",
                          frictionAngle=0.5, kt=0.2 * K, gammaT=2e-5, kr=0.1 * K, gammaR=5e-6, muR=0.1, ko=0.1 * K,
-                         gammaO=5e-6, muO=0.1, density=RHO), ig2, w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Law2_ScGeom_MesoPhys_Meso()
+                         gammaO=5e-6, muO=0.1, density=RHO), \
+            ig2, w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Law2_ScGeom_MesoPhys_Meso()
     if name == "cohesion-moment":
         return w.CohFrictMat(young=K / R, poisson=0.2, density=RHO, frictionAngle=0.5, momentRotationLaw=True,
                              alphaKr=0.1, alphaKtw=0.1, etaRoll=0.1, etaTwist=0.1, isCohesive=False), ig2, \
@@ -68,7 +70,8 @@ def build(name, separate_dispatchers):
     # constant velocity and spin (reversed after every burst, so that the packing stays put however
     # long the benchmark runs): the contacts are the same under every law while relative velocities,
     # slips and dashpots are exercised; forces do not feed back into the motion.
-    O.bodies.append(pack.regularHexa(pack.inAlignedBox((0, 0, 0), (side, side, side)), radius=R, gap=-2e-6, material=mat))
+    O.bodies.append(pack.regularHexa(pack.inAlignedBox((0, 0, 0), (side, side, side)), radius=R, gap=-2e-6,
+                                     material=mat))
     rnd = random.Random(1)
     for b in O.bodies:
         b.state.blockedDOFs = "xyzXYZ"
@@ -83,7 +86,8 @@ def build(name, separate_dispatchers):
     if separate_dispatchers:
         # YADE's stand-alone IGeomDispatcher uses the functor that the InteractionLoop cached in each
         # interaction (it cannot start a scene); the packing is static, so no pair is new after this.
-        O.engines = [w.ForceResetter(), collider, w.IGeomDispatcher([ig2]), w.IPhysDispatcher([ip2]), w.LawDispatcher([law]), newton]
+        O.engines = [w.ForceResetter(), collider, w.IGeomDispatcher([ig2]), w.IPhysDispatcher([ip2]),
+                     w.LawDispatcher([law]), newton]
         O.run(2, True)
 
 
@@ -117,7 +121,8 @@ for rnd in range(rounds):
     # The order rotates, so that no law always follows the same one.
     for k in range(len(names)):
         name = names[(k + rnd) % len(names)]
-        L = report["laws"].setdefault(name, {"step_ns": [], "interaction_loop_ns": [], "law2_ns": [], "split_step_ns": [],
+        L = report["laws"].setdefault(name, {"step_ns": [], "interaction_loop_ns": [], "law2_ns": [],
+                                             "split_step_ns": [],
                                              "serial_loop_ns": []})
         O.switchToScene(slots[(name, False)])
         times = burst()

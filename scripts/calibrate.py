@@ -49,7 +49,8 @@ def _launcher(given):
 def parse(argv):
     from mesocontact import calibrate as cal
     p = argparse.ArgumentParser(prog="python3 scripts/calibrate.py",
-                                description="Fit k1, kp, kc, phiF, fa of the meso-particle law to restitution data e(v).")
+                                description="Fit k1, kp, kc, phiF, fa of the meso-particle law to "
+                                            "restitution data e(v).")
     p.add_argument("data", help="CSV with columns v, e [, sigma] (SI units; # comments)")
     p.add_argument("--radius", type=float, required=True, help="particle radius [m]")
     p.add_argument("--density", type=float, required=True, help="particle density [kg/m^3]")
@@ -67,15 +68,16 @@ def parse(argv):
                     ("phiF", "plasticity depth"), ("fa", "non-contact force [N] (default 0 when fixed)")):
         p.add_argument("--" + n, type=float, default=None, help=what)
     p.add_argument("--kca", type=float, default=math.inf,
-                   help="stiffness of the non-contact force [N/m]: assumed, not fitted; the fitted fa (and kc, kp) follow "
-                        "it, and the report says how much")
+                   help="stiffness of the non-contact force [N/m]: assumed, not fitted; the fitted fa (and kc, kp) "
+                        "follow it, and the report says how much")
     p.add_argument("--starts", type=int, default=40, help="starting points of the fit")
     p.add_argument("--bootstrap", type=int, default=200, help="bootstrap resamples (0: none)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--out", default="results/calibration", help="output directory")
     p.add_argument("--yade", default=None, help="YADE launcher for the check (default: the build tree's, else yade)")
     p.add_argument("--no-yade-check", action="store_true", help="skip the YADE pair collisions")
-    p.add_argument("--truth", default=None, help=argparse.SUPPRESS)  # synthetic studies: a JSON of the true parameters, drawn
+    # synthetic studies: a JSON of the true parameters, drawn
+    p.add_argument("--truth", default=None, help=argparse.SUPPRESS)
     p.add_argument("--yade-check", default=None, help=argparse.SUPPRESS)  # internal: run inside YADE on this JSON
     # "--radius -1e-3": argparse takes a negative number for an option unless it looks like one of its
     # own; join such values to their option, so that the value is refused by name below, not read as missing.
@@ -145,7 +147,8 @@ def main(argv):
     if not a.no_yade_check:
         job = os.path.join(a.out, "yade-check-job.json")
         out = os.path.join(a.out, "yade-check-points.json")
-        outputs.write_atomic(job, json.dumps({"fit": result, "velocities": [float(v) for v in data.v], "radius": a.radius,
+        outputs.write_atomic(job, json.dumps({"fit": result, "velocities": [float(v) for v in data.v],
+                                              "radius": a.radius,
                                               "density": a.density, "against": a.against, "result": out}))
         yade = _launcher(a.yade)
         print(f"YADE check: {len(data.v)} pair collisions ({yade})", flush=True)
@@ -178,7 +181,8 @@ def batch_argv(argv):
         return argv
     from mesocontact import batch
     return batch.argv(argv, positional="data", data=None, radius=None, density=None, against=None, adhesion=None,
-                      interpolation=None, free=None, k1=None, kp=None, kc=None, phiF=None, fa=None, kca=None, starts=None,
+                      interpolation=None, free=None, k1=None, kp=None, kc=None, phiF=None, fa=None, kca=None,
+                      starts=None,
                       bootstrap=None, seed=None, out=None, yade=None, no_yade_check=False)
 
 

@@ -102,7 +102,8 @@ def coverage(spec, draws, rng):
     hits, counts, und, secs = {}, {}, {}, []
     for _ in range(draws):
         v, e, sigma, _ = synth(spec, spec[6], 20, rng)
-        f = cal.fit(cal.check_data(v, e, sigma), starts=10, bootstrap=0, seed=int(rng.integers(1 << 30)), **fit_kw(spec))
+        f = cal.fit(cal.check_data(v, e, sigma), starts=10, bootstrap=0, seed=int(rng.integers(1 << 30)),
+                    **fit_kw(spec))
         secs.append(f.wall_clock_s)
         for n in f.free:
             if n in f.undetermined:
@@ -170,8 +171,10 @@ def tables(summary):
             cv = f"{cov['inside']}/{cov['of']}" if cov else "—"
             if und:
                 cv += f" (undetermined in {und})"
-            point = f.get("fit_point") or f  # an undetermined parameter is null in calibration.json, its fit's point here
-            out.append(f"| {name} | {n} | {t:.4g} | {point[n]:.4g}{' (undetermined)' if n in f['undetermined'] else ''} | "
+            # an undetermined parameter is null in calibration.json, its fit's point here
+            point = f.get("fit_point") or f
+            out.append(f"| {name} | {n} | {t:.4g} | "
+                       f"{point[n]:.4g}{' (undetermined)' if n in f['undetermined'] else ''} | "
                        f"[{_fmt(lo)}, {_fmt(hi)}] | " + (f"[{_fmt(b[0])}, {_fmt(b[1])}]" if b else "—")
                        + f" | {'yes' if inside else 'NO'} | {cv} |")
     out += ["", "| set | points | what it lacks or shows | undetermined | statements | fit s | YADE worst abs de |",
@@ -180,7 +183,8 @@ def tables(summary):
         f = s["fit"]
         yc = f.get("yade_check", {}).get("worst_abs_de")
         out.append(f"| {name} | {f['n_points']} | {s['what']} | {', '.join(f['undetermined']) or 'none'} | "
-                   + "<br>".join(f["statements"]) + f" | {f['wall_clock_s']:.1f} | " + (f"{yc:.1e}" if yc is not None else "—") + " |")
+                   + "<br>".join(f["statements"]) + f" | {f['wall_clock_s']:.1f} | "
+                   + (f"{yc:.1e}" if yc is not None else "—") + " |")
     return "\n".join(out) + "\n"
 
 

@@ -48,7 +48,8 @@ log = open(args.log, "w", buffering=1) if args.log else None  # line by line: a 
 NUMBERS = [k for k, v in w.MesoMat().dict().items() if isinstance(v, float) and k != "poisson"]
 TEXTS = {"adhesion": ("none", "reversible", "jumpIn"), "k2Interpolation": ("linear", "sqrt")}
 NAMES = NUMBERS + list(TEXTS) + ["dominant"]
-BAD = [0.0, -1.0, -1e-300, float("nan"), float("inf"), -float("inf"), 1e300, 1e155, 1e-320, "abc", None, True, [1.0], {}, 3 + 0j]
+BAD = [0.0, -1.0, -1e-300, float("nan"), float("inf"), -float("inf"), 1e300, 1e155, 1e-320, "abc", None, True, [1.0],
+       {}, 3 + 0j]
 tally = {}
 # Every class the plugin registers (YADE's Serializable classes named Meso*: pkg/yade/*.cpp, YADE_PLUGIN).
 import yade.system  # noqa: E402
@@ -60,7 +61,8 @@ by_class = {}
 OUTCOMES = ("rejected clearly", "accepted and ran clean", "other")
 # The class (or the package's module) each category exercises, where it is one; the others say it per input.
 CATEGORY_CLASS = {"MesoMat(**kw)": "MesoMat", "assignment": "MesoMat", "updateAttrs mixed": "MesoMat",
-                  "extreme values": "MesoMat", "MesoMat young/poisson/label/id": "MesoMat", "theory": "mesocontact.theory",
+                  "extreme values": "MesoMat", "MesoMat young/poisson/label/id": "MesoMat",
+                  "theory": "mesocontact.theory",
                   "contact bytes": "MesoContactStore", "store across geometry classes": "MesoContactStore",
                   "phys replaced": "Law2_ScGeom_MesoPhys_Meso", "phys/geom from Python": "Law2_ScGeom_MesoPhys_Meso",
                   "loop registry": "mesocontact.loop", "loop callbacks that raise": "mesocontact.loop",
@@ -137,14 +139,16 @@ def clean_collision(mat):
     O.bodies[1].state.vel = (-0.05, 0, 0)
     ip2 = w.Ip2_MesoMat_MesoMat_MesoPhys()
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(aabbEnlargeFactor=1.2)]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=1.2)], [ip2], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=1.2)], [ip2],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
     O.dt = 1e-7
     O.step()
     if math.isfinite(ip2.stableDt):  # the user's job: a stable step (the law warns otherwise)
         O.dt = min(O.dt, 0.5 * ip2.stableDt)
     O.run(200, True)
-    return all(math.isfinite(x) for b in O.bodies for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
+    return all(math.isfinite(x) for b in O.bodies
+               for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
 
 
 @contextlib.contextmanager
@@ -217,7 +221,8 @@ def owner_class(text, pos):
         if cid and name:
             names[cid.group(1)] = name.group(1)
         ref = re.search(r'class_id_reference="(\d+)"', attrs)
-        stack.append("MesoPairParams" if tag == "pairParams" else names.get(ref.group(1)) if ref else name.group(1) if name else None)
+        stack.append("MesoPairParams" if tag == "pairParams" else names.get(ref.group(1)) if ref else name.group(1)
+                     if name else None)
     owner = next((c for c in reversed(stack) if c), "Scene")
     return owner if owner in PLUGIN_CLASSES or owner == "MesoPairParams" else f"YADE {owner}"
 
@@ -248,7 +253,8 @@ with quiet_fd2():
         except (ValueError, TypeError) as e:
             after = {n: getattr(mat, n) for n in NAMES}
             same = all(after[n] == before[n] or (after[n] != after[n] and before[n] != before[n]) for n in NAMES)
-            count("assignment", "rejected clearly" if names_it(e, kw) and same else "other", f"{kw}: {e}; unchanged {same}")
+            count("assignment", "rejected clearly" if names_it(e, kw) and same else "other",
+                  f"{kw}: {e}; unchanged {same}")
             continue
         count("assignment", "accepted and ran clean" if clean_collision(mat) else "other", f"{kw}: non-finite state")
     # 3. The functor and the engine.
@@ -261,12 +267,14 @@ with quiet_fd2():
             cls(**kw)
             count("Ip2/MesoBackgroundDamping", "accepted and ran clean", cls=cls.__name__)
         except (ValueError, TypeError) as e:
-            count("Ip2/MesoBackgroundDamping", "rejected clearly" if names_it(e, kw) else "other", f"{kw}: {e}", cls=cls.__name__)
+            count("Ip2/MesoBackgroundDamping", "rejected clearly" if names_it(e, kw) else "other", f"{kw}: {e}",
+                  cls=cls.__name__)
     # 4. The theory functions.
     funcs = [(theory.restitution_fa0, ("chi", "eta", "beta")), (theory.chi_c_c, ("eta", "beta")),
              (theory.max_sticking_overlap, ("eta", "beta")), (theory.low_velocity_restitution, ("chi", "eta")),
              (theory.pair_collision, ("v_inf", "k1", "kp", "kc", "phiF", "a12", "m_r")),
-             (theory.plastic_limit_velocity, ("k1", "kp", "phiF", "a12", "m_r")), (params.resolved_step, ("kp", "m_min")),
+             (theory.plastic_limit_velocity, ("k1", "kp", "phiF", "a12", "m_r")),
+             (params.resolved_step, ("kp", "m_min")),
              (theory.max_overlap, ("v_i", "k1", "kp", "phiF", "a12", "m_r"))]
     for _ in range(args.n):
         f, names = rng.choice(funcs)
@@ -277,9 +285,11 @@ with quiet_fd2():
             r = f(*a)
             vals = [getattr(r, k) for k in ("e", "en", "delta_max")] if hasattr(r, "e") else [r]
             ok = all(isinstance(v, float) and math.isfinite(v) for v in vals)
-            count("theory", "accepted and ran clean" if ok else "other", f"{f.__name__}{tuple(a)} = {vals}", cls=f.__module__)
+            count("theory", "accepted and ran clean" if ok else "other", f"{f.__name__}{tuple(a)} = {vals}",
+                  cls=f.__module__)
         except ValueError as e:
-            count("theory", "rejected clearly" if names_it(e, list(names) + ["interpolation"]) else "other", f"{f.__name__}{tuple(a)}: {e}",
+            count("theory", "rejected clearly" if names_it(e, list(names) + ["interpolation"]) else "other",
+                  f"{f.__name__}{tuple(a)}: {e}",
                   cls=f.__module__)
     # 5. Damaged save files: a truncated or edited file is refused by O.load or loads a valid scene.
     tmp = tempfile.mkdtemp(prefix="fuzz-")
@@ -323,7 +333,8 @@ def every_mechanism_pair(drag, ip2=None, law=None, steps=50):
     one, or the engine to use; ip2, law: the functors to use): the scene the following categories
     damage, run ``steps`` steps."""
     O.reset()
-    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=20, phiF=0.1, fa=1e-5, kca=100, adhesion="jumpIn", density=2000.0,
+    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=20, phiF=0.1, fa=1e-5, kca=100, adhesion="jumpIn",
+                                     density=2000.0,
                                      kt=50, frictionAngle=0.3, kr=10, muR=0.1, ko=10, muO=0.1))
     O.bodies.append([utils.sphere((0, 0, 0), 1e-3, material=m), utils.sphere((2e-3 - 2e-5, 0, 0), 1e-3, material=m)])
     O.bodies[1].state.vel = (-0.01, 0.002, 0)
@@ -331,9 +342,9 @@ def every_mechanism_pair(drag, ip2=None, law=None, steps=50):
     ip2 = ip2 or w.Ip2_MesoMat_MesoMat_MesoPhys()
     if drag is True:
         drag = w.MesoBackgroundDamping(gammaB=1e-3, gammaBR=1e-4)
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [ip2], [law or w.Law2_ScGeom_MesoPhys_Meso()])] + \
-                ([drag] if drag else []) + [w.NewtonIntegrator(damping=0)]
+    O.engines = ([w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
+                  w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [ip2], [law or w.Law2_ScGeom_MesoPhys_Meso()])]
+                 + ([drag] if drag else []) + [w.NewtonIntegrator(damping=0)])
     O.dt = 1e-6
     O.trackEnergy = True
     if steps:
@@ -342,7 +353,8 @@ def every_mechanism_pair(drag, ip2=None, law=None, steps=50):
 
 
 def finite_scene():
-    return all(math.isfinite(x) for b in O.bodies for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
+    return all(math.isfinite(x) for b in O.bodies
+               for x in tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel))
 
 
 def run_outcome(steps=50):
@@ -361,7 +373,8 @@ def runs_clean(steps=50):
 
 # The classes of issue #32's second pass (items 1-3, 5-7, 12).
 MISC = ["poisson", "young", "label", "density", "frictionAngle", "id", "nonexistent", "K1", 7]
-WRONG = [None, "a", b"1", True, -1, 0, 2 ** 31, 2 ** 63, [2 ** 31], [None], (), {}, 1e-300, float("nan"), float("inf"), 3 + 0j]
+WRONG = [None, "a", b"1", True, -1, 0, 2 ** 31, 2 ** 63, [2 ** 31], [None], (), {}, 1e-300, float("nan"), float("inf"),
+         3 + 0j]
 with quiet_fd2():
     # 7. updateAttrs with the law's, the inherited and unknown keys mixed: all or nothing.
     for _ in range(args.n):
@@ -377,7 +390,8 @@ with quiet_fd2():
             count("updateAttrs mixed", "rejected clearly" if same and any(str(k) in str(e) for k in kw) else "other",
                   f"{kw}: {type(e).__name__}: {e}; unchanged {same}")
             continue
-        count("updateAttrs mixed", "accepted and ran clean" if clean_collision(mat) else "other", f"{kw}: non-finite state")
+        count("updateAttrs mixed", "accepted and ran clean" if clean_collision(mat) else "other",
+              f"{kw}: non-finite state")
     # 8. Hand-edited save files of every class the project adds (material, pair parameters,
     #    contact state of both phys classes, functors, the drag and its bookkeeping vectors).
     ip2 = every_mechanism_pair(drag=True)
@@ -428,7 +442,8 @@ with quiet_fd2():
         elif how == "extend":
             data += bytes(rng.randrange(256) for _ in range(rng.randint(1, 64)))
         else:  # a body id made large (ids are serialized as text in YADE's binary archives too)
-            data = bytearray(bytes(data).replace(b"\x01\x00\x00\x00", rng.choice([b"\xff\xff\xff\x7f", b"\x00\xe1\xf5\x05"]), 1))
+            data = bytearray(bytes(data).replace(b"\x01\x00\x00\x00",
+                                                 rng.choice([b"\xff\xff\xff\x7f", b"\x00\xe1\xf5\x05"]), 1))
         with open(os.path.join(tmp, "contact-bytes"), "wb") as f:  # the input at hand, kept if the process dies on it
             f.write(bytes(data))
         # Boost's binary archive reads the bytes: tried first in a copy of this process, which may die on them
@@ -447,23 +462,27 @@ with quiet_fd2():
             O.step()
             store.restore()
         except ValueError as e:  # a changed parameter: restore() names the pair and refuses the whole restore
-            count("contact bytes", "rejected clearly" if "#0+#1" in str(e) and "nothing was restored" in str(e) else "other",
+            count("contact bytes",
+                  "rejected clearly" if "#0+#1" in str(e) and "nothing was restored" in str(e) else "other",
                   f"{how}: restore: {e}")
             continue
         except Exception as e:  # noqa: BLE001
             count("contact bytes", "other", f"{how}: restore raised {type(e).__name__}: {e}")
             continue
-        count("contact bytes", "accepted and ran clean" if runs_clean() else "other", f"{how}: imported, then not clean")
+        count("contact bytes", "accepted and ran clean" if runs_clean() else "other",
+              f"{how}: imported, then not clean")
     # 10. Extreme finite values: every number near and beyond the range the law computes with.
     for _ in range(args.n):
         name = rng.choice(NUMBERS)
-        val = rng.choice([10 ** rng.uniform(-320, 308), 1e-100, 1e100, 9.9e-101, 1.01e100, 5e-324, 1.7e308, 2.2250738585072014e-308])
+        val = rng.choice([10 ** rng.uniform(-320, 308), 1e-100, 1e100, 9.9e-101, 1.01e100, 5e-324, 1.7e308,
+                          2.2250738585072014e-308])
         try:
             mat = w.MesoMat(**{name: val})
         except (ValueError, TypeError) as e:
             count("extreme values", "rejected clearly" if names_it(e, [name]) else "other", f"{name}={val}: {e}")
             continue
-        count("extreme values", "accepted and ran clean" if clean_collision(mat) else "other", f"{name}={val}: non-finite state")
+        count("extreme values", "accepted and ran clean" if clean_collision(mat) else "other",
+              f"{name}={val}: non-finite state")
     # 11. The Ip2's Python methods with wrong types and values.
     ip2, store = every_mechanism_pair(drag=False), w.MesoContactStore()
     live = O.interactions[0, 1]
@@ -480,18 +499,21 @@ with quiet_fd2():
         try:
             r = getattr(store if meth.endswith("Contacts") else ip2, meth)(*a)
         except (ValueError, TypeError, RuntimeError) as e:
-            count("Ip2 methods", "rejected clearly" if any(n in str(e) for n in names) else "other", f"{meth}{tuple(map(repr, a))}: {type(e).__name__}: {e}",
+            count("Ip2 methods", "rejected clearly" if any(n in str(e) for n in names) else "other",
+                  f"{meth}{tuple(map(repr, a))}: {type(e).__name__}: {e}",
                   cls=owner)
             continue
         ok = not isinstance(r, float) or (math.isfinite(r) and r > 0)
-        count("Ip2 methods", "accepted and ran clean" if ok and runs_clean(5) else "other", f"{meth}{tuple(map(repr, a))} = {r!r}", cls=owner)
+        count("Ip2 methods", "accepted and ran clean" if ok and runs_clean(5) else "other",
+              f"{meth}{tuple(map(repr, a))} = {r!r}", cls=owner)
     # 12. Another IPhys put on a live meso contact from Python, then O.run (the engine thread).
     kinds = [w.MesoPhys, w.MesoTangentialPhys, w.FrictPhys, w.NormShearPhys, w.ViscElPhys, w.RotStiffFrictPhys, w.IPhys]
     for _ in range(args.n // 4):
         every_mechanism_pair(drag=rng.random() < 0.5)
         kind = rng.choice(kinds)
         O.interactions[0, 1].phys = kind()
-        count("phys replaced", "accepted and ran clean" if runs_clean(rng.choice([1, 20, 100])) else "other", f"{kind.__name__}")
+        count("phys replaced", "accepted and ran clean" if runs_clean(rng.choice([1, 20, 100])) else "other",
+              f"{kind.__name__}")
 
 
 def falling_onto(surface, functor, v=0.05, steps=400):
@@ -503,7 +525,8 @@ def falling_onto(surface, functor, v=0.05, steps=400):
     sid = O.bodies.append(surface)
     ball = O.bodies.append(utils.sphere((0, 0, 1.0e-3 + 2e-6), 1e-3, material=m))  # 40 steps from touching
     O.bodies[ball].state.vel = (0, 0, -v)
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
+    O.engines = [w.ForceResetter(),
+                 w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
                  w.InteractionLoop([functor, w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
                                    [w.Law2_ScGeom_MesoPhys_Meso()]), w.NewtonIntegrator(damping=0)]
     O.dt = 1e-6
@@ -533,7 +556,8 @@ with quiet_fd2():
         what, (attr, make) = rng.choice(sorted(ASSIGNED.items()))
         setattr(i, attr, make(i, j))
         del i, j
-        count("phys/geom from Python", "accepted and ran clean" if runs_clean(rng.choice([1, 30, 200])) else "other", what)
+        count("phys/geom from Python", "accepted and ran clean" if runs_clean(rng.choice([1, 30, 200])) else "other",
+              what)
     # 14. Contacts exported where the loop makes one geometry class, restored where it makes another.
     geoms = {"ScGeom": w.Ig2_Sphere_Sphere_ScGeom, "ScGeom6D": w.Ig2_Sphere_Sphere_ScGeom6D}
     for _ in range(args.n // 2):
@@ -552,7 +576,8 @@ with quiet_fd2():
         try:
             store.restore()
         except ValueError as e:
-            count("store across geometry classes", "rejected clearly" if a in str(e) and b in str(e) else "other", f"{a}->{b}: {e}")
+            count("store across geometry classes", "rejected clearly" if a in str(e) and b in str(e) else "other",
+                  f"{a}->{b}: {e}")
             continue
         count("store across geometry classes", "accepted and ran clean" if a == b and runs_clean(50) else "other",
               f"{a}->{b}: restored")
@@ -571,7 +596,8 @@ with quiet_fd2():
         surface = (utils.wall(0, axis=2, sense=0) if "Wall" in kind.__name__
                    else utils.facet([(-3e-3, -3e-3, 0), (3e-3, -3e-3, 0), (0, 3e-3, 0)], fixed=True))
         ok, touched = falling_onto(surface, f)
-        count("functor attributes", "accepted and ran clean" if ok and touched else "other", f"{kind.__name__} {val!r}", cls=kind.__name__)
+        count("functor attributes", "accepted and ran clean" if ok and touched else "other", f"{kind.__name__} {val!r}",
+              cls=kind.__name__)
     # 16. Degenerate and extreme facets and walls: a falling sphere, finite throughout; an invalid
     #     wall axis makes no contact and is said (the functor warns; set_detection refuses it).
     for _ in range(args.n):
@@ -580,7 +606,8 @@ with quiet_fd2():
             ok, touched = falling_onto(utils.wall(0, axis=2, sense=sense), w.Ig2_Wall_Sphere_MesoScGeom())
             O.bodies[0].shape.axis = axis
             ok = ok and finite_scene() and runs_clean(50)
-            count("facets and walls", "accepted and ran clean" if ok else "other", f"wall axis {axis}", cls="Ig2_Wall_Sphere_MesoScGeom")
+            count("facets and walls", "accepted and ran clean" if ok else "other", f"wall axis {axis}",
+                  cls="Ig2_Wall_Sphere_MesoScGeom")
             continue
         a, b, c = [rng.uniform(-3e-3, 3e-3) for _ in range(3)], [rng.uniform(-3e-3, 3e-3) for _ in range(3)], \
             [rng.uniform(-3e-3, 3e-3) for _ in range(3)]
@@ -604,10 +631,12 @@ with quiet_fd2():
             count("facets and walls", "rejected clearly", f"{how}: {type(e).__name__}", cls=type(functor).__name__)
             continue
         ok, touched = falling_onto(surface, functor)
-        count("facets and walls", "accepted and ran clean" if ok else "other", f"{how}: non-finite state", cls=type(functor).__name__)
+        count("facets and walls", "accepted and ran clean" if ok else "other", f"{how}: non-finite state",
+              cls=type(functor).__name__)
     # 17. The loop registry: labels and periods of every kind; refused by name, or a runner that calls.
     from mesocontact import loop
-    names = ["O", "sphere", "len", "__import__", "wrapper", "utils", "probe_a", "probeB", "two words", "1x", "", "None", 5, None]
+    names = ["O", "sphere", "len", "__import__", "wrapper", "utils", "probe_a", "probeB", "two words", "1x", "", "None",
+             5, None]
     for _ in range(args.n):
         label = rng.choice(names) if rng.random() < 0.6 else "fz" + "".join(rng.choice("abc_") for _ in range(4))
         period = rng.choice(WRONG + [1, 2, 7, 1.0, "3"])
@@ -616,7 +645,8 @@ with quiet_fd2():
             O.reset()
             O.engines = [loop.runner(lambda: calls.append(O.iter), period, label)]
         except (ValueError, TypeError) as e:
-            count("loop registry", "rejected clearly" if ("label" in str(e) or "period" in str(e) or "fn" in str(e)) else "other",
+            count("loop registry",
+                  "rejected clearly" if ("label" in str(e) or "period" in str(e) or "fn" in str(e)) else "other",
                   f"{label!r} {period!r}: {e}")
             continue
         O.run(7, True)
@@ -733,7 +763,8 @@ def used_cleanly(name, obj):
         return ("accepted and ran clean" if ok and touched else "other"), f"falling sphere ok {ok} touched {touched}"
     if name in ("Ip2_MesoMat_MesoMat_MesoPhys", "Law2_ScGeom_MesoPhys_Meso", "MesoBackgroundDamping"):
         every_mechanism_pair(drag=obj if name == "MesoBackgroundDamping" else rng.random() < 0.5,
-                             ip2=obj if name.startswith("Ip2") else None, law=obj if name.startswith("Law2") else None, steps=0)
+                             ip2=obj if name.startswith("Ip2") else None, law=obj if name.startswith("Law2") else None,
+                             steps=0)
         return run_outcome(50), "in a pair with every mechanism"
     return "accepted and ran clean", ""  # MesoPairParams, MesoContactStore: nothing to set
 
@@ -745,7 +776,8 @@ def live_pair(tangential):
     O.bodies.append([utils.sphere((0, 0, 0), R, material=m), utils.sphere((2 * R - 2e-5, 0, 0), R, material=m)])
     O.bodies[1].state.vel = (-0.01, 0.002, 0)
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
     O.dt = 1e-6
     O.run(20, True)
@@ -760,7 +792,8 @@ def mixed_collision(mat):
     O.bodies.append([utils.sphere((0, 0, 0), R, material=m), utils.sphere((2 * R + 5e-7, 0, 0), R, material=f)])
     O.bodies[1].state.vel = (-0.05, 0.01, 0)
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Ip2_FrictMat_FrictMat_FrictPhys()],
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()],
+                                   [w.Ip2_MesoMat_MesoMat_MesoPhys(), w.Ip2_FrictMat_FrictMat_FrictPhys()],
                                    [w.Law2_ScGeom_MesoPhys_Meso(), w.Law2_ScGeom_FrictPhys_CundallStrack()]),
                  w.NewtonIntegrator(damping=0)]
     O.dt = min(1e-7, 0.3 * utils.PWaveTimeStep())
@@ -784,10 +817,12 @@ def surface_scene(mat, wall_axis=None):
     gap = 1.5 * mat.get("fa", 0) / mat.get("kca", 1) if mat.get("fa") else 1e-6
     O.bodies.append([utils.sphere((0, 0, 0), R, material=0), utils.sphere((2 * R + gap, 0, 0), R, material=0)])
     O.bodies[1].state.vel = (-0.02, 0, 0)
-    O.bodies.append(utils.facet([(-4 * R, -4 * R, -R - gap), (6 * R, -4 * R, -R - gap), (0, 6 * R, -R - gap)], fixed=True, material=0))
+    O.bodies.append(utils.facet([(-4 * R, -4 * R, -R - gap), (6 * R, -4 * R, -R - gap), (0, 6 * R, -R - gap)],
+                                fixed=True, material=0))
     axis = 1 if wall_axis is None else wall_axis
     O.bodies.append(utils.wall(-R - gap if axis != 0 else -R - gap, axis=axis, sense=0, material=0))
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
+    O.engines = [w.ForceResetter(),
+                 w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
                  w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Facet_Sphere_ScGeom(),
                                     rng.choice([w.Ig2_Wall_Sphere_ScGeom, w.Ig2_Wall_Sphere_MesoScGeom])()],
                                    [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
@@ -832,7 +867,8 @@ with quiet_fd2():
             kept = before is None or unchanged(before, obj)
             # an assignment's statement names its attribute: a read-only one may say only "no setter"
             clear = named(e, kw) or (how.startswith("assignment") and "has no setter" in str(e))
-            kind = "" if clear and kept else "[unnamed error] " if not clear else "[refused, but the keys before the bad one were set] "
+            kind = ("" if clear and kept else "[unnamed error] " if not clear
+                    else "[refused, but the keys before the bad one were set] ")
             count("every class", "rejected clearly" if clear and kept else "other",
                   f"{kind}{name} {how} {kw!r}: {type(e).__name__}: {e}", cls=name)
             continue
@@ -855,16 +891,19 @@ with quiet_fd2():
 
     # 19. MesoMat's young and poisson (YADE's FrictMat laws read them), label and id: constructor,
     #     assignment, updateAttrs; an accepted value then runs a meso collision and a MesoMat-FrictMat one.
-    YP = {"young": [float("nan"), float("inf"), -float("inf"), 1e300, 1e-300, 1e100, 1e-100, 1.01e100, 9.9e-101, 3, -1.0, 0.0,
-                    "abc", "1e9", True, False, None, 3 + 0j, [1e9], np.float64(1e9), np.bool_(True), 10 ** rng.uniform(6, 11)],
-          "poisson": [float("nan"), float("inf"), -float("inf"), 3, 3.0, -0.1, 0.0, 1.0, 1.0000001, 0.25, 0.5, 1e300, 1e-300,
+    YP = {"young": [float("nan"), float("inf"), -float("inf"), 1e300, 1e-300, 1e100, 1e-100, 1.01e100, 9.9e-101, 3,
+                    -1.0, 0.0,
+                    "abc", "1e9", True, False, None, 3 + 0j, [1e9], np.float64(1e9), np.bool_(True),
+                    10 ** rng.uniform(6, 11)],
+          "poisson": [float("nan"), float("inf"), -float("inf"), 3, 3.0, -0.1, 0.0, 1.0, 1.0000001, 0.25, 0.5, 1e300,
+                      1e-300,
                       "abc", "0.3", True, False, None, [0.3], np.float64(0.3), np.bool_(False)],
           "label": ["grain", "", "two words", "é", 3, None, True, 1.5, b"x", ["a"], np.str_("np")],
           "id": [-1, 0, 5, 2 ** 31 - 1, 2 ** 31, -2 ** 40, "1", 1.5, None, True, float("nan"), np.int64(4)]}
     for _ in range(args.n):
         keys = rng.sample(sorted(YP), rng.choice([1, 1, 2]))
         kw = {k: rng.choice(YP[k]) if rng.random() < 0.8 else (rng.uniform(0, 0.5) if k == "poisson" else
-                                                                10 ** rng.uniform(6, 11) if k == "young" else YP[k][0])
+                                                               10 ** rng.uniform(6, 11) if k == "young" else YP[k][0])
               for k in keys}
         if rng.random() < 0.3:
             kw.update({n: value_for(n) for n in rng.sample(NUMBERS, 1)})
@@ -888,12 +927,14 @@ with quiet_fd2():
             count("MesoMat young/poisson/label/id", "other", f"{how} {kw!r}: {type(e).__name__}: {e}")
             continue
         ok = clean_collision(mat) and mixed_collision(mat)
-        count("MesoMat young/poisson/label/id", "accepted and ran clean" if ok else "other", f"{how} {kw!r}: non-finite state")
+        count("MesoMat young/poisson/label/id", "accepted and ran clean" if ok else "other",
+              f"{how} {kw!r}: non-finite state")
 
     # 20. scene.set_detection(margin): refused naming the margin with nothing changed, or the scene
     #     (adhesive or not, a facet and a wall with YADE's functors) runs clean.
     MARGINS = [float("inf"), -float("inf"), float("nan"), -1.0, 0.0, 0.5, 0.999, 1.0, 1.2, 2, 10.0, 1e6, 1e300, 1e-300,
-               "abc", "1.2", None, True, False, [1.2], (1.2,), {}, 3 + 0j, np.float64(1.5), np.float32(2.0), np.int64(3),
+               "abc", "1.2", None, True, False, [1.2], (1.2,), {}, 3 + 0j, np.float64(1.5), np.float32(2.0),
+               np.int64(3),
                np.bool_(True), np.array([1.5])]
     for _ in range(args.n):
         mat = MATERIALS[rng.choice(sorted(MATERIALS))]
@@ -919,8 +960,10 @@ with quiet_fd2():
               f"margin={margin!r}: factor {factor!r}, finite {finite_scene()}")
 
     # 21. scene.engines(gravity, sorted_loop): refused naming the argument, or a sphere falls on a box clean.
-    GRAVITY = [(0, 0, -9.81), [0, 0, -9.81], __import__("yade").Vector3(0, 0, -9.81), np.array([0.0, 0.0, -9.81]), (float("nan"), 0, 0),
-               (0, float("inf"), 0), (0, 0, -float("inf")), None, (0, 0), (0, 0, 0, 0), (), "abc", "0,0,-9.81", b"xyz", 9.81,
+    GRAVITY = [(0, 0, -9.81), [0, 0, -9.81], __import__("yade").Vector3(0, 0, -9.81), np.array([0.0, 0.0, -9.81]),
+               (float("nan"), 0, 0),
+               (0, float("inf"), 0), (0, 0, -float("inf")), None, (0, 0), (0, 0, 0, 0), (), "abc", "0,0,-9.81", b"xyz",
+               9.81,
                (True, 0, 0), (0, 0, "x"), (None, 0, 0), (3 + 0j, 0, 0), (1e300, 0, 0), (1e-300, 0, 0), (0, 0, -1e6),
                (np.float32(1.0), 0, np.int64(-9)), {}, {0: 1, 1: 2, 2: 3}, {0.0, 1.0, -9.81}, iter([0, 0, -9.81])]
     for _ in range(args.n):
@@ -931,19 +974,22 @@ with quiet_fd2():
         try:
             engines = scene.engines(gravity=g, sorted_loop=sl) if rng.random() < 0.7 else scene.engines(g)
         except (ValueError, TypeError) as e:
-            count("engines gravity", "rejected clearly" if ("gravity" in str(e) or "sorted_loop" in str(e)) else "other",
+            count("engines gravity",
+                  "rejected clearly" if ("gravity" in str(e) or "sorted_loop" in str(e)) else "other",
                   f"gravity={g!r} sorted_loop={sl!r}: {type(e).__name__}: {e}")
             continue
         except Exception as e:  # noqa: BLE001
             count("engines gravity", "other", f"gravity={g!r} sorted_loop={sl!r}: {type(e).__name__}: {e}")
             continue
         if isinstance(g, (dict, set, frozenset)):  # no order of its own: taken as its keys, in some order
-            count("engines gravity", "other", f"[a mapping or set taken as a vector] gravity={g!r}: NewtonIntegrator.gravity = "
+            count("engines gravity", "other",
+                  f"[a mapping or set taken as a vector] gravity={g!r}: NewtonIntegrator.gravity = "
                   f"{[e.gravity for e in engines if isinstance(e, w.NewtonIntegrator)]}")
             continue
         scene.reset()
         O.materials.append(w.MesoMat(**MATERIALS[rng.choice(sorted(MATERIALS))]))
-        O.bodies.append([utils.sphere((0, 0, R + 1e-6), R, material=0), utils.box((0, 0, -R), (5 * R, 5 * R, R), fixed=True, material=0)])
+        O.bodies.append([utils.sphere((0, 0, R + 1e-6), R, material=0),
+                         utils.box((0, 0, -R), (5 * R, 5 * R, R), fixed=True, material=0)])
         O.engines = engines
         try:
             O.dt = scene.time_step()
@@ -968,7 +1014,8 @@ with quiet_fd2():
                 O.dt = r
         except ValueError as e:
             kept = detection_state() == before
-            count("Wall.axis checks", "rejected clearly" if not valid and "Wall.axis" in str(e) and f"#{wid}" in str(e) and kept
+            count("Wall.axis checks",
+                  "rejected clearly" if not valid and "Wall.axis" in str(e) and f"#{wid}" in str(e) and kept
                   else "other", f"axis {axis} {call}: {e}; unchanged {kept}")
             continue
         except Exception as e:  # noqa: BLE001
@@ -1003,7 +1050,8 @@ def mesh_drag(facets, start, direction, speed, mat, functor, press, hold, steps)
     b = O.bodies[ball]
     b.state.blockedDOFs = "xyXYZ"
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb()], verletDist=0),
-                 w.InteractionLoop([getattr(w, functor)()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.InteractionLoop([getattr(w, functor)()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
     scene.set_detection()
     O.dt = 0.2 * math.sqrt(b.state.mass / mat["kp"])
@@ -1094,16 +1142,18 @@ with quiet_fd2():
         f_ref, _, _, _ = mesh_drag(LARGE, **setting)
         gap = max(math.dist(a, c) for a, c in zip(f_mesh, f_ref))
         ok = finite and pressed == 1 and most == 1 and gap <= 1e-6 * press and "IGeomFunctor returned false" not in err
-        cls = functor if "Meso" in functor else functor.replace("_ScGeom", "_MesoScGeom")  # set_detection puts the package's in
+        # set_detection puts the package's in
+        cls = functor if "Meso" in functor else functor.replace("_ScGeom", "_MesoScGeom")
         count("facet meshes", "accepted and ran clean" if ok else "other",
-              f"{kind} {len(tris)} facets, duplicates {dups}, {mname}, {functor}: finite {finite}, contacts pressed {pressed}, "
-              f"most {most}, |F - F(one facet)| {gap:.3g} N; stderr {err.strip()[:200]!r}", cls=cls)
+              f"{kind} {len(tris)} facets, duplicates {dups}, {mname}, {functor}: finite {finite}, contacts pressed "
+              f"{pressed}, most {most}, |F - F(one facet)| {gap:.3g} N; stderr {err.strip()[:200]!r}", cls=cls)
 
     # 24. Callbacks that raise in the loop (mesocontact.loop): the step completes, the next step's start
     #     stops with an error naming the runner, no step is repeated and the run goes on. (SystemExit ends
     #     the process by design: ctest yade.loop_callbacks checks it in a subprocess.)
     for _ in range(args.n // 2):
-        exc = rng.choice([ValueError("fuzz"), ZeroDivisionError, KeyboardInterrupt, RuntimeError("x" * 5000), TypeError, KeyError("k")])
+        exc = rng.choice([ValueError("fuzz"), ZeroDivisionError, KeyboardInterrupt, RuntimeError("x" * 5000), TypeError,
+                          KeyError("k")])
         fail_at = rng.randint(1, 6)
         before_calls, calls = [], []
         la, lb = "fzBefore" + str(rng.randrange(10 ** 6)), "fzRaising" + str(rng.randrange(10 ** 6))
@@ -1129,7 +1179,8 @@ with quiet_fd2():
         ok = (len(errors) == 1 and lb in errors[0] and O.iter == 10 and before_calls == list(range(1, 10))
               and calls == list(range(1, 10)) and finite_scene())
         count("loop callbacks that raise", "accepted and ran clean" if ok else "other",
-              f"{exc!r} at {fail_at}: errors {[e[:120] for e in errors]}, iter {O.iter}, calls {before_calls} / {calls}")
+              f"{exc!r} at {fail_at}: errors {[e[:120] for e in errors]}, iter {O.iter}, calls {before_calls} "
+              f"/ {calls}")
         loop._CALLBACKS.pop(la, None)
         loop._CALLBACKS.pop(lb, None)
 
@@ -1145,16 +1196,18 @@ def cycles_data(n):
     per = max(1, n // (len(corners) - 1))
     d = np.concatenate([np.linspace(a, b, per, endpoint=False) for a, b in zip(corners[:-1], corners[1:])]) * DMP
     F = theory.normal_force_path(d, 100.0, 500.0, 100.0, 0.1, A12, "linear")
-    return d, F + rng.choice([0.0, 0.01, 0.01, 0.1]) * np.max(np.abs(F)) * np.random.default_rng(rng.randrange(1000)).standard_normal(len(F))
+    return d, (F + rng.choice([0.0, 0.01, 0.01, 0.1]) * np.max(np.abs(F))
+               * np.random.default_rng(rng.randrange(1000)).standard_normal(len(F)))
 
 
 def cycles_input():
     """fit_cycles' arguments: mostly valid cycles with one or two things made adversarial."""
     d, F = cycles_data(rng.choice([20, 40, 80]))
     a12 = A12
-    how = rng.choice(["valid"] * 8 + ["scaled"] * 3 + ["empty", "one point", "two points", "equal delta", "equal force", "negative delta",
-                      "negative force", "zero force", "bools", "numpy bools", "nan", "inf", "strings", "None", "2-D",
-                      "lengths differ", "huge", "tiny", "ints", "lists", "constant"])
+    how = rng.choice(["valid"] * 8 + ["scaled"] * 3
+                     + ["empty", "one point", "two points", "equal delta", "equal force", "negative delta",
+                        "negative force", "zero force", "bools", "numpy bools", "nan", "inf", "strings", "None", "2-D",
+                        "lengths differ", "huge", "tiny", "ints", "lists", "constant"])
     if how == "scaled":
         s, t = 10 ** rng.uniform(-105, 105), 10 ** rng.uniform(-105, 105)  # the fit computes within 1e-100 to 1e100
         d, F, a12 = d * s, F * t, a12 * s
@@ -1205,12 +1258,15 @@ def cycles_input():
         d, F = np.linspace(0, DMP, len(d)), np.full(len(d), 1.0)
     kw = {}
     if rng.random() < 0.1:
-        a12 = rng.choice([0, -1e-3, float("nan"), float("inf"), True, "1e-3", None, 1e300, 1e-300, np.float64(1e-3), [1e-3]])
+        a12 = rng.choice([0, -1e-3, float("nan"), float("inf"), True, "1e-3", None, 1e300, 1e-300, np.float64(1e-3),
+                          [1e-3]])
     if rng.random() < 0.1:
-        kw["free"] = rng.choice([("k1",), ("kp", "kc"), ("k1", "k1"), ("shift",), "k1", [], ("x",), None, ("phiF",), "kpkc",
+        kw["free"] = rng.choice([("k1",), ("kp", "kc"), ("k1", "k1"), ("shift",), "k1", [], ("x",), None, ("phiF",),
+                                 "kpkc",
                                  ("k1", "kp", "kc", "phiF"), (1,)])
     if rng.random() < 0.1:
-        kw["values"] = rng.choice([{"k1": 100.0}, {"k1": -1.0}, {"kp": 1.0}, {"phiF": 2.0}, {"kc": float("nan")}, {"x": 1},
+        kw["values"] = rng.choice([{"k1": 100.0}, {"k1": -1.0}, {"kp": 1.0}, {"phiF": 2.0}, {"kc": float("nan")},
+                                   {"x": 1},
                                    {"k1": True}, {"shift": "a"}, "abc", [1], {"kp": 500.0, "kc": 100.0, "phiF": 0.1},
                                    {"k1": 1e300}, {"shift": 1e-3}])
     if rng.random() < 0.15:
@@ -1225,11 +1281,13 @@ def cycles_input():
     return how, d, F, a12, kw
 
 
-MF_BASE = dict(radius=1e-3, density=2500.0, impact_speed=0.5, restitution=0.6, contact_time=6e-4, phiF=0.1, kc_over_kp=0.2,
+MF_BASE = dict(radius=1e-3, density=2500.0, impact_speed=0.5, restitution=0.6, contact_time=6e-4, phiF=0.1,
+               kc_over_kp=0.2,
                fa=1e-4, kca=100.0)
 MF_ARGS = ("radius", "density", "impact_speed", "restitution", "contact_time", "phiF", "plastic_overlap", "kc_over_kp",
            "pull_off_force", "fa", "kca", "adhesion", "radius2", "interpolation", "limit")
-ADVERSE = [0, 0.0, -1.0, float("nan"), float("inf"), -float("inf"), 1e300, 1e-300, 1e155, 5e-324, 1.7e308, True, False, None,
+ADVERSE = [0, 0.0, -1.0, float("nan"), float("inf"), -float("inf"), 1e300, 1e-300, 1e155, 5e-324, 1.7e308, True, False,
+           None,
            "abc", "0.5", [1.0], 3 + 0j, np.float64(float("nan")), np.bool_(True)]
 
 
@@ -1257,7 +1315,8 @@ def material_input():
         elif name == "phiF":
             kw[name] = rng.uniform(0.01, 1)
         else:
-            kw[name] = MF_BASE.get(name, 1e-3) * 10 ** rng.uniform(-2, 2) if MF_BASE.get(name, 1e-3) else rng.uniform(0, 1)
+            kw[name] = (MF_BASE.get(name, 1e-3) * 10 ** rng.uniform(-2, 2) if MF_BASE.get(name, 1e-3)
+                        else rng.uniform(0, 1))
     if kw.get("adhesion") == "none" and rng.random() < 0.7:
         kw["fa"] = 0.0
     return kw
@@ -1287,7 +1346,8 @@ with quiet_fd2():
         if f is None:
             continue
         p = f.params
-        ok = (all(isinstance(p[k], float) and math.isfinite(p[k]) for k in p) and p["k1"] > 0 and p["kp"] >= p["k1"] and p["kc"] >= 0
+        ok = (all(isinstance(p[k], float) and math.isfinite(p[k]) for k in p) and p["k1"] > 0 and p["kp"] >= p["k1"]
+              and p["kc"] >= 0
               and 0 < p["phiF"] <= 1 and math.isfinite(f.rms_residual))
         count("fit_cycles", "accepted and ran clean" if ok else "other", f"{desc}: params {p}, rms {f.rms_residual}")
     # 26. params.material_from with each argument made adversarial (empty, equal, negative, bools, extreme).
@@ -1308,9 +1368,11 @@ with quiet_fd2():
                    "not a material": rng.choice(["abc", None, [1.0], 5.0])}[how]
             factors = [10 ** rng.uniform(-3, 3) if rng.random() < 0.7 else rng.choice(ADVERSE) for _ in range(2)]
             try:
-                out = params.scale_material(mat, factors[0], factors[1]) if rng.random() < 0.7 else params.scale_material(mat, factors[0])
+                out = (params.scale_material(mat, factors[0], factors[1]) if rng.random() < 0.7
+                       else params.scale_material(mat, factors[0]))
             except (ValueError, TypeError) as e:
-                count("scale_material", "rejected clearly" if named(e, ("material", "radius_factor", "density_factor")) else "other",
+                count("scale_material",
+                      "rejected clearly" if named(e, ("material", "radius_factor", "density_factor")) else "other",
                       f"{how} {factors!r}: {type(e).__name__}: {e}")
                 continue
             except Exception as e:  # noqa: BLE001

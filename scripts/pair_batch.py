@@ -43,5 +43,6 @@ result = {"description": name, "params": O.tags["params"], "material": mat, "rad
           "viscous": t.gammaN > 0, "steps": r.steps, "wall_clock_s": time.time() - t0}
 os.makedirs(t.out, exist_ok=True)
 outputs.write_atomic(os.path.join(t.out, name + ".json"), json.dumps(result, indent=1))
-print(f"{name}: e_yade = {r.e:.6f}, e_theory = {th.e:.6f} ({th.regime}){' (viscous: theory without it)' if t.gammaN > 0 else ''}",
+print(f"{name}: e_yade = {r.e:.6f}, e_theory = {th.e:.6f} "
+      f"({th.regime}){' (viscous: theory without it)' if t.gammaN > 0 else ''}",
       flush=True)

@@ -45,11 +45,15 @@ a = ap.parse_args(sys.argv[1:])
 if a.out is not None and not os.access(os.path.dirname(os.path.abspath(a.out)), os.W_OK):  # not after the whole run
     ap.error(f"argument --out: {a.out!r} is invalid: its directory does not exist or is not writable")
 MATERIALS = {
-    "MesoPhys (normal, jump-in adhesion, lab drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0, adhesion="jumpIn",
+    "MesoPhys (normal, jump-in adhesion, lab drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0,
+                                                           adhesion="jumpIn",
                                                            gammaN=1e-4, density=2000), "lab"),
-    "MesoTangentialPhys (every mechanism, contact drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0,
-                                                                adhesion="jumpIn", gammaN=1e-4, density=2000, kt=50.0, gammaT=1e-5,
-                                                                frictionAngle=0.4, kr=10.0, gammaR=1e-6, muR=0.1, ko=10.0,
+    "MesoTangentialPhys (every mechanism, contact drag)": (dict(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6,
+                                                                kca=100.0,
+                                                                adhesion="jumpIn", gammaN=1e-4, density=2000, kt=50.0,
+                                                                gammaT=1e-5,
+                                                                frictionAngle=0.4, kr=10.0, gammaR=1e-6, muR=0.1,
+                                                                ko=10.0,
                                                                 gammaO=1e-6, muO=0.1, phiD=0.8), "contacts"),
 }
 
@@ -70,7 +74,8 @@ def floor(kw):
         m = O.materials.append(w.FrictMat(young=1e7, poisson=0.3, density=2000, frictionAngle=0.4))
         O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()]),
                      w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom()],
-                                       [w.Ip2_FrictMat_FrictMat_FrictPhys()], [w.Law2_ScGeom_FrictPhys_CundallStrack()]),
+                                       [w.Ip2_FrictMat_FrictMat_FrictPhys()],
+                                       [w.Law2_ScGeom_FrictPhys_CundallStrack()]),
                      w.NewtonIntegrator(damping=0.3, gravity=(0, 0, -9.81))]
     sp = pack.SpherePack()
     sp.makeCloud((0, 0, 0), (4e-3, 4e-3, 4e-3), rMean=4e-4, rRelFuzz=0.2, seed=5, num=60)
@@ -94,12 +99,14 @@ def packing(kw, reference):
     sp = pack.SpherePack()
     sp.makeCloud((0, 0, 0), (4e-3, 4e-3, 4e-3), rMean=5e-4, rRelFuzz=0.2, seed=5)
     sp.toSimulation(material=m)
-    for c, h in (((2e-3, 2e-3, -5e-4), (3e-3, 3e-3, 5e-4)),  # a floor and four side walls: a packing even without friction
+    # a floor and four side walls: a packing even without friction
+    for c, h in (((2e-3, 2e-3, -5e-4), (3e-3, 3e-3, 5e-4)),
                  ((-7.5e-4, 2e-3, 2e-3), (2.5e-4, 3e-3, 3e-3)), ((4.75e-3, 2e-3, 2e-3), (2.5e-4, 3e-3, 3e-3)),
                  ((2e-3, -7.5e-4, 2e-3), (3e-3, 2.5e-4, 3e-3)), ((2e-3, 4.75e-3, 2e-3), (3e-3, 2.5e-4, 3e-3))):
         O.bodies.append(utils.box(c, h, fixed=True, material=m))
     O.engines = scene.engines(gravity=(0, 0, -50))
-    O.engines = O.engines[:3] + [w.MesoBackgroundDamping(gammaB=2e-5, gammaBR=1e-9, reference=reference)] + O.engines[3:]
+    O.engines = O.engines[:3] + [w.MesoBackgroundDamping(gammaB=2e-5, gammaBR=1e-9,
+                                                         reference=reference)] + O.engines[3:]
     O.dt = scene.time_step(safety=0.05)
     sort_loop()
     O.trackEnergy = True
@@ -122,7 +129,8 @@ def numbers(v):
 def state():
     bodies = [tuple(b.state.pos) + tuple(b.state.vel) + tuple(b.state.angVel) + tuple(b.state.ori) for b in O.bodies]
     real = [i for i in O.interactions if i.isReal]
-    contacts = {(i.id1, i.id2): [x for k, v in sorted(i.phys.dict().items()) for x in numbers(v)] if isinstance(i.phys, w.MesoPhys)
+    contacts = {(i.id1, i.id2): [x for k, v in sorted(i.phys.dict().items()) for x in numbers(v)]
+                if isinstance(i.phys, w.MesoPhys)
                 else list(i.phys.normalForce) + list(i.phys.shearForce) for i in real}
     texts = {(i.id1, i.id2): [v for k, v in sorted(i.phys.dict().items()) if isinstance(v, str)] for i in real
              if isinstance(i.phys, w.MesoPhys)}
@@ -133,7 +141,8 @@ def largest(x, y):
     """The largest difference; inf when the two differ in bodies, contacts, state or energy names,
     or a value is NaN in one of them (a NaN would slip through max())."""
     (b1, c1, e1, t1), (b2, c2, e2, t2) = x, y
-    if len(b1) != len(b2) or set(c1) != set(c2) or set(e1) != set(e2) or any(len(c1[k]) != len(c2[k]) for k in c1) or t1 != t2:
+    if (len(b1) != len(b2) or set(c1) != set(c2) or set(e1) != set(e2) or any(len(c1[k]) != len(c2[k]) for k in c1)
+            or t1 != t2):
         return float("inf")
     diffs = [abs(p - q) for u, v in zip(b1, b2) for p, q in zip(u, v)] + \
         [abs(p - q) for k in c1 for p, q in zip(c1[k], c2[k])] + [abs(e1[k] - e2[k]) for k in e1]

@@ -55,7 +55,8 @@ for name, size in sorted(sizes.items()):
 
 # 2. Members, each set to a value of its own by the library's setters.
 s = w.State()
-s.pos, s.vel, s.angVel, s.mass, s.inertia = (1.5, -2.5, 3.25), (4.5, 5.75, -6.125), (7.5, -8.25, 9.0), 10.375, (11.5, 12.25, 13.125)
+s.pos, s.vel, s.angVel, s.mass, s.inertia = ((1.5, -2.5, 3.25), (4.5, 5.75, -6.125), (7.5, -8.25, 9.0), 10.375,
+                                             (11.5, 12.25, 13.125))
 for k, v in probe.state(s).items():
     same(f"State.{k}", v, getattr(s, k))
 
@@ -84,7 +85,8 @@ mat = O.materials.append(w.FrictMat(density=2000, young=1e6, frictionAngle=0.4))
 for k, v in probe.material(O.materials[mat]).items():
     same(f"FrictMat.{k} (in O.materials)", v, getattr(O.materials[mat], k))
 ids = O.bodies.append([utils.sphere((0.05 + 0.01 * i, 0.05, 0.05), 0.006, material=mat) for i in range(4)])
-clump, members = O.bodies.appendClumped([utils.sphere((0.1, 0.15, 0.1), 0.005, material=mat), utils.sphere((0.11, 0.15, 0.1), 0.005, material=mat)])
+clump, members = O.bodies.appendClumped([utils.sphere((0.1, 0.15, 0.1), 0.005, material=mat),
+                                         utils.sphere((0.11, 0.15, 0.1), 0.005, material=mat)])
 O.bodies[ids[0]].state.vel = (0.3, 0, 0)
 O.trackEnergy = True
 O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),

@@ -11,7 +11,8 @@ Theory and parameters (plain Python, no YADE):
   ``fitting`` (multi-start and bootstrap), ``cycles`` and ``cycles_identify`` (the fit to F(delta)
   and what it can tell), ``groups`` (the dimensionless groups), ``verify`` (a fit checked by YADE
   pair collisions);
-- ``outputs``, ``scene_names``: result files that are whole or absent; names shared with readers.
+- ``outputs``, ``scene_names``: result files that are whole or absent; names shared with readers;
+- ``jobs``: a study's jobs behind one command line (Job records in a Registry: lookup, --help, cost).
 
 Scenes and drivers (inside ``yade``):
 - ``scene``: what every scene shares (engines, detection, time step, contact states, VTK);
@@ -19,6 +20,8 @@ Scenes and drivers (inside ``yade``):
 - ``pair``: pair collisions, sphere-sphere and sphere-wall;
 - ``mpi``: the law under ``yade.mpy`` with contact history kept;
 - ``batch``: scripts that also run as ``yade-batch`` jobs.
+- ``bulk``: a sintered sample of any MesoMat (``bulk.prepare``, its ``Protocol`` in plain Python)
+  and its uni-axial tests, unconfined or in a die (docs/bulk.md).
 
 The papers' reproductions (the pair-figure atlas, the agglomerate tablet of Appendix F) are
 studies built on this package, in the package ``mesostudies`` of the source tree's ``studies/``;

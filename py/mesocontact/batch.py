@@ -57,22 +57,25 @@ def argv(command_line, positional=None, **columns):
     return out
 
 
-def help_requested(argv, script, nargs=None):
-    """A script's --help (or -h): prints its header comment (its usage) and ends the process
-    with status 0; with ``nargs``, a wrong count of positional arguments prints it and ends with
-    status 2. ``script`` is sys.argv[0], the script's path under ``yade -x``."""
+def help_requested(argv, script, nargs=None, more=None):
+    """A script's --help (or -h): prints its header comment (its usage), then ``more`` if given
+    (e.g. a job registry's describe()), and ends the process with status 0; with ``nargs``, a
+    wrong count of positional arguments prints it and ends with status 2. ``script`` is
+    sys.argv[0], the script's path under ``yade -x``."""
     import sys
     asked = bool(set(argv) & {"-h", "--help"})
-    wrong = not asked and nargs is not None and not under_batch() and len([a for a in argv if not a.startswith("-")]) != nargs
+    wrong = not asked and nargs is not None and not under_batch() and len([a for a in argv
+                                                                           if not a.startswith("-")]) != nargs
     if not asked and not wrong:
         return
     with open(script) as f:
         head = [ln[2:].rstrip() if ln.startswith("# ") else ln[1:].rstrip() for ln in f
                 if ln.startswith("#") and not ln.startswith("#!")]
     text = "\n".join(head[:40]) or f"usage: yade -n -x {script}"
+    if more:
+        text += "\n" + more
     if wrong:
         print(f"{script}: expected {nargs} argument(s), got {argv}\n{text}", file=sys.stderr, flush=True)
         sys.exit(2)
     print(text, flush=True)
     sys.exit(0)
-

@@ -75,7 +75,8 @@ def call(label):
         fn = _CALLBACKS[label]
     except KeyError:
         _defer(label, RuntimeError(f"PyRunner {label!r}: no callable registered under this label in this process "
-                                   f"(a scene loaded from a file? install its runner again with mesocontact.loop.runner)"))
+                                   f"(a scene loaded from a file? install its runner again with "
+                                   f"mesocontact.loop.runner)"))
         return
     try:
         fn()
@@ -159,7 +160,8 @@ def raise_pending():
     todo = "run on" if isinstance(exc, KeyboardInterrupt) else "fix the callable (loop.register) and run on"
     what = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
     raise RuntimeError(f"the runner {label!r} raised at iteration {it}: {what}{more}. That step "
-                       f"was completed; the run stopped before iteration {O.iter}: {todo}, no step is repeated") from exc
+                       f"was completed; the run stopped before iteration {O.iter}: {todo}, no step is "
+                       "repeated") from exc
 
 
 def registered():

@@ -58,7 +58,8 @@ def check_mpy(mpy):
         if got != params:
             found = "missing" if got is None else "(" + ", ".join(got) + ")"
             raise RuntimeError(f"yade.mpy.{name} of YADE {version} is {found}: "
-                               f"mesocontact.mpi wraps mpy.{name}({', '.join(params)}) of YADE {', '.join(TESTED_YADE)}")
+                               f"mesocontact.mpi wraps mpy.{name}({', '.join(params)}) of YADE "
+                               f"{', '.join(TESTED_YADE)}")
     if version not in TESTED_YADE:
         warnings.warn(f"mesocontact.mpi: YADE {version}'s yade.mpy has not been tested with its contact keeping "
                       f"(tested: {', '.join(TESTED_YADE)}); run ctest -R mpi to check it", stacklevel=3)

@@ -2,7 +2,8 @@
 
 A result (one run's CSV and JSON; a figure's JSON, PNG and the runs it plots) is a *bundle*: a
 directory whose files are written under a hidden temporary name and committed by one rename
-(or, over an older bundle, one atomic exchange of the two directories), with a MANIFEST.json of their SHA-256 sums. A job stopped at any moment (SIGTERM, SIGKILL, a
+(or, over an older bundle, one atomic exchange of the two directories), with a MANIFEST.json of
+their SHA-256 sums. A job stopped at any moment (SIGTERM, SIGKILL, a
 crash) leaves either the previous bundle or the new one under the result's name, never a mix;
 its unfinished work is a hidden ``.<name>.tmp-<pid>-...`` directory, which ``sweep`` removes once
 that process is gone. ``problems`` lists whatever does not satisfy this (for tests and for the
@@ -26,6 +27,12 @@ def sha256(path):
         for block in iter(lambda: f.read(1 << 20), b""):
             h.update(block)
     return h.hexdigest()
+
+
+def read_csv(path):
+    """The rows of a CSV of numbers with one header line, each a tuple of floats."""
+    with open(path) as f:
+        return [tuple(float(x) for x in line.split(",")) for line in f.read().split("\n")[1:] if line]
 
 
 def write_atomic(path, text):

@@ -75,7 +75,8 @@ def _stable(m1, m2, radius1, radius2, rotations, dt, steps_per_contact):
     step = O.dt if dt is None else dt
     if step > bound:
         given = f"dt = {dt!r}" if dt is not None else f"steps_per_contact = {steps_per_contact!r} (dt = {step:.4g} s)"
-        raise ValueError(f"{given} is invalid: above the pair's stable step {bound:.4g} s (Ip2_MesoMat_MesoMat_MesoPhys.stableStep)")
+        raise ValueError(f"{given} is invalid: above the pair's stable step {bound:.4g} s "
+                         f"(Ip2_MesoMat_MesoMat_MesoPhys.stableStep)")
 
 
 def _material(material, density):
@@ -131,7 +132,8 @@ def build(radius1, v_inf, material=None, radius2=None, density=2000.0, material2
         _w.NewtonIntegrator(damping=0.0, gravity=(0, 0, 0)),
     ]
     O.trackEnergy = track_energy
-    return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1, start_gap=start_gap, mixed=mixed)
+    return PairScene(ids, (radius1, radius2), (mass1, mass2), m_r, a12, v_inf, delta_a, t_c, m1, start_gap=start_gap,
+                     mixed=mixed)
 
 
 def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0, kind="box", six_d=False, dt=None,
@@ -160,7 +162,8 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
     delta_a = mixed["deltaA"]
     mass = _params.sphere_mass(radius, m.density)
     t_c = _params.contact_time(mixed["kp"], mass)
-    O.dt = dt if dt is not None else _params.resolved_step(mixed["kp"], mass, m_r=mass, steps_per_contact=steps_per_contact)
+    O.dt = dt if dt is not None else _params.resolved_step(mixed["kp"], mass, m_r=mass,
+                                                           steps_per_contact=steps_per_contact)
     _stable(m, w, radius, 0.0, six_d, dt, steps_per_contact)
     start_gap = gap if gap is not None else _pull_in_range(mixed) + 3.0 * max(v_inf, 1e-12) * O.dt
     factor = 1.0 + 1.2 * max(start_gap, -delta_a) / radius
@@ -189,7 +192,8 @@ def build_wall(radius, v_inf, material=None, wall_material=None, density=2000.0,
         _w.NewtonIntegrator(damping=0.0, gravity=gravity),
     ]
     O.trackEnergy = track_energy
-    return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0, start_gap=start_gap,
+    return PairScene(ids, (math.inf, radius), (math.inf, mass), mass, 2.0 * radius, v_inf, delta_a, t_c, m, 0.0,
+                     start_gap=start_gap,
                      mixed=mixed)
 
 
@@ -225,8 +229,9 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
 
     For a stuck pair, final_overlap is the lower turning point of the oscillation it settled
     into (delta_c of Eqs. 36/38), the minimum overlap over settle_contact_times further loading
-    times (a pair that leaves during them rebounded after all and is reported so); with viscosity that is the resting overlap. record=True keeps
-    (t, delta, f_hysteretic, f_total) at every step (and feeds them to yade.plot: t, overlap, force).
+    times (a pair that leaves during them rebounded after all and is reported so); with viscosity that is the
+    resting overlap. record=True keeps (t, delta, f_hysteretic, f_total) at every step (and feeds them to
+    yade.plot: t, overlap, force).
 
     Refused before it starts (ValueError): no approach (v_inf = 0), a step budget above
     max_steps, an impact so hard that it would press the bodies more than the smaller radius
@@ -246,8 +251,9 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     t_load = _params.contact_time(p["k1"], s.m_r)
     steps = int(max_contact_times * t_load / O.dt) + int(approach) + 10
     if steps > max_steps:
-        raise ValueError(f"max_steps = {max_steps:g} is too small: this collision may need {steps:.3g} steps ({approach:.3g} to "
-                         f"approach over the gap {s.start_gap:.3g} m at {s.v_inf:g} m/s, dt = {O.dt:.3g} s)")
+        raise ValueError(f"max_steps = {max_steps:g} is too small: this collision may need {steps:.3g} steps "
+                         f"({approach:.3g} to approach over the gap {s.start_gap:.3g} m at {s.v_inf:g} "
+                         f"m/s, dt = {O.dt:.3g} s)")
     trace = []
     check_every = max(1, int(0.02 * s.contact_time / O.dt))
     limit = O.iter + steps
@@ -258,9 +264,11 @@ def collide(s, max_contact_times=40.0, record=False, settle_contact_times=6.0, m
     try:
         _run_until(limit)
         if not state["touched"] and not _touching(s):
-            raise RuntimeError(f"the pair never came into contact in {steps} steps (gap {s.start_gap:.3g} m, v_inf {s.v_inf:g} m/s)")
+            raise RuntimeError(f"the pair never came into contact in {steps} steps (gap {s.start_gap:.3g} m, "
+                               f"v_inf {s.v_inf:g} m/s)")
         if _passed_through(s):
-            raise RuntimeError(f"the bodies passed through each other (v_inf = {s.v_inf:g} m/s, dt = {O.dt:.3g} s): no collision to report")
+            raise RuntimeError(f"the bodies passed through each other (v_inf = {s.v_inf:g} m/s, dt = {O.dt:.3g} s): no "
+                               f"collision to report")
         if state["separated"]:
             return PairResult(separation_speed(s) / s.v_inf, False, 0.0, O.iter, trace)
         watcher.iterPeriod = 1

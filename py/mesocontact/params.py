@@ -21,7 +21,8 @@ def _representable(f, zero_ok=False):
         if not (math.isfinite(r) and (r >= 0 if zero_ok else r > 0)):
             bound = inspect.signature(f).bind(*args, **kw)
             given = ", ".join(f"{k}={v!r}" for k, v in bound.arguments.items())
-            raise ValueError(f"{f.__name__}({given}) = {r!r} is out of floating-point range: the arguments are too extreme")
+            raise ValueError(f"{f.__name__}({given}) = {r!r} is out of floating-point range: the "
+                             f"arguments are too extreme")
         return r
     return checked
 
@@ -39,7 +40,8 @@ def sphere_mass(radius, density):
     except OverflowError:
         m = math.inf
     if not (sys.float_info.min <= m < math.inf):  # a subnormal mass has lost its digits
-        raise ValueError(f"radius = {radius!r}, density = {density!r}: the mass {m!r} kg is out of floating-point range")
+        raise ValueError(f"radius = {radius!r}, density = {density!r}: the mass {m!r} kg is out of "
+                         "floating-point range")
     return m
 
 
@@ -162,7 +164,8 @@ def _newton(f, x, tol=1e-13):
     return None
 
 
-K1_RANGE = (1e-200, 1e200)  # the stiffnesses material_from tries [N/m]: their collisions' products stay inside floating point
+# the stiffnesses material_from tries [N/m]: their collisions' products stay inside floating point
+K1_RANGE = (1e-200, 1e200)
 
 
 def material_from(radius, density, impact_speed, restitution, contact_time, phiF=None, plastic_overlap=None,
@@ -196,7 +199,8 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     positive("density", density)
     positive("impact_speed", impact_speed)
     if not (is_number(restitution) and 0 < restitution < 1):
-        raise ValueError(f"restitution = {restitution!r} is invalid: must lie in (0, 1) (1 has no plasticity, 0 is the sticking regime)")
+        raise ValueError(f"restitution = {restitution!r} is invalid: must lie in (0, 1) (1 has no plasticity, 0 is "
+                         f"the sticking regime)")
     positive("contact_time", contact_time)
     nonnegative("kc_over_kp", kc_over_kp)
     nonnegative("fa", fa)
@@ -212,7 +216,8 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
     radius2 = radius if radius2 is None else radius2
     positive_or_inf("radius2", radius2)
-    if not MESOMAT_RANGE[0] <= density <= MESOMAT_RANGE[1]:  # what MesoMat takes; beyond, the masses leave floating point
+    # what MesoMat takes; beyond, the masses leave floating point
+    if not MESOMAT_RANGE[0] <= density <= MESOMAT_RANGE[1]:
         raise ValueError(f"density = {density!r} is invalid: must lie in [1e-100, 1e100] [kg/m^3], as MesoMat's")
     m1 = sphere_mass(radius, density)
     try:
@@ -263,9 +268,10 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     a0 = math.log(m_r) + 2 * (math.log(0.5 * math.pi) - math.log(contact_time))
     lo, hi = math.log(K1_RANGE[0]), math.log(K1_RANGE[1])
     if not lo <= a0 <= hi - 10:
-        raise ValueError(f"contact_time = {contact_time!r} is out of range for radius = {radius!r}, density = {density!r}: "
-                         f"the stiffness of a contact that lasts that long, m_r (pi/(2 contact_time))^2 = "
-                         f"1e{a0 / math.log(10):+.0f} N/m (m_r = {m_r:.4g} kg), lies outside {K1_RANGE[0]:g} to {K1_RANGE[1]:g} N/m")
+        raise ValueError(f"contact_time = {contact_time!r} is out of range for radius = {radius!r}, "
+                         f"density = {density!r}: the stiffness of a contact that lasts that long, m_r (pi/(2 "
+                         f"contact_time))^2 = 1e{a0 / math.log(10):+.0f} N/m (m_r = {m_r:.4g} kg), lies outside "
+                         f"{K1_RANGE[0]:g} to {K1_RANGE[1]:g} N/m")
     xs = [a0 + 10 * i / 80 for i in range(81)]
     ys = [math.log(1e-6) + 21 * j / 80 for j in range(81)]
     try:
@@ -280,9 +286,10 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
                 if x and not any(abs(x[0] - f[0]) < 1e-6 and abs(x[1] - f[1]) < 1e-6 for f in found):
                     found.append(x)
     except ValueError as e:  # the inputs are each valid: together they put the trial collisions outside floating point
-        raise ValueError(f"impact_speed = {impact_speed!r}, contact_time = {contact_time!r}, kc_over_kp = {kc_over_kp!r}, "
-                         f"pull_off_force = {pull_off_force!r}, fa = {fa!r}, kca = {kca!r}: the trial collisions (k1 from "
-                         f"{math.exp(xs[0]):.3g} to {math.exp(xs[-1]):.3g} N/m) cannot be computed: {e}") from None
+        raise ValueError(f"impact_speed = {impact_speed!r}, contact_time = {contact_time!r}, "
+                         f"kc_over_kp = {kc_over_kp!r}, pull_off_force = {pull_off_force!r}, fa = {fa!r}, "
+                         f"kca = {kca!r}: the trial collisions (k1 from {math.exp(xs[0]):.3g} to "
+                         f"{math.exp(xs[-1]):.3g} N/m) cannot be computed: {e}") from None
     reached = {tuple(x): pair_collision(impact_speed, **law(x)).plastic_limit for x in found}
     if limit is not None:
         found = [x for x in found if reached[tuple(x)] == limit]
@@ -293,8 +300,9 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     if len(found) > 1:
         alts = "; ".join(f"k1 = {law(x)['k1']:.4g}, kp = {law(x)['kp']:.4g}, kc = {law(x)['kc']:.4g} "
                          f"({'beyond' if reached[tuple(x)] else 'below'} the plastic limit)" for x in found)
-        raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: {len(found)} materials reproduce "
-                         f"them at impact_speed = {impact_speed!r} ({alts}); say which with limit=True or limit=False")
+        raise ValueError(f"restitution = {restitution!r}, contact_time = {contact_time!r}: {len(found)} materials "
+                         f"reproduce them at impact_speed = {impact_speed!r} ({alts}); say which with "
+                         f"limit=True or limit=False")
     p = law(found[0])
     out = FittedMaterial(k1=p["k1"], kp=p["kp"], kc=p["kc"], phiF=phiF, fa=fa, kca=p["kca"], adhesion=p["adhesion"],
                          k2Interpolation=interpolation, gammaN=0.0, density=density)
@@ -302,7 +310,8 @@ def material_from(radius, density, impact_speed, restitution, contact_time, phiF
     out.stable_step = 2.0 * math.sqrt(m_r / p["kp"])
     out.report = (f"kp/k1 = {p['kp'] / p['k1']:.3g} (kp = {p['kp']:.4g} N/m); the stiffest element of this pair, kp on "
                   f"the reduced mass, is stable for dt < 2 sqrt(m_r/kp) = {out.stable_step:.3g} s: a scene of these "
-                  f"spheres runs at scene.time_step() = 0.05 of that or less, {contact_time / (0.05 * out.stable_step):.3g} "
+                  f"spheres runs at scene.time_step() = 0.05 of that or less, "
+                  f"{contact_time / (0.05 * out.stable_step):.3g} "
                   "steps per contact")
     return out
 
@@ -323,14 +332,15 @@ def _why_not(grid, restitution, contact_time):
         return ": every trial material sticks at this speed (raise impact_speed, or lower fa / kc)"
     es = [restitution + c[0] for c in cells]
     if not min(es) <= restitution <= max(es):
-        return (f": the materials stiff enough for contacts that short give e in [{min(es):.3g}, {max(es):.3g}] at this "
-                "speed with these phiF and adhesion (relax restitution or contact_time, or change phiF, the adhesion "
-                "or the speed)")
+        return (f": the materials stiff enough for contacts that short give e in [{min(es):.3g}, {max(es):.3g}] "
+                "at this speed with these phiF and adhesion (relax restitution or contact_time, or change phiF, the "
+                "adhesion or the speed)")
     near = sorted(cells, key=lambda c: abs(c[0]))[:max(3, len(cells) // 50)]  # the trial materials closest to e
     times = [contact_time * (1 + c[1]) for c in near]
     if not math.isfinite(min(times)):  # theory.contact_duration loses its precision on a tensile pull far below k1's
-        return (f": the materials that give e = {restitution!r} have no finite contact time in the closed form (a kc or fa "
-                "below about 1e-16 of k1's scale is lost to rounding there: give kc_over_kp = 0 or fa = 0 instead)")
+        return (f": the materials that give e = {restitution!r} have no finite contact time in the closed form (a kc "
+                "or fa below about 1e-16 of k1's scale is lost to rounding there: give "
+                "kc_over_kp = 0 or fa = 0 instead)")
     return (f": the materials that give e = {restitution!r} last {min(times):.3g} to {max(times):.3g} s in contact "
             f"(relax contact_time towards that range, or change phiF or the adhesion, which shift it)")
 
@@ -386,8 +396,8 @@ def scale_material(material, radius_factor, density_factor=1.0):
         except OverflowError:
             x = math.inf
         if not math.isfinite(x) or (v != 0 and abs(x) < sys.float_info.min):
-            raise ValueError(f"material[{k!r}] = {v!r} times {density_factor!r}^{a} {radius_factor!r}^{b} = {x!r} is out of "
-                             "floating-point range: the factors are too extreme")
+            raise ValueError(f"material[{k!r}] = {v!r} times {density_factor!r}^{a} {radius_factor!r}^{b} = {x!r} is "
+                             "out of floating-point range: the factors are too extreme")
         out[k] = x
     _within_mesomat(out, f"radius_factor = {radius_factor!r}, density_factor = {density_factor!r}")
     return out
@@ -397,5 +407,7 @@ def _within_mesomat(material, inputs):
     """Every nonzero number of a material this module returns lies where MesoMat takes it
     ([1e-100, 1e100]): a result MesoMat would refuse is refused here, naming the inputs."""
     for k, v in material.items():
-        if is_number(v) and v != 0 and k not in ("frictionAngle", "poisson", "phiF", "phiD") and not MESOMAT_RANGE[0] <= abs(v) <= MESOMAT_RANGE[1]:
-            raise ValueError(f"{inputs}: they give {k} = {v!r}, outside the [1e-100, 1e100] a MesoMat takes (0 allowed)")
+        if (is_number(v) and v != 0 and k not in ("frictionAngle", "poisson", "phiF", "phiD")
+                and not MESOMAT_RANGE[0] <= abs(v) <= MESOMAT_RANGE[1]):
+            raise ValueError(f"{inputs}: they give {k} = {v!r}, outside the [1e-100, 1e100] a MesoMat takes "
+                             "(0 allowed)")

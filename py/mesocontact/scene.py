@@ -69,19 +69,21 @@ def check():
         if isinstance(b.shape, w.Wall) and b.shape.axis not in (0, 1, 2):
             raise ValueError(f"body #{b.id}: Wall.axis = {b.shape.axis!r} is invalid: must be 0, 1 or 2 (x, y, z); "
                              f"YADE's Bo1_Wall_Aabb aborts the process on another")
-        if isinstance(b.shape, w.Facet) and not all(math.isfinite(x) for v in list(b.shape.vertices) + [b.state.pos] for x in v):
+        if isinstance(b.shape, w.Facet) and not all(math.isfinite(x) for v in list(b.shape.vertices) + [b.state.pos]
+                                                    for x in v):
             raise ValueError(f"body #{b.id} is a Facet with a vertex that is not finite (NaN or inf): "
                              f"no collider or functor can find it")
         if isinstance(b.shape, w.Sphere) and not (math.isfinite(b.shape.radius) and b.shape.radius > 0):
-            raise ValueError(f"body #{b.id}: Sphere.radius = {b.shape.radius!r} is invalid: must be a finite number > 0 [m]")
+            raise ValueError(f"body #{b.id}: Sphere.radius = {b.shape.radius!r} is invalid: must be a "
+                             f"finite number > 0 [m]")
     # a body's material need not be in O.materials (utils.sphere(material=MesoMat(...)))
     materials = {id(m): m for m in list(O.materials) + [b.material for b in O.bodies if b is not None and b.material]}
     for m in materials.values():
         if isinstance(m, w.ElastMat):
             for name in ("young", "poisson"):
                 if not math.isfinite(getattr(m, name)):
-                    raise ValueError(f"{type(m).__name__} {m.label or '#' + str(m.id)}: {name} = {getattr(m, name)!r} is "
-                                     f"invalid: must be finite")
+                    raise ValueError(f"{type(m).__name__} {m.label or '#' + str(m.id)}: "
+                                     f"{name} = {getattr(m, name)!r} is invalid: must be finite")
 
 
 def set_detection(margin=1.2):
@@ -117,9 +119,11 @@ def set_detection(margin=1.2):
     if not bounds:
         raise ValueError("set_detection: no Bo1_Sphere_Aabb in O.engines' collider (define O.engines first)")
     # every replacement made (and refused) before anything changes
-    loops = [(e, [_with_detection(f) for f in e.geomDispatcher.functors]) for e in O.engines if isinstance(e, w.InteractionLoop)]
+    loops = [(e, [_with_detection(f) for f in e.geomDispatcher.functors]) for e in O.engines
+             if isinstance(e, w.InteractionLoop)]
     factors = [(f, "aabbEnlargeFactor") for f in bounds] + \
-        [(f, "interactionDetectionFactor") for _, functors in loops for f in functors if hasattr(f, "interactionDetectionFactor")]
+        [(f, "interactionDetectionFactor")
+         for _, functors in loops for f in functors if hasattr(f, "interactionDetectionFactor")]
     before = [(f, name, getattr(f, name)) for f, name in factors]
     try:  # a functor that refuses the factor leaves none set
         for f, name in factors:
@@ -217,8 +221,6 @@ def time_step(safety=0.05):
     return safety * min(steps, default=math.inf)
 
 
-
-
 def contact_cohesion(requested=None):
     """What holds the scene's meso contacts together now: per contact in overlap, the largest pull
     it resists if pulled apart slowly from its present state, kc k2 delta0 / (k2 + kc) (where its
@@ -247,9 +249,10 @@ def contact_cohesion(requested=None):
     reach = sum(t >= requested for t in total) if requested is not None else n
     if reach < 0.5 * n:  # most contacts hold less than the user asked for: say so, and why
         import warnings
-        warnings.warn(f"contact_cohesion: {reach} of {n} contacts resist the requested pull-off {requested:.3g} N (median "
-                      f"{0.5 * (total[(n - 1) // 2] + total[n // 2]):.3g} N): pull_off_force is that of a contact loaded to "
-                      "the plastic limit, and these contacts are shallower; their cohesion comes mostly from fa",
+        warnings.warn(f"contact_cohesion: {reach} of {n} contacts resist the requested pull-off {requested:.3g} N "
+                      f"(median {0.5 * (total[(n - 1) // 2] + total[n // 2]):.3g} N): pull_off_force is that of a "
+                      "contact loaded to the plastic limit, and these contacts are shallower; their cohesion "
+                      "comes mostly from fa",
                       stacklevel=2)
     return {"contacts": n, "mean": sum(total) / n, "median": 0.5 * (total[(n - 1) // 2] + total[n // 2]),
             "max": total[-1], "fa_share": sum(fa) / sum(total) if sum(total) > 0 else None}

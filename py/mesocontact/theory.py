@@ -146,7 +146,8 @@ def max_sticking_overlap(eta, beta):
     check_groups(eta, beta)
     positive("beta", beta)
     if beta * eta ** 2 < 1.0 + eta + beta:
-        raise ValueError(f"beta = {beta!r} is invalid with eta = {eta!r}: the pair does not stick at chi = 1 (needs beta eta^2 >= 1 + eta + beta)")
+        raise ValueError(f"beta = {beta!r} is invalid with eta = {eta!r}: the pair does not stick at chi = 1 (needs "
+                         f"beta eta^2 >= 1 + eta + beta)")
     return math.sqrt((beta * eta ** 2 - (1.0 + eta + beta)) / (beta * (1.0 + eta) * (1.0 + eta + beta)))
 
 

@@ -45,7 +45,8 @@ def write(folder, commit, command, protocol=None, date=None, note=None, machine_
         raise ValueError("commit and command: non-empty strings (what made the files)")
     manifest = {"commit": commit, "command": command, "protocol": protocol, "date": date,
                 "machine": machine_text or machine(), "note": note,
-                "files": {f: {"bytes": os.path.getsize(os.path.join(folder, f)), "sha256": digest(os.path.join(folder, f))}
+                "files": {f: {"bytes": os.path.getsize(os.path.join(folder, f)),
+                              "sha256": digest(os.path.join(folder, f))}
                           for f in files_of(folder)}}
     with open(os.path.join(folder, NAME), "w") as f:
         json.dump(manifest, f, indent=1)

@@ -5,12 +5,13 @@
 #   yade -n -x studies/scripts/agglomerate.py all --quick          # the pipeline on small agglomerates
 #   yade -n -x studies/scripts/agglomerate.py all --out results/agglomerate
 #   yade -n -x studies/scripts/agglomerate.py JOB --help
-#   yade-batch -j 2 --executable build/yade-meso --log 'results/agglomerate-@.log' studies/batch/agglomerate-more.table studies/scripts/agglomerate.py
+#   yade-batch -j 2 --executable build/yade-meso --log 'results/agglomerate-@.log' \
+#       studies/batch/agglomerate-more.table studies/scripts/agglomerate.py
 import sys
 
 from mesocontact import batch
 from mesostudies.agglomerate import study
 
-if not [a for a in sys.argv[1:] if not a.startswith("-")] and not batch.under_batch():
-    batch.help_requested(sys.argv[1:], sys.argv[0])
+if not [a for a in sys.argv[1:] if not a.startswith("-")] and not batch.under_batch():  # --help: this header, the jobs
+    batch.help_requested(sys.argv[1:], sys.argv[0], more="Jobs:\n" + study.JOBS.describe())
 study.main(batch.argv(sys.argv[1:], positional="job", **study.batch_columns()))

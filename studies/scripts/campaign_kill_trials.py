@@ -58,7 +58,8 @@ def main():
     rng = random.Random(a.seed)
     base = tempfile.mkdtemp(prefix="kill-trials-")
     template = os.path.join(base, "prepared")  # the cached stages, made once (not killed)
-    subprocess.run([a.yade, "-j1", "-n", "-x", os.path.join(HERE, "tablet.py"), "prepare", "--quick", "--out", template],
+    subprocess.run([a.yade, "-j1", "-n", "-x", os.path.join(HERE, "tablet.py"), "prepare", "--quick", "--out",
+                    template],
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
     trials = []
     for k in range(a.trials):
@@ -89,9 +90,11 @@ def main():
         outputs.sweep(out)
         after = outputs.problems(out, ignore_running=False) + stage_problems(out)
         bundles = sum(1 for parent, _, files in os.walk(out) if outputs.MANIFEST in files)
-        trials.append({"trial": k, "from": "empty" if empty else "stages", "killed": " ".join(victim[:1]), "signal": signal.Signals(sig).name, "at_s": round(delay, 1),
+        trials.append({"trial": k, "from": "empty" if empty else "stages", "killed": " ".join(victim[:1]),
+                       "signal": signal.Signals(sig).name, "at_s": round(delay, 1),
                        "killed_before_end": killed, "other": " ".join(other[:1]), "other_rc": rc2, "bundles": bundles,
-                       "problems_before_sweep": before, "problems_after_sweep": after, "wall_s": round(time.time() - t0, 1)})
+                       "problems_before_sweep": before, "problems_after_sweep": after,
+                       "wall_s": round(time.time() - t0, 1)})
         print(json.dumps(trials[-1]), flush=True)
     summary = {"command": "python3 studies/scripts/campaign_kill_trials.py " + " ".join(sys.argv[1:]), "trials": trials,
                "killed": sum(t["killed_before_end"] for t in trials),
@@ -102,7 +105,8 @@ def main():
     print(json.dumps({k: v for k, v in summary.items() if k != "trials"}, indent=1))
     if a.out:
         outputs.write_atomic(a.out, json.dumps(summary, indent=1))
-    ok = summary["problems_after_sweep"] == 0 and summary["incomplete_results_before_sweep"] == 0 and summary["other_job_failed"] == 0
+    ok = (summary["problems_after_sweep"] == 0 and summary["incomplete_results_before_sweep"] == 0
+          and summary["other_job_failed"] == 0)
     sys.exit(0 if ok else 1)
 
 

@@ -47,7 +47,8 @@ def measure():
         walls = {b.id for b in O.bodies if b and isinstance(b.shape, w.Box)}
         info.update(
             particles=len(own - walls), contacts=len(real),
-            boundary_contacts=sum(1 for i in real if not (i.id1 in own or i.id1 in walls) or not (i.id2 in own or i.id2 in walls)),
+            boundary_contacts=sum(1 for i in real if not (i.id1 in own or i.id1 in walls)
+                                  or not (i.id2 in own or i.id2 in walls)),
             wall_contacts=sum(1 for i in real if i.id1 in walls or i.id2 in walls),
             states_sent={str(k): len(O.subD.intersections[k]) for k in range(1, mpy.numThreads)
                          if k != me and O.subD.intersections[k]},

@@ -7,7 +7,7 @@ import os
 import sys
 
 from mesocontact import outputs
-from mesostudies.tablet import campaign
+from mesostudies.tablet import campaign, cli
 
 p = argparse.ArgumentParser(prog="tablet_plan.py")
 p.add_argument("table", nargs="?", default="studies/batch/tablet-campaign.table")
@@ -16,5 +16,5 @@ p.add_argument("--lanes", type=int, default=2)
 a = p.parse_args(sys.argv[1:])
 if a.lanes < 1:
     p.error(f"--lanes {a.lanes} is invalid: at least 1")
-plan = campaign.plan(a.table, a.out, a.lanes)
+plan = campaign.plan(a.table, a.out, cli.JOBS, a.lanes)
 outputs.write_atomic(os.path.join(a.out, "campaign-plan.json"), json.dumps(plan, indent=1))

@@ -54,15 +54,17 @@ def one(verlet_factor, timed):
         loop = next(e for e in O.engines if isinstance(e, w.InteractionLoop))
         out["interaction_loop_ns_per_interaction"] = loop.execTime / a.steps / total
         out["bodies"] = len(O.bodies)
-        out["newton_ns_per_body"] = next(e for e in O.engines if isinstance(e, w.NewtonIntegrator)).execTime / a.steps / len(O.bodies)
+        out["newton_ns_per_body"] = (next(e for e in O.engines if isinstance(e, w.NewtonIntegrator)).execTime
+                                     / a.steps / len(O.bodies))
     O.timingEnabled = False
     return out
 
 
-res = {"threads": O.numThreads, "steps": a.steps, "dt_factor": campaign.DT_FACTORS["tension"], "profile": one(1.0, True)}
+res = {"threads": O.numThreads, "steps": a.steps, "dt_factor": campaign.DT_FACTORS["tension"],
+       "profile": one(1.0, True)}
 prof = res["profile"]
-print(f"tablet step, -j{O.numThreads}: {prof['ms_per_step']:.3f} ms ({prof['bodies']} bodies, {prof['touching']} touching "
-      f"and {prof['potential']} potential interactions)")
+print(f"tablet step, -j{O.numThreads}: {prof['ms_per_step']:.3f} ms ({prof['bodies']} bodies, {prof['touching']} "
+      f"touching and {prof['potential']} potential interactions)")
 for name, v in sorted(prof["engines"].items(), key=lambda kv: -kv[1]["us_per_step"]):
     print(f"  {name:24s} {v['us_per_step']:9.1f} us/step  {100 * v['share']:5.1f} %")
 print(f"  InteractionLoop: {prof['interaction_loop_ns_per_interaction']:.0f} ns per interaction and step; "

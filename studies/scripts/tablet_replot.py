@@ -1,6 +1,7 @@
 # Redraws a campaign folder's figures from its committed data (nothing is run): Figs. 16 and 18
 # (and a test variant's, <prefix>fig16.json) from their JSON and the runs' CSVs beside them, Fig. 17
-# from fig17.json and fig17.csv, a strain profile from profile.json and profile-slabs.csv. For a change of the plots only; the folder's manifest is then refreshed with
+# from fig17.json and fig17.csv, a strain profile from profile.json and profile-slabs.csv. For a change of the plots
+# only; the folder's manifest is then refreshed with
 #   python3 -m mesostudies.manifest FOLDER --refresh "figures redrawn by studies/scripts/tablet_replot.py at COMMIT"
 #   yade -n -x studies/scripts/tablet_replot.py FOLDER [FOLDER ...]
 import json

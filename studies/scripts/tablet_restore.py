@@ -13,7 +13,8 @@ try:
 except (ValueError, OSError) as e:  # a missing DOCS, DOCS = OUT, an unwritable OUT: the reason, not a traceback
     sys.exit(f"tablet_restore.py: {e}")
 if not names:
-    print(f"restored no runs: {sys.argv[1]} holds no run JSON with its CSV, or every run is already in {sys.argv[2]}/runs",
+    print(f"restored no runs: {sys.argv[1]} holds no run JSON with its CSV, or every run is already "
+          f"in {sys.argv[2]}/runs",
           flush=True)
 else:
     print(f"restored {len(names)} runs into {sys.argv[2]}/runs: {', '.join(names)}", flush=True)

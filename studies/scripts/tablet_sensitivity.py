@@ -3,7 +3,8 @@
 # (far below any integration error): the spread of each cycle's peak among these runs is what a
 # perturbation alone does; the committed 480 and 1920 t_w runs give the change with the rate.
 #   yade -j1 -n -x studies/scripts/tablet_sensitivity.py --out results/tablet --amplitude 0.1 --factor 1.000001
-#   python3 studies/scripts/tablet_sensitivity.py --gather results/tablet --docs campaigns/tablet/chosen   # sensitivity.json there
+#   python3 studies/scripts/tablet_sensitivity.py --gather results/tablet --docs campaigns/tablet/chosen
+#       (writes sensitivity.json there)
 import argparse
 import glob
 import json
@@ -50,12 +51,14 @@ def main(argv):
     p.add_argument("--amplitude", type=float, default=0.1)
     p.add_argument("--factor", type=float, default=1.000001, help="multiplies the campaign's tension time step")
     p.add_argument("--gather", metavar="OUT", help="only gather the perturbed runs of OUT (plain python3)")
-    p.add_argument("--docs", default="campaigns/tablet/chosen", help="with --gather: the committed runs; sensitivity.json goes there")
+    p.add_argument("--docs", default="campaigns/tablet/chosen",
+                   help="with --gather: the committed runs; sensitivity.json goes there")
     a = p.parse_args(argv)
     if a.gather:
         res = gather(a.gather, a.docs)
         for amp, r in res["amplitudes"].items():
-            print(f"Dx = {amp}: perturbations change the peaks by " + ", ".join(f"{100 * c:.2f}" for c in r["perturbation_change"])
+            print(f"Dx = {amp}: perturbations change the peaks by "
+                  + ", ".join(f"{100 * c:.2f}" for c in r["perturbation_change"])
                   + " %; 1920 against 480 t_w by " + ", ".join(f"{100 * c:.2f}" for c in r["rate_change"]) + " %")
         with open(os.path.join(a.docs, "sensitivity.json"), "w") as f:
             json.dump(res, f, indent=1)

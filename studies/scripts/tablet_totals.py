@@ -22,5 +22,6 @@ except (OSError, ValueError) as e:
     p.error(str(e))
 if a.wall_seconds is not None:
     t["command_wall_hours"] = a.wall_seconds / 3600
-    print(f"the whole command (preparation and plan included): {t['command_wall_hours']:.2f} h of wall time", flush=True)
+    print(f"the whole command (preparation and plan included): {t['command_wall_hours']:.2f} h of wall time",
+          flush=True)
 outputs.write_atomic(os.path.join(a.out, "campaign-time.json"), json.dumps(t, indent=1))

@@ -1,4 +1,6 @@
-"""The benchmark script still runs end to end (tiny scene; times mean nothing here).
+"""the on-demand benchmark script (`scripts/benchmark_laws.py`) runs end to end on 300 spheres: every
+report section, the serial and parallel forces equal to summation order, pooling with `--merge`; its
+times are not checked.
 
 usage: smoke.py YADE_LAUNCHER
 Runs scripts/benchmark_laws.py on 300 spheres, one -j1 and one -j2 run, then pools that run's

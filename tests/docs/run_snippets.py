@@ -1,5 +1,8 @@
-"""Runs every ```python block of README.md and docs/**/*.md in YADE (the build-tree launcher, -j1,
-each block alone in a fresh directory) and checks what it prints.
+"""every fenced `python` block of `README.md` and `docs/**/*.md` runs alone in YADE (the build-tree
+launcher, -j1, a fresh directory); where the docs show the output (a `text` block after it), the
+printed lines must be those, numbers to 1e-9. `<!-- snippet: skip REASON -->` before a block leaves
+it out with the reason printed (one today: the yade.mpy template of `docs/mpi.md`, whose runnable
+form is `tests/mpi/split.py`); `<!-- snippet: copy SRC DEST -->` gives it a data file.
 
 A block is followed by a ```text block (after a paragraph starting with "prints", if any) when
 the docs show its output: the printed lines must be
@@ -100,7 +103,8 @@ def run(yade, path, line, code, expected, directives):
 
 def main():
     yade = os.path.abspath(sys.argv[1])
-    files = sys.argv[2:] or [os.path.join(ROOT, "README.md")] + sorted(glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True))
+    files = sys.argv[2:] or [os.path.join(ROOT, "README.md")] + sorted(
+        glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True))
     counts = {"ok": 0, "skip": 0, "fail": 0}
     for path in files:
         for line, code, expected, directives in blocks(path):

@@ -1,5 +1,14 @@
 #!/usr/bin/env bash
-# ctest mpi.split and mpi.tablet: a check script of this directory (split.py, tablet.py) serially,
+# ctest mpi.split, mpi.realloc, mpi.tablet, mpi.tablet_realloc: the law under `yade.mpy`
+# (`docs/mpi.md`), a master and two workers under `mpiexec`, oversubscribed: a bed saved serially
+# (`split.py`) and the quick tablet (`tablet.py`) give every contact bitwise equal to serial right
+# after the split, and the run after it (and the contacts merged back on the master) equal to serial
+# up to summation order (bounds and measurements in the scripts' headers). The `_realloc` variants
+# let mpy move bodies between the workers (its own filter on an uneven bed; a swinging cut in the
+# tablet, 612 moves). Each check runs again with `--lose`, without what it tests (`keep_contacts`;
+# for the `_realloc` variants the contacts sent with moved bodies), and must fail.
+#
+# A check script of this directory (split.py, tablet.py) serially,
 # then on a master and two workers. The run with mesocontact.mpi.keep_contacts must pass (it
 # equals the serial run: bitwise at the split, to summation order after it); the same run with
 # --lose (without what is under test: keep_contacts, what mpy alone does) must fail, so the check

@@ -3,7 +3,8 @@ serial reference, for the yade.mpy checks in this directory."""
 from yade import O
 
 PHYS = ("deltaMax", "delta0", "k2", "touched", "hystereticForce", "adhesiveForce", "viscousForce", "normalForce",
-        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring", "torsionForce",
+        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring",
+        "torsionForce",
         "torsionTorque")
 
 

@@ -100,10 +100,13 @@ elif mode == "mpi":
             with open(os.path.join(out, "serial.json")) as f:
                 ref = json.load(f)
             result = {"start": compare(start[1:], ref["start"]), "end": compare(end[1:], ref["end"]),
-                      "merged": compare([contacts()], ref["end"]), "kept": restored, "moved_to_another_worker": moved[1:]}
+                      "merged": compare([contacts()], ref["end"]), "kept": restored,
+                      "moved_to_another_worker": moved[1:]}
             fmax = max(abs(x) for v in ref["walls"].values() for x in v)
-            result["walls_worst"] = max(abs(x - y) for k in ref["walls"] for x, y in zip(walls[k], ref["walls"][k])) / fmax
-            with open(os.path.join(out, "mpi" + ("-realloc" if realloc else "") + ("-lose" if lose else "") + ".json"), "w") as f:
+            result["walls_worst"] = max(abs(x - y) for k in ref["walls"]
+                                        for x, y in zip(walls[k], ref["walls"][k])) / fmax
+            with open(os.path.join(out, "mpi" + ("-realloc" if realloc else "") + ("-lose" if lose else "") + ".json"),
+                      "w") as f:
                 json.dump(result, f, indent=1)
             for stage in ("start", "end", "merged"):
                 r = result[stage]
@@ -116,11 +119,13 @@ elif mode == "mpi":
             print(f"wall forces: largest difference {result['walls_worst']:.1e} of the largest; contacts given back "
                   f"per worker {[k['restored'] for k in restored[1:]] if kept else 'none (--lose)'}", flush=True)
             if realloc and lose:
-                print(f"reallocation: bodies now on another worker {moved[1:]}, their contacts not sent (--lose)", flush=True)
+                print(f"reallocation: bodies now on another worker {moved[1:]}, their contacts not sent (--lose)",
+                      flush=True)
             elif realloc:
                 print(f"reallocation: {restored[1]['reallocations']} times; bodies now on another worker {moved[1:]}; "
-                      f"moved away per worker {[k['moved'] for k in restored[1:]]} with {[k['sent'] for k in restored[1:]]} "
-                      f"bytes of contacts; contacts received {[k['received'] for k in restored[1:]]}", flush=True)
+                      f"moved away per worker {[k['moved'] for k in restored[1:]]} with "
+                      f"{[k['sent'] for k in restored[1:]]} bytes of contacts; contacts received "
+                      f"{[k['received'] for k in restored[1:]]}", flush=True)
             ok = ok and result["walls_worst"] <= TOLERANCE
             print("mpi split: " + ("ok" if ok else "FAILED: history lost or changed at the split"), flush=True)
         return ok

@@ -74,7 +74,8 @@ if mode == "serial":
     t0 = time.time()
     rows = test.cycles("tension", 0.2, n_cycles=1, period=period)
     with open(os.path.join(out, f"mpi-serial{suffix}.json"), "w") as f:
-        json.dump({"rows": rows, "before": before, "wall_clock_s": time.time() - t0, "steps": rows[-1][0] - rows[0][0]}, f)
+        json.dump({"rows": rows, "before": before, "wall_clock_s": time.time() - t0, "steps": rows[-1][0] - rows[0][0]},
+                  f)
 elif mode == "mpi":
     from yade import mpy
 
@@ -127,7 +128,8 @@ elif mode == "mpi":
             elif realloc:
                 k = [r["kept"] for r in info[1:]]
                 print(f"reallocation: {k[0]['reallocations']} times; moved away per worker {[x['moved'] for x in k]} "
-                      f"with {[x['sent'] for x in k]} bytes of contacts; contacts received {[x['received'] for x in k]}",
+                      f"with {[x['sent'] for x in k]} bytes of contacts; contacts received "
+                      f"{[x['received'] for x in k]}",
                       flush=True)
             print("mpi tablet: " + ("ok" if ok else "FAILED"), flush=True)
         return ok

@@ -1,4 +1,13 @@
-# ctest (plain Python): the meso law under YADE's OpenMP gives what it gives serially. Runs
+# ctest (plain Python): a packing on an adhesive box with every mechanism on (most contacts sliding
+# at the dynamic limit), run with `-j1` and `-j2`: every contact's history, springs and forces
+# bitwise identical, forces and torques on the bodies and every energy term equal to summation order
+# (it found that YADE's `EnergyTracker` loses shares when threads meet a new energy name at once:
+# the law now registers its names under a lock before adding to them); and the same without
+# `ScGeom6D`'s relative rotations (`updateRotations=False`): identical; and the contact-relative
+# drag on free spheres, its reference gathered by the law on both threads: forces and torques equal
+# to summation order.
+#
+# The meso law under YADE's OpenMP gives what it gives serially. Runs
 # tests/openmp/scene.py with -j1 and -j2 (argv[1]: the YADE launcher) and checks that every
 # contact's history, springs and forces are bitwise identical (a contact's update does not depend
 # on the order of contacts), and that the forces and torques summed on the bodies and the energy
@@ -17,7 +26,8 @@ with tempfile.TemporaryDirectory() as tmp:
     for run, (threads, extra) in {1: (1, []), 2: (2, []), "norot": (1, ["norot"]), "drag1": (1, ["drag"]),
                                   "drag2": (2, ["drag"])}.items():
         out = os.path.join(tmp, f"{run}.json")
-        subprocess.run([launcher, f"-j{threads}", "-n", "-x", scene, out] + extra, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([launcher, f"-j{threads}", "-n", "-x", scene, out] + extra, check=True,
+                       stdout=subprocess.DEVNULL)
         with open(out) as f:
             reports[run] = json.load(f)
 r1, r2 = reports[1], reports[2]
@@ -33,8 +43,8 @@ if r2["threads"] != 2:
 # the law on both threads, summed per thread, gives the -j1 forces to rounding.
 d1, d2 = reports["drag1"], reports["drag2"]
 drag_energy = d1["energy"].get("mesoBackground", 0)
-print(f"drag on free spheres: the law's sums used in {d1['law_sum_steps']} (-j1) and {d2['law_sum_steps']} (-j2) of 3 steps; "
-      f"mesoBackground {drag_energy:.3e}", flush=True)
+print(f"drag on free spheres: the law's sums used in {d1['law_sum_steps']} (-j1) and {d2['law_sum_steps']} (-j2) of 3 "
+      f"steps; mesoBackground {drag_energy:.3e}", flush=True)
 if not (d1["law_sum_steps"] == d2["law_sum_steps"] == 2 and drag_energy > 0 and d2["threads"] == 2):
     failures.append("the drag did not act, or not from the law's sums, in the free run")
 

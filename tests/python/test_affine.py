@@ -1,5 +1,6 @@
-"""mesostudies.tablet.affine (plain Python): the affine tension of a set of contacts against values
-worked by hand from the unloading law f = max(k2 (delta - delta0), -kc delta) (docs/model.md §3)."""
+"""the affine tension of a set of contacts (`mesostudies.tablet.affine`, the job `tablet.py affine`;
+plain Python) against values worked by hand from the unloading law f = max(k2 (delta - delta0), -kc
+delta) (`docs/model.md` §3)."""
 import unittest
 
 import numpy as np
@@ -12,7 +13,8 @@ class Affine(unittest.TestCase):
         # delta 2, delta0 1.5, k2 10, kc 2, l 100, along x; L0 1000, d0 1: eps = Dx / 1000, the overlap
         # falls by Dx / 10. The k2 line meets -kc delta at delta* = k2 delta0 / (k2 + kc) = 1.25, i.e. Dx = 7.5,
         # force -2.5, wall force -2.5 * 100 / 1000 = -0.25; detachment at delta = 0, Dx = 20.
-        args = (np.array([2.0]), np.array([1.5]), np.array([10.0]), np.array([2.0]), np.array([100.0]), np.array([1.0]), 1000.0, 1.0)
+        args = (np.array([2.0]), np.array([1.5]), np.array([10.0]), np.array([2.0]), np.array([100.0]), np.array([1.0]),
+                1000.0, 1.0)
         f = affine.curve(*args, [0.0, 5.0, 7.5, 10.0, 20.0, 25.0])
         # Dx 0: 10 * 0.5 * 100 / 1000; 5: on delta0; 7.5: the tensile limit; 10: -kc * 1; 20: apart
         np.testing.assert_allclose(f, [0.5, 0.0, -0.25, -0.2, 0.0, 0.0], atol=1e-12)

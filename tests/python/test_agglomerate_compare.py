@@ -1,6 +1,7 @@
-"""The agglomerate study's comparisons that need no YADE: what the pair's fit predicts for the wall
-cycles (where its contact starts, its stiffness for a wall of its own material and a rigid one),
-and the cycles' tension taken as the law's non-contact force."""
+"""the agglomerate study's comparisons that need no YADE: the wall prediction written out by hand on a
+first loading (where it starts, k1 and the rigid wall's 2 k1), the misfit, and the
+tension-as-adhesion estimate (fa, the tail, kca, the closed form's e and the sticking speed); four
+mutations each fail it."""
 import unittest
 
 from mesocontact import theory
@@ -49,7 +50,8 @@ class TensionAsAdhesion(unittest.TestCase):
         a12, m_r = compare.geometry(INFO)[:2]
 
         def e(v):
-            return theory.pair_collision(v, LAW["k1"], LAW["kp"], LAW["kc"], LAW["phiF"], a12, m_r, fa=fa, kca=fa / tail,
+            return theory.pair_collision(v, LAW["k1"], LAW["kp"], LAW["kc"], LAW["phiF"], a12, m_r, fa=fa,
+                                         kca=fa / tail,
                                          adhesion="jumpIn").e
         self.assertEqual(a["e_theory"], [e(1e-5 * compare.SPEED), e(1e-2 * compare.SPEED)])  # mm/us in m/s
         v = a["sticks_below_m_s"]

@@ -18,7 +18,8 @@ class AgglomerateDocs(unittest.TestCase):
         with open(os.path.join(RESULTS, "agglomerate-vs-meso.json")) as f:
             s = json.load(f)
         with open(os.path.join(RESULTS, "summary.md")) as f:
-            self.assertEqual(report.markdown(s), f.read(), "summary.md differs from what mesostudies.agglomerate.report writes")
+            self.assertEqual(report.markdown(s), f.read(),
+                             "summary.md differs from what mesostudies.agglomerate.report writes")
 
     def test_results_quote_the_summary(self):
         with open(os.path.join(ROOT, "docs", "agglomerate.md")) as f:

@@ -1,6 +1,8 @@
-"""yade-batch with the project's launcher runs scripts/pair_batch.py once per table line: each job
-writes its JSON, YADE agrees with the closed form (1e-3, the pair tests' tolerance); a table with
-a column the script does not know fails that job, naming the column.
+"""`yade-batch` with the build-tree launcher runs `scripts/pair_batch.py` once per table line: each job
+writes its JSON and YADE agrees with the closed form (1e-3, the pair tests' tolerance); a table with
+a column the script does not know fails that job, naming the column;
+`examples/impact-velocity.table` runs as the README runs it (both sticking regimes and the rebound).
+
     python3 tests/python/test_batch.py build/yade-meso"""
 import json
 import os
@@ -18,8 +20,10 @@ def batch(table_text, d):
     table = os.path.join(d, "jobs.table")
     with open(table, "w") as f:
         f.write(table_text)
-    return subprocess.run(["yade-batch", "--executable", YADE, "-j", "2", "--nice", "0", "--log", os.path.join(d, "job-@.log"),
-                           table, os.path.join(ROOT, "scripts", "pair_batch.py")], cwd=d, capture_output=True, text=True,
+    return subprocess.run(["yade-batch", "--executable", YADE, "-j", "2", "--nice", "0", "--log",
+                           os.path.join(d, "job-@.log"),
+                           table, os.path.join(ROOT, "scripts", "pair_batch.py")], cwd=d, capture_output=True,
+                          text=True,
                           timeout=600)
 
 

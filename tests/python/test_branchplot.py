@@ -50,11 +50,13 @@ class BranchPlot(unittest.TestCase):
 
     def test_script(self):
         path, png = write(made_up()), tempfile.mktemp(suffix=".png")
-        r = subprocess.run([sys.executable, os.path.join(ROOT, "studies", "scripts", "tablet_branches.py"), path, png, "--period", "10"],
+        r = subprocess.run([sys.executable, os.path.join(ROOT, "studies", "scripts", "tablet_branches.py"), path, png,
+                            "--period", "10"],
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("loading 0.512", r.stdout)
-        r = subprocess.run([sys.executable, os.path.join(ROOT, "studies", "scripts", "tablet_branches.py"), path, png, "--cycles", "1"],
+        r = subprocess.run([sys.executable, os.path.join(ROOT, "studies", "scripts", "tablet_branches.py"), path, png,
+                            "--cycles", "1"],
                            capture_output=True, text=True)
         self.assertNotEqual(r.returncode, 0)
         self.assertIn("--cycles needs --period", r.stderr)

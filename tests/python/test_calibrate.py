@@ -1,6 +1,7 @@
-"""mesocontact.calibrate: fits of synthetic data (noise-free: the truth back to the solver's
-precision; noisy: inside the intervals), what the data cannot determine, the errors for bad data,
-and the helpers against an independent integration of the force law."""
+"""`mesocontact.calibrate`: the fit returns the truth from exact data to 1e-5 and holds it in its
+intervals from noisy data; the undetermined parameters are named for data that lack a regime; bad
+data and arguments are refused naming the problem; the contact duration and the other helpers
+against an independent integration of the force law."""
 import math
 import os
 import tempfile
@@ -25,7 +26,9 @@ def speeds(truth, lo, hi, n, adhesion="none"):
 def data(truth, v, noise=0.0, seed=0, adhesion="none", kca=math.inf):
     e0 = cal.Setup(M_R, A12, adhesion, kca).curve(v, truth)
     sigma = np.maximum(noise * np.maximum(e0, 0.1), 1e-3)
-    e = np.where(e0 > 0, np.clip(e0 + noise * np.maximum(e0, 0.1) * np.random.default_rng(seed).standard_normal(len(v)), 0, 1), 0)
+    e = np.where(e0 > 0,
+                 np.clip(e0 + noise * np.maximum(e0, 0.1) * np.random.default_rng(seed).standard_normal(len(v)), 0, 1),
+                 0)
     return cal.check_data(v, e, sigma)
 
 
@@ -74,7 +77,8 @@ class Identifiability(unittest.TestCase):
 
     def test_points_only_below_the_window(self):
         # Eq. 32 sees kp and phiF only through eta chi: one of them is free along the ridge
-        f = cal.fit(data(TRUTH, speeds(TRUTH, 0.02, 0.45, 12), 0.01), R, RHO, values=dict(k1=100.0), starts=10, bootstrap=0)
+        f = cal.fit(data(TRUTH, speeds(TRUTH, 0.02, 0.45, 12), 0.01), R, RHO, values=dict(k1=100.0), starts=10,
+                    bootstrap=0)
         self.assertTrue({"kp", "phiF"} & set(f.undetermined), f.undetermined)
 
     def test_no_low_speed_points_leave_fa_undetermined(self):
@@ -103,7 +107,7 @@ class Identifiability(unittest.TestCase):
             self.assertTrue(lo <= truth[n] <= hi, f"{n}: {truth[n]} outside {lo, hi}")
 
     def test_profile_intervals_hold_every_point_under_the_threshold(self):
-        # Issue #32 item 11, two draws of scripts/calibrate_profile_study.py (its noise model) where
+        # Issue #32 item 11, two draws of studies/scripts/calibrate_profile_study.py (its noise model) where
         # the previous search still missed the truth: draw 7, truth at delta chi2 = 0.48, phiF
         # [0.065, 0.082]; draw 6, truth at 3.05, kp [229, 379] and phiF [0.063, 0.072]. In draw 7 the
         # solver had already evaluated points under the threshold with phiF up to 0.12 (a point under
@@ -118,7 +122,8 @@ class Identifiability(unittest.TestCase):
         for seed in (7, 6):
             e = np.where(e0 > 0, np.clip(e0 + noise * np.random.default_rng(seed).standard_normal(len(v)), 0, 1), 0)
             sigma = np.maximum(noise, 1e-3)
-            f = cal.fit((v, e, sigma), R, RHO, adhesion="jumpIn", kca=200.0, values=dict(k1=100.0), starts=10, bootstrap=0)
+            f = cal.fit((v, e, sigma), R, RHO, adhesion="jumpIn", kca=200.0, values=dict(k1=100.0), starts=10,
+                        bootstrap=0)
             chi2 = lambda p: float(np.sum(((setup.curve(v, p) - e) / sigma) ** 2))  # noqa: E731
             self.assertLess(chi2(truth) - chi2(f.params), cal.PROFILE_CHI2)  # the premise, computed here
             for n in f.free:

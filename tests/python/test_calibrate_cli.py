@@ -1,5 +1,6 @@
-"""scripts/calibrate.py end to end (ctest gives the YADE launcher): a fit of exact synthetic data
-with its YADE check, the files it writes, and the errors for bad input.
+"""`scripts/calibrate.py` end to end (ctest gives the YADE launcher): a fit of exact synthetic data
+with its YADE check (|Δe| ≤ 1e-3), the files it writes, and the errors for bad input.
+
     python3 tests/python/test_calibrate_cli.py build/yade-meso"""
 import json
 import os
@@ -48,7 +49,8 @@ class Cli(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         with open(os.path.join(out, "calibration.json")) as f:
             j = json.load(f)
-        for key in ("k1", "kp", "kc", "phiF", "fa", "kca", "adhesion", "ci95", "undetermined", "rms_residual", "yade_check"):
+        for key in ("k1", "kp", "kc", "phiF", "fa", "kca", "adhesion", "ci95", "undetermined", "rms_residual",
+                    "yade_check"):
             self.assertIn(key, j)
         for n in ("kp", "kc", "phiF"):
             self.assertAlmostEqual(j[n] / TRUTH[n], 1.0, delta=1e-5, msg=n)

@@ -1,7 +1,8 @@
-"""mesocontact.calibrate.fit_cycles: synthetic force-displacement cycles made with
-theory.normal_force_path from known parameters (noise-free: the truth back to the solver's
-precision; 1 % noise: inside the intervals), what cycles without tension or far below deltaMax^p
-cannot determine, the overlap's offset, and the errors for bad input."""
+"""`calibrate.fit_cycles` on synthetic force–displacement cycles made with `theory.normal_force_path`
+from known parameters: exact cycles give the truth to 1e-6, noisy ones hold it in the intervals,
+whose ends are where the refitted sum of squares grows by 3.84 noise²; kc undetermined without
+tension, kp and φf one combination below δmax^p; the offset of the overlap recovered; bad input
+refused by name."""
 import json
 import time
 import unittest
@@ -36,7 +37,8 @@ class FitCycles(unittest.TestCase):
     def assertInside(self, f, truth):
         for n, v in truth.items():
             lo, hi = f.ci95[n]
-            self.assertTrue(lo <= v <= hi, f"{n} = {v} outside its interval [{lo}, {hi}] (fit {f.params[n]})\n{f.report()}")
+            self.assertTrue(lo <= v <= hi,
+                            f"{n} = {v} outside its interval [{lo}, {hi}] (fit {f.params[n]})\n{f.report()}")
 
     def test_noise_free_cycles_give_the_truth(self):
         for interpolation in ("linear", "sqrt"):
@@ -98,7 +100,8 @@ class FitCycles(unittest.TestCase):
 
     def test_without_tension_kc_is_undetermined(self):
         d, F = cycles(NO_TENSION, noise=NOISE, seed=4)
-        self.assertGreaterEqual(np.min(F - NOISE * np.max(np.abs(F)) * np.random.default_rng(4).standard_normal(len(F))), -1e-15)
+        self.assertGreaterEqual(
+            np.min(F - NOISE * np.max(np.abs(F)) * np.random.default_rng(4).standard_normal(len(F))), -1e-15)
         f = cal.fit_cycles(d, F, A12)
         self.assertEqual(f.undetermined, ["kc"], f.report())
         self.assertEqual(f.ci95["kc"], [0.0, float("inf")])
@@ -110,7 +113,8 @@ class FitCycles(unittest.TestCase):
         d, F = cycles(SHALLOW, noise=NOISE, seed=5)
         f = cal.fit_cycles(d, F, A12)
         self.assertEqual(sorted(f.undetermined), ["kp", "phiF"], f.report())
-        self.assertTrue(any(s.startswith("kp, phiF: the data fix only a combination") for s in f.statements), f.statements)
+        self.assertTrue(any(s.startswith("kp, phiF: the data fix only a combination") for s in f.statements),
+                        f.statements)
         self.assertTrue(any("below deltaMax^p" in s for s in f.statements), f.statements)
         self.assertInside(f, {n: TRUTH[n] for n in ("k1", "kc")})
         comb = lambda p: (p["kp"] - p["k1"]) ** 2 / (p["kp"] * p["phiF"])  # noqa: E731  k2's slope in deltaMax

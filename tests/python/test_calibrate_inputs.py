@@ -12,8 +12,10 @@ from mesocontact import params, theory
 
 A12 = 1e-3
 DMP = theory.delta_max_p(100.0, 500.0, 0.1, A12)
-D = np.concatenate([np.linspace(a, b, 20, endpoint=False) for a, b in zip((0, 0.6, 0.1, 1.6), (0.6, 0.1, 1.6, 0.3))]) * DMP
-F = theory.normal_force_path(D, 100.0, 500.0, 100.0, 0.1, A12) * (1 + 0.01 * np.random.default_rng(0).standard_normal(len(D)))
+D = np.concatenate([np.linspace(a, b, 20, endpoint=False)
+                    for a, b in zip((0, 0.6, 0.1, 1.6), (0.6, 0.1, 1.6, 0.3))]) * DMP
+F = (theory.normal_force_path(D, 100.0, 500.0, 100.0, 0.1, A12)
+     * (1 + 0.01 * np.random.default_rng(0).standard_normal(len(D))))
 NOT_NAMED = (OverflowError, ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError)
 
 
@@ -41,11 +43,14 @@ class FitCycles(Named):
         def fit(**kw):
             cal.fit_cycles(**dict(dict(delta=D, force=F, a12=A12), **kw))
         self.refused(fit, (
-            (dict(delta=[], force=[]), "delta and force are empty"),                                 # was numpy's "zero-size array"
-            (dict(delta=np.full(n, 1e-4)), r"delta: 1 distinct overlap\(s\) \(0\.0001\) cannot determine 4"),  # "math domain error"
+            # was numpy's "zero-size array"
+            (dict(delta=[], force=[]), "delta and force are empty"),
+            # "math domain error"
+            (dict(delta=np.full(n, 1e-4)), r"delta: 1 distinct overlap\(s\) \(0\.0001\) cannot determine 4"),
             (dict(delta=np.full(n, 1e-4), force=np.full(n, 1.0)), r"delta: 1 distinct overlap"),
             (dict(delta=np.full(n, 1e-4), force=-np.abs(F), sigma=0.1), r"delta: 1 distinct overlap"),
-            (dict(force=-np.abs(F)), r"force: no value is > 0 \(the largest is -.*pass -force"),       # was a silent fit
+            # was a silent fit
+            (dict(force=-np.abs(F)), r"force: no value is > 0 \(the largest is -.*pass -force"),
             (dict(force=np.full(n, 2.0)), r"force: all 80 values are 2\.0: a constant force"),      # was a silent fit
             (dict(delta=-D), "delta: no overlap is > 0"),
             (dict(delta=[True, False] * (n // 2)), r"delta\[0\] = True is invalid: a bool"),          # was read as 1.0
@@ -57,7 +62,8 @@ class FitCycles(Named):
         ))
         self.refused(fit, ((dict(free="k1"), r"free = 'k1' is invalid: must be a list of names, e\.g\. free=\['k1'\]"),
                            (dict(values=3), "values = 3 is invalid: must be a dict")), TypeError)
-        self.refused(fit, ((dict(sigma="x"), "sigma = 'x' is invalid"),))  # was numpy's "could not convert string to float"
+        # was numpy's "could not convert string to float"
+        self.refused(fit, ((dict(sigma="x"), "sigma = 'x' is invalid"),))
 
     def test_extreme_magnitudes(self):
         def fit(**kw):
@@ -83,7 +89,8 @@ class MaterialFrom(Named):
         def make(**kw):
             params.material_from(**dict(self.BASE, **kw))
         self.refused(make, (
-            (dict(contact_time=1e300), r"contact_time = 1e\+300 is out of range .*1e-605 N/m"),   # was "math domain error"
+            # was "math domain error"
+            (dict(contact_time=1e300), r"contact_time = 1e\+300 is out of range .*1e-605 N/m"),
             (dict(contact_time=1e-300), r"contact_time = 1e-300 is out of range .*1e\+595 N/m"),  # was an OverflowError
             (dict(impact_speed=1e300), r"impact_speed = 1e\+300, contact_time = 0\.0001.*cannot be computed"),
             (dict(radius2=1e300), r"radius2 = 1e\+300: "),                                       # named 'radius'
@@ -99,11 +106,13 @@ class Fit(Named):
 
     def test_values_and_options(self):
         def fit(**kw):
-            cal.fit(**dict(dict(data=self.DATA, radius=1e-3, density=2500.0, values=dict(k1=100.0), starts=1, bootstrap=0), **kw))
+            cal.fit(**dict(dict(data=self.DATA, radius=1e-3, density=2500.0, values=dict(k1=100.0), starts=1,
+                                bootstrap=0), **kw))
         v = dict(k1=100.0)
         self.refused(fit, (
             (dict(values=dict(v, kc=math.nan)), "kc = nan is invalid"),          # was scipy's "x0 is infeasible"
-            (dict(values=dict(v, kc=math.inf)), "kc = inf is invalid"),          # was "array must not contain infs or NaNs"
+            # was "array must not contain infs or NaNs"
+            (dict(values=dict(v, kc=math.inf)), "kc = inf is invalid"),
             (dict(values=dict(v, kc=-1.0)), "kc = -1.0 is invalid"),             # was silently started at 0
             (dict(values=dict(v, kc=True)), "kc = True is invalid"),
             (dict(values=dict(v, kc="x")), "kc = 'x' is invalid"),               # was "'>' not supported"
@@ -112,15 +121,18 @@ class Fit(Named):
             (dict(values=dict(k1="x")), "k1 = 'x' is invalid"),                  # was "can't multiply sequence"
             (dict(values=dict(k1=1e-300)), r"v = .* at point 1: the collision with the starting values \(k1 = 1e-300"),
             (dict(starts=True), "starts = True is invalid: must be an integer >= 1"),  # was a fit with 1 start
-            (dict(starts=2.0), "starts = 2.0 is invalid"),                       # was "'float' object cannot be interpreted"
+            # was "'float' object cannot be interpreted"
+            (dict(starts=2.0), "starts = 2.0 is invalid"),
             (dict(bootstrap=-1), "bootstrap = -1 is invalid: must be an integer >= 0"),
             (dict(bootstrap=None), "bootstrap = None is invalid"),
-            (dict(seed=None), "seed = None is invalid"),                         # was "object of type 'NoneType' has no len()"
+            # was "object of type 'NoneType' has no len()"
+            (dict(seed=None), "seed = None is invalid"),
             (dict(seed=0.5), "seed = 0.5 is invalid"),
             (dict(kca=math.nan), "kca = nan is invalid"),
             (dict(interpolation="cubic"), "interpolation = 'cubic' is invalid"),
             (dict(data=(self.V * 1e300, self.E, np.full(8, 0.01))), r"v = 5\.0*4?e\+297 at point 1: the collision"),
-            (dict(data=(self.V, self.E, np.full(8, 1e-300))), r"sigma = 1e-300 at point 1 is invalid: must be >= 1e-15"),
+            (dict(data=(self.V, self.E, np.full(8, 1e-300))),
+             r"sigma = 1e-300 at point 1 is invalid: must be >= 1e-15"),
         ))
         self.refused(fit, ((dict(free="kp"), r"free = 'kp' is invalid: must be a list of names"),
                            (dict(data=3), "data = 3 is invalid"), (dict(values=3), "values = 3 is invalid")), TypeError)
@@ -147,12 +159,14 @@ class Helpers(Named):
         ))
         base = dict(e=0.7, t_c=2e-4, v=0.05, eta=4.0, beta=1.0, radius=1e-3, density=2500.0)
         self.refused(lambda **kw: cal.from_restitution_and_contact_time(**dict(base, **kw)), (
-            (dict(t_c=1e300), r"t_c = 1e\+300.*k1 = .* 0\.0 N/m is out of floating-point range"),  # was a ZeroDivisionError
+            # was a ZeroDivisionError
+            (dict(t_c=1e300), r"t_c = 1e\+300.*k1 = .* 0\.0 N/m is out of floating-point range"),
             (dict(t_c=1e-300), r"t_c=1e-300.*out of floating-point range"),    # was an OverflowError
         ))
         self.refused(lambda **kw: cal.contact_duration(**dict(dict(chi=0.3, eta=4.0, beta=1.0), **kw)), (
             (dict(chi="x"), "chi = 'x' is invalid"),                           # was "'<' not supported"
-            (dict(beta=1e-300), r"beta = 1e-300: the pair rebounds .* not finite"),  # was inf: a rebounding pair's contact never ending
+            # was inf: a rebounding pair's contact never ending
+            (dict(beta=1e-300), r"beta = 1e-300: the pair rebounds .* not finite"),
         ))
 
     def test_material(self):

@@ -33,7 +33,8 @@ def exact(truth, lo, hi, n=12, speeds=None):
 
 
 def small_spheres(seed=1):
-    """2 % noise on the jump-in set at 12 speeds from 0.5 to 100 m/s (stuck below about 3 m/s, the fastest beyond v_p)."""
+    """2 % noise on the jump-in set at 12 speeds from 0.5 to 100 m/s (stuck below about 3 m/s, the
+    fastest beyond v_p)."""
     m_r, a12 = cal.geometry(SMALL_R, SMALL_RHO, "wall")
     v = np.geomspace(0.5, 100.0, 12)
     e0 = cal.Setup(m_r, a12, "jumpIn", 2000.0).curve(v, SMALL)
@@ -95,7 +96,8 @@ class Undetermined(unittest.TestCase):
         j = json.loads(json.dumps(f.to_json(), allow_nan=False))
         for n in f.undetermined:
             self.assertIsNone(j[n])
-            self.assertTrue(j["undetermined_reason"][n].startswith("undetermined by the data: "), j["undetermined_reason"])
+            self.assertTrue(j["undetermined_reason"][n].startswith("undetermined by the data: "),
+                            j["undetermined_reason"])
             self.assertEqual(j["fit_point"][n], f.params[n])
         self.assertEqual(j["undetermined"], f.undetermined)  # the keys readers had stay
         for n in set(f.free) - set(f.undetermined):
@@ -153,7 +155,8 @@ class UnitsKcaMaterial(unittest.TestCase):
         self.assertGreater(slope, 0.05)  # a stiffer tail, a shorter one: a larger fa makes up for it
         self.assertEqual(f.to_json()["kca_assumed"]["dln_dln_kca"]["fa"], slope)
         # the linearised response against a refit from the fit's point with kca 10 % larger
-        data, setup, free, values = _validated(self.data, SMALL_R, SMALL_RHO, "wall", "jumpIn", 2200.0, "linear", None, dict(f.params))
+        data, setup, free, values = _validated(self.data, SMALL_R, SMALL_RHO, "wall", "jumpIn", 2200.0, "linear", None,
+                                               dict(f.params))
         pb = _Problem(data, setup, free, values, 0)
         q = pb.params(free, pb.best_of(free, pb.fixed, [f.params]).x, pb.fixed)
         self.assertAlmostEqual(math.log(q["fa"] / f.params["fa"]) / math.log(1.1), slope, delta=0.15 * abs(slope))

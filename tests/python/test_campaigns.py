@@ -1,5 +1,6 @@
-"""campaigns/: every folder with a CAMPAIGN.json holds exactly the files it lists, byte for byte,
-and says what made them; the check finds a changed, a missing and an unlisted file."""
+"""every folder of `campaigns/` with a `CAMPAIGN.json` holds exactly the files it lists (size and
+SHA-256) and says which commits and command made them; the check finds a changed, a missing and an
+unlisted file."""
 import json
 import os
 import pathlib

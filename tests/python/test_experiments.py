@@ -1,5 +1,7 @@
-"""mesostudies.tablet.experiments (plain Python) on a made-up campaign tree whose numbers are
-worked by hand: E1's spread and cycle-2 ratio, E2's F(0.2)/F_peak, crack plane and row choice."""
+"""the tension branch's table (`mesostudies.tablet.experiments`, plain Python) on a made-up campaign
+tree whose numbers are worked by hand: E1's spread and cycle-2 ratio, E2's F(0.2)/F_peak, crack
+plane and row choice (`python.tablet_docs` checks the committed
+`campaigns/tablet/branch/experiments.md` against the module)."""
 import json
 import os
 import tempfile
@@ -42,7 +44,8 @@ class Experiments(unittest.TestCase):
         self.assertAlmostEqual(one[0]["second_over_first"], 1 / 3, places=12)
         self.assertAlmostEqual(one[0]["turnaround_over_first"], 0.25, places=12)
         self.assertAlmostEqual(one[0]["later_spread_of_first"], 0.004 / 0.06, places=12)
-        self.assertEqual([(r["sinter"], r["seed"]) for r in two], [(0.02, 2), (0.1, 1)])  # the loading-glue row left out
+        # the loading-glue row left out
+        self.assertEqual([(r["sinter"], r["seed"]) for r in two], [(0.02, 2), (0.1, 1)])
         # the first record at or past Dx 0.2 holds -0.02: 0.02 / 0.05
         self.assertAlmostEqual(two[0]["F02_over_peak"], 0.4, places=12)
         self.assertEqual(two[0]["crack_from_wall_d0"], 3.5)
@@ -65,18 +68,21 @@ class Experiments(unittest.TestCase):
                    "iter,Dx,F\n10,0.0,0.0\n11,0.06,-0.05\n12,0.1,-0.02\n13,0.07,-0.01\n14,0.04,0.0\n")
             records = [{"Dx": 0.0, "measured": {"tensile": 0.0, "open": 0.0}, "affine": {"tensile": 0.0, "open": 0.0},
                         "max_strain_over_affine": None, "at_d0": None},
-                       {"Dx": 0.03, "measured": {"tensile": 0.02, "open": 0.1}, "affine": {"tensile": 0.3, "open": 0.05},
+                       {"Dx": 0.03, "measured": {"tensile": 0.02, "open": 0.1},
+                        "affine": {"tensile": 0.3, "open": 0.05},
                         "max_strain_over_affine": 1.5, "at_d0": 4.0},
                        {"Dx": 0.06, "measured": {"tensile": 0.01, "open": 0.2}, "affine": {"tensile": 0.4, "open": 0.1},
                         "max_strain_over_affine": 2.5, "at_d0": 4.0}]
             _write(os.path.join(t, "profile", "tested", "profile.json"),
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
                     "protocol": {"packing": "frictionless"}})
-            _write(os.path.join(t, "profile", "tested", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.19,-0.03\n3,0.2,-0.01\n")
+            _write(os.path.join(t, "profile", "tested", "profile.csv"),
+                   "iter,Dx,F\n1,0.0,0.0\n2,0.19,-0.03\n3,0.2,-0.01\n")
             # E4: the same pull through grips, listed after the walls' pull of its sample
             _write(os.path.join(t, "profile", "tested-grips1", "profile.json"),
                    {"peak_F": -0.05, "peak_Dx": 0.028, "localization_first_Dx": {"2": 0.04}, "records": records,
-                    "protocol": {"packing": "frictionless"}, "grips": {"thickness_d0": 1.0, "left": 9, "right": 8, "free": 40},
+                    "protocol": {"packing": "frictionless"},
+                    "grips": {"thickness_d0": 1.0, "left": 9, "right": 8, "free": 40},
                     "L0": 0.1})
             _write(os.path.join(t, "profile", "tested-grips1", "profile.csv"), "iter,Dx,F\n1,0.0,0.0\n2,0.2,-0.02\n")
             one = experiments.e1(t)
@@ -88,7 +94,8 @@ class Experiments(unittest.TestCase):
         self.assertAlmostEqual(v["turnaround_over_first"], 0.4, places=12)  # the out stroke ends at -0.02
         self.assertEqual(v["E1"]["first_peak"], -0.06)
         p, g = three
-        self.assertEqual((p["loading"], g["loading"], g["sample"]), ("walls", "grips 1 d0 (9 + 8 of 57 particles; free 0.80 of L0)", "tested-grips1"))
+        self.assertEqual((p["loading"], g["loading"], g["sample"]),
+                         ("walls", "grips 1 d0 (9 + 8 of 57 particles; free 0.80 of L0)", "tested-grips1"))
         self.assertAlmostEqual(g["F02_over_peak"], 0.4, places=12)
         # L0 = 10 d0, grips of 1 d0: 8 d0 free; the recorded 1.5 at the peak is 1.2 of the free part's even
         # stretch, and "2x the free part's" is 2.5 recorded: first and for good at Dx 0.06 (2.5 >= 2.5)

@@ -73,13 +73,15 @@ class MaterialFrom(unittest.TestCase):
 
     def measured(self, v, adhesion="jumpIn", radius2=R, **law):
         p = dict(self.TRUE, **law)
-        m_r = params.reduced_mass(params.sphere_mass(R, RHO), math.inf if math.isinf(radius2) else params.sphere_mass(radius2, RHO))
+        m_r = params.reduced_mass(params.sphere_mass(R, RHO),
+                                  math.inf if math.isinf(radius2) else params.sphere_mass(radius2, RHO))
         a12 = params.reduced_radius(R, radius2)
         args = (v, p["k1"], p["kp"], p["kc"], p["phiF"], a12, m_r, p["fa"], p["kca"], adhesion)
         return theory.pair_collision(*args), theory.contact_duration(*args), a12
 
     def test_round_trip(self):
-        for v, adhesion, radius2 in ((0.05, "jumpIn", R), (0.8, "jumpIn", R), (2.0, "reversible", R), (0.05, "jumpIn", math.inf)):
+        for v, adhesion, radius2 in ((0.05, "jumpIn", R), (0.8, "jumpIn", R), (2.0, "reversible", R),
+                                     (0.05, "jumpIn", math.inf)):
             with self.subTest(v=v, adhesion=adhesion, radius2=radius2):
                 o, t, a12 = self.measured(v, adhesion, radius2)
                 pull_off = 500.0 * 100.0 / 600.0 * 0.1 * a12  # kp kc/(kp + kc) phiF a12
@@ -94,7 +96,9 @@ class MaterialFrom(unittest.TestCase):
         # beyond the plastic limit one e and one contact time also fit a material that stays below it
         o, t, a12 = self.measured(0.8)
         self.assertTrue(o.plastic_limit)
-        with self.assertRaisesRegex(ValueError, r"2 materials reproduce.*beyond the plastic limit.*below the plastic limit.*limit=True"):
+        with self.assertRaisesRegex(ValueError,
+                                    r"2 materials reproduce.*beyond the plastic limit.*below the "
+                                    r"plastic limit.*limit=True"):
             params.material_from(R, RHO, 0.8, o.e, t, phiF=0.1, kc_over_kp=0.2, fa=2e-4, kca=100.0)
         other = params.material_from(R, RHO, 0.8, o.e, t, phiF=0.1, kc_over_kp=0.2, fa=2e-4, kca=100.0, limit=False)
         self.assertGreater(other["k1"], 120.0)  # the other fit: a stiffer k1, a softer kp
@@ -103,13 +107,15 @@ class MaterialFrom(unittest.TestCase):
         self.assertAlmostEqual(theory.contact_duration(*args) / t, 1.0, places=9)
 
     def test_report_says_what_kp_costs(self):
-        m = params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-5, phiF=0.1)
+        m = params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-5,
+                                 phiF=0.1)
         mass = 2000 * 4 / 3 * math.pi * 0.5e-3 ** 3  # equal spheres: m_r = m/2
         dt = 2 * math.sqrt(0.5 * mass / m["kp"])
         self.assertAlmostEqual(m.stable_step / dt, 1.0, places=12)
         self.assertIn(f"kp/k1 = {m['kp'] / m['k1']:.3g}", m.report)
         self.assertIn(f"{dt:.3g} s", m.report)
-        self.assertEqual(set(m), {"k1", "kp", "kc", "phiF", "fa", "kca", "adhesion", "k2Interpolation", "gammaN", "density"})
+        self.assertEqual(set(m),
+                         {"k1", "kp", "kc", "phiF", "fa", "kca", "adhesion", "k2Interpolation", "gammaN", "density"})
 
     def test_bad_input_named(self):
         o, t, _ = self.measured(0.05)
@@ -123,9 +129,12 @@ class MaterialFrom(unittest.TestCase):
                     params.material_from(**dict(base, **{key: value}))
         with self.assertRaisesRegex(ValueError, "phiF, plastic_overlap"):
             params.material_from(**dict(base, plastic_overlap=1e-5))
-        # a contact far too short for e = 0.5 at 0.2 m/s: the message gives the e those materials reach and what to relax
-        with self.assertRaisesRegex(ValueError, r"give e in \[0\.\d+, 1\] at this speed .*relax restitution or contact_time"):
-            params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-7, phiF=0.1)
+        # a contact far too short for e = 0.5 at 0.2 m/s: the message gives the e those materials reach and what to
+        # relax
+        with self.assertRaisesRegex(ValueError,
+                                    r"give e in \[0\.\d+, 1\] at this speed .*relax restitution or contact_time"):
+            params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-7,
+                                 phiF=0.1)
         # what MesoMat refuses (fa without a mode) is refused here too, before the fit
         with self.assertRaisesRegex(ValueError, "^adhesion = 'none' is invalid with fa > 0"):
             params.material_from(**dict(base, fa=1e-6, adhesion="none"))

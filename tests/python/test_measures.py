@@ -57,7 +57,8 @@ class TestMeasures(unittest.TestCase):
             c = measures.cycle_measures(rows, 200, mode)[0]
             self.assertAlmostEqual(c["set"], 0.5, delta=1e-9)
             shift = 0.003 / (2.0 * 0.3)  # measured from zero instead, the set moves by f0/(k2 amp)
-            self.assertAlmostEqual(measures.permanent_set(rows, mode), 0.5 + (shift if mode == "tension" else -shift), delta=1e-9)
+            self.assertAlmostEqual(measures.permanent_set(rows, mode), 0.5 + (shift if mode == "tension" else -shift),
+                                   delta=1e-9)
 
     def test_split(self):
         rows = [(100 + i, 0.0, 0.0) for i in range(41)]

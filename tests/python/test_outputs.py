@@ -1,5 +1,5 @@
-"""Results are whole or absent: outputs.Bundle commits a directory by one rename; a writer
-killed at any moment (SIGKILL, SIGTERM) leaves the old bundle or the new one, never a mix."""
+"""results are whole or absent: `outputs.Bundle` commits a directory by one rename; 12 writers killed
+at random moments (SIGKILL, SIGTERM) each leave the old bundle or the new one, never a mix."""
 import json
 import os
 import random

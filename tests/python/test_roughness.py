@@ -1,6 +1,6 @@
-"""mesostudies.tablet.roughness on lattices whose faces are known: flat halves have no roughness,
-a step of one layer over half the face gives rms 1/2 and a 5-95 % range of 1, a block in one
-piece is refused, and a VTK snapshot is read back as written."""
+"""the fracture faces' roughness (`mesostudies.tablet.roughness`) on lattices whose faces are known:
+flat halves 0; a one-layer step over half the face rms 1/2 and a 5-95 % range of 1; a tablet in one
+piece refused; a VTK snapshot read back as written."""
 import os
 import tempfile
 import unittest
@@ -30,7 +30,8 @@ class Roughness(unittest.TestCase):
     def test_flat_faces(self):
         pos, rad = two_halves()
         f = roughness.faces(pos, rad, roughness.torn_halves(pos, rad))
-        self.assertEqual((f["d0"], f["columns"], f["halves"], f["elsewhere"]), (1.0, 16, [180, 180], 0))  # 6 x 6 columns less the outermost
+        # 6 x 6 columns less the outermost
+        self.assertEqual((f["d0"], f["columns"], f["halves"], f["elsewhere"]), (1.0, 16, [180, 180], 0))
         self.assertTrue(np.all(f["left"] == 4.5) and np.all(f["right"] == 7.5))
         self.assertEqual(roughness.roughness(f["left"]), {"rms": 0.0, "range_5_95": 0.0, "peak_to_valley": 0.0})
 

@@ -1,5 +1,5 @@
-"""studies/scripts/tablet_same_runs.py: two copies of campaign files agree when only their clocks differ,
-and any change of a CSV byte or of a JSON entry that is not a clock is reported."""
+"""`studies/scripts/tablet_same_runs.py`: two copies of campaign files agree when only their clocks
+differ; a changed CSV byte or JSON entry that is not a clock is reported."""
 import importlib.util
 import json
 import os
@@ -8,7 +8,9 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location("same_runs", os.path.join(HERE, "..", "..", "studies", "scripts", "tablet_same_runs.py"))
+_spec = importlib.util.spec_from_file_location("same_runs",
+                                               os.path.join(HERE, "..", "..", "studies", "scripts",
+                                                            "tablet_same_runs.py"))
 same_runs = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(same_runs)
 

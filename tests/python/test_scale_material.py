@@ -48,7 +48,8 @@ class ScaleMaterial(unittest.TestCase):
                         small, large = law(mat, RADIUS, against), law(big, RADIUS * s, against)
                         self.assertAlmostEqual(v_p(large) / v_p(small), 1.0, places=12)
                         regimes = set()
-                        for x in (0.01, 0.03, 0.1, 0.3, 0.6, 0.9, 1.2, 3.0, 10.0):  # every regime (not at v_p itself: a kink)
+                        # every regime (not at v_p itself: a kink)
+                        for x in (0.01, 0.03, 0.1, 0.3, 0.6, 0.9, 1.2, 3.0, 10.0):
                             v = x * v_p(small)
                             a, b = theory.pair_collision(v, **small), theory.pair_collision(v, **large)
                             regimes.add(a.regime)
@@ -62,10 +63,12 @@ class ScaleMaterial(unittest.TestCase):
                             ratio = largest_overlap(b.v_contact, large) / largest_overlap(a.v_contact, small)
                             self.assertAlmostEqual(ratio / s, 1.0, places=9, msg=v)  # lengths x s
                         self.assertGreater(len(regimes), 1, regimes)  # the speeds cross at least one regime boundary
-                        self.assertAlmostEqual(pull_off(large) / (r * s * s * pull_off(small)), 1.0, places=12)  # forces x r s^2
+                        # forces x r s^2
+                        self.assertAlmostEqual(pull_off(large) / (r * s * s * pull_off(small)), 1.0, places=12)
                         if mat["adhesion"] != "none":
                             self.assertAlmostEqual(big["fa"] / (r * s * s * mat["fa"]), 1.0, places=12)
-                            self.assertAlmostEqual((big["fa"] / big["kca"]) / (s * mat["fa"] / mat["kca"]), 1.0, places=12)
+                            self.assertAlmostEqual((big["fa"] / big["kca"]) / (s * mat["fa"] / mat["kca"]), 1.0,
+                                                   places=12)
                         step = 2 * math.sqrt(large["m_r"] / large["kp"]) / (2 * math.sqrt(small["m_r"] / small["kp"]))
                         self.assertAlmostEqual(step / s, 1.0, places=12)  # the stable step x s
 
@@ -79,11 +82,13 @@ class ScaleMaterial(unittest.TestCase):
             self.assertAlmostEqual(big[k] / mat[k], 200.0, places=12, msg=k)
         for k in ("density", "young"):
             self.assertAlmostEqual(big[k] / mat[k], 2.0, places=12, msg=k)
-        for k in ("phiF", "muR", "muO", "phiD", "frictionAngle", "poisson", "adhesion", "k2Interpolation", "dominant", "label"):
+        for k in ("phiF", "muR", "muO", "phiD", "frictionAngle", "poisson", "adhesion", "k2Interpolation", "dominant",
+                  "label"):
             self.assertEqual(big[k], mat[k], k)
 
     def test_a_material_from_material_from_and_a_mesomat_like_object(self):
-        m = params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-5, phiF=0.1)
+        m = params.material_from(radius=0.5e-3, density=2000, impact_speed=0.2, restitution=0.5, contact_time=1e-5,
+                                 phiF=0.1)
         self.assertAlmostEqual(params.scale_material(m, 3.0)["kp"] / m["kp"], 3.0, places=12)
 
         class Mat:  # YADE's Serializable.dict(): the id is O.materials', not the material's

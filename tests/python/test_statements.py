@@ -23,7 +23,8 @@ class TestStatements(unittest.TestCase):
         # within 1 % by less than the six realizations' sd of L0: ◐
         with open(os.path.join(DOCS, "factors", "factors.json")) as f:
             errs = [r["L0"] / 0.115 - 1 for r in json.load(f) if (r["packing"], r["glue"], r["rel_std"], r["sinter"],
-                                                                  r["drag"]) == ("frictionless", "sinter", 0.1, 0.02, "contacts")]
+                                                                  r["drag"]) == ("frictionless", "sinter", 0.1, 0.02,
+                                                                                 "contacts")]
         mean = sum(errs) / len(errs)
         sd = (sum((e - mean) ** 2 for e in errs) / (len(errs) - 1)) ** 0.5
         err = abs(L0 / 0.115 - 1)
@@ -35,7 +36,8 @@ class TestStatements(unittest.TestCase):
         self.assertEqual(row["project"], f"Dx = {last:.2f}")
         with open(os.path.join(DOCS, "factors", "factors.json")) as f:
             chains = [r["last_chain_Dx"] for r in json.load(f) if (r["packing"], r["glue"], r["rel_std"], r["sinter"],
-                                                                   r["drag"]) == ("frictionless", "sinter", 0.1, 0.02, "contacts")]
+                                                                   r["drag"]) == ("frictionless", "sinter", 0.1, 0.02,
+                                                                                  "contacts")]
         m = sum(chains) / len(chains)
         sd = (sum((c - m) ** 2 for c in chains) / (len(chains) - 1)) ** 0.5
         self.assertEqual(row["verdict"], "✓" if 8 / 1.5 <= last <= 12 else ("◐" if abs(8 - m) <= sd else "✗"))
@@ -48,7 +50,8 @@ class TestStatements(unittest.TestCase):
             for f in os.listdir(os.path.join(DOCS, "chosen")):
                 if f != "roughness.json":
                     os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
-            row = next(s for s in statements.statements(d) if s["paper"].startswith("the contact surface has developed a roughness"))
+            row = next(s for s in statements.statements(d)
+                       if s["paper"].startswith("the contact surface has developed a roughness"))
         self.assertEqual(row["verdict"], "–")
 
     def test_roughness_of_the_chosen_campaign(self):
@@ -94,7 +97,6 @@ class TestStatements(unittest.TestCase):
         rows = statements.read_csv(os.path.join(chosen, "tension-Dx0.2-P1920.csv"))
         last = [r for r in rows if r[0] - rows[0][0] >= 3 * run["steps_per_cycle"]]
         self.assertIn(f"0.2: {-max(last, key=lambda r: r[1])[2]:.3g}", items[11]["project"])
-
 
 
 if __name__ == "__main__":

@@ -1,6 +1,9 @@
-"""The tablet's pages: the generated ones (campaigns/tablet) are what their scripts write from the
-committed files, docs/tablet/README.md quotes no number that those pages do not hold (every result
-on it computed by a script), and each picture the prose shows (docs/tablet/pictures) is the
+"""the tablet's pages: the generated ones (`campaigns/tablet`: `chosen/summary.md`, `summary.md`,
+`chosen/statements.md`, `branch/experiments.md`) are what their scripts write from the committed
+files; `docs/tablet/README.md` quotes no number that those pages, `chosen/peaks.md` and
+`factors/factors.md` do not hold (every result on it computed by a script: a number typed by hand is
+caught, numbers inside commands are not results), `docs/tablet/branch.md` only numbers of
+`experiments.md` and `factors.md`; and each picture the prose shows (`docs/tablet/pictures`) is the
 campaign's own file, byte for byte."""
 import os
 import re
@@ -15,7 +18,8 @@ CHOSEN = os.path.join(DOCS, "chosen")
 # docs/tablet/pictures/<name>: the campaign file it shows
 PICTURES = {**{f"{n}.png": os.path.join("chosen", f"{n}.png")
                for n in ("fig16", "fig17", "fig17-snapshots", "fig18", "fig19", "fig19-snapshots")},
-            "pull-contacts-sinter0.1.png": os.path.join("factors", "frictionless-sinter-std0.1-sinter0.1", "pull-contacts",
+            "pull-contacts-sinter0.1.png": os.path.join("factors", "frictionless-sinter-std0.1-sinter0.1",
+                                                        "pull-contacts",
                                                         "pull-contacts.png"),
             "timestep-x1-pull.png": os.path.join("timestep", "timestep-x1-pull.png")}
 NUMBER = re.compile(r"\d+(?:\.\d+)?")
@@ -49,7 +53,8 @@ class TabletDocs(unittest.TestCase):
 
     def generated(self):
         return "".join(_read(*p) for p in (("chosen", "summary.md"), ("chosen", "statements.md"),
-                                           ("chosen", "peaks.md"), ("factors", "factors.md"), ("branch", "experiments.md")))
+                                           ("chosen", "peaks.md"), ("factors", "factors.md"),
+                                           ("branch", "experiments.md")))
 
     def test_readme_quotes_generated_numbers(self):
         self.assertEqual(missing_numbers(_prose("README.md"), self.generated()), [],
@@ -79,6 +84,7 @@ class TabletDocs(unittest.TestCase):
         text = _prose("README.md")
         self.assertEqual(missing_numbers(text + "\nthe peak at Dx = 0.0313\n", self.generated()), ["0.0313"])
         self.assertEqual(missing_numbers(text + "\n`--until 0.0313`\n", self.generated()), [])
+
 
 if __name__ == "__main__":
     unittest.main()

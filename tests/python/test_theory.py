@@ -1,5 +1,8 @@
-"""The closed-form theory against the reference values of docs/model.md §6 and against an
-independent numerical integration of the force law written here from docs/model.md §3-4."""
+"""the closed form against the reference values of `docs/model.md` §6 and against an independent
+numerical integration of the force law written here from `docs/model.md` §3-4; the tensile range
+against bisection on the unloading line, growing with δmax up to its bound; every function refuses
+arguments outside its domain, naming them; `normal_force_path` against a loop transcription of
+`NormalLaw.hpp` on random paths (the same bits with 'linear')."""
 import math
 import unittest
 
@@ -117,7 +120,8 @@ class ReferenceValues(unittest.TestCase):
         edge = 1.0 / (1.05 ** 2 - 1.0)
         for eta in (50.0, 500.0):
             chi = edge / eta
-            self.assertAlmostEqual(theory.restitution_asymptote(chi, eta) / theory.restitution_fa0(chi, eta, 0), 1.05, places=9)
+            self.assertAlmostEqual(theory.restitution_asymptote(chi, eta) / theory.restitution_fa0(chi, eta, 0), 1.05,
+                                   places=9)
             chi_s = (edge / eta) ** 2
             self.assertAlmostEqual(theory.restitution_asymptote(chi_s, eta, 0.0, "sqrt")
                                    / theory.restitution_fa0(chi_s, eta, 0, "sqrt"), 1.05, places=9)
@@ -130,7 +134,8 @@ class TimeStep(unittest.TestCase):
         self.assertAlmostEqual(base, params.contact_time(1e3, m / 2), places=15)  # normal: pi sqrt(m_r/kp)
         self.assertAlmostEqual(params.resolved_step(1e3, m, kt=1e3 / 3.5 * 0.99, steps_per_contact=1), base, places=15)
         self.assertLess(params.resolved_step(1e3, m, kt=1e3, steps_per_contact=1), base)   # sliding binds
-        self.assertLess(params.resolved_step(1e3, m, kr=1e3, steps_per_contact=1), base)   # rolling binds (2.5 kr/m > kp/m_r)
+        # rolling binds (2.5 kr/m > kp/m_r)
+        self.assertLess(params.resolved_step(1e3, m, kr=1e3, steps_per_contact=1), base)
         self.assertLess(params.resolved_step(1e3, m, ko=1e3, steps_per_contact=1), base)   # torsion binds
         self.assertAlmostEqual(params.resolved_step(1e3, m, steps_per_contact=50), base / 50, places=15)
         with self.assertRaisesRegex(ValueError, "^kt"):
@@ -221,8 +226,10 @@ class OutsideTheDomain(unittest.TestCase):
         ("k", params.contact_time, (True, 1.0)),  # a bool is a slip, not 1
         ("radius", params.sphere_mass, (1e-300, 2000)),  # the mass underflows to 0
         ("radius", params.sphere_mass, (1e200, 1e200)),  # and overflows
-        ("resolved_step(kp=1e+308, m_min=1e-12)", params.resolved_step, (1e308, 1e-12)),  # results out of range: the call with
-        ("reduced_mass(m1=1e-320, m2=1e-320)", params.reduced_mass, (1e-320, 1e-320)),    # its arguments named, not 0 or inf
+        # results out of range: the call with
+        ("resolved_step(kp=1e+308, m_min=1e-12)", params.resolved_step, (1e308, 1e-12)),
+        # its arguments named, not 0 or inf
+        ("reduced_mass(m1=1e-320, m2=1e-320)", params.reduced_mass, (1e-320, 1e-320)),
         ("contact_time(k=1e-320, m_r=1e+300)", params.contact_time, (1e-320, 1e300)),
         ("chi", theory.impact_velocity_for_chi, (1e308, 100, 500, 0.1, 1e-3, 1e-6)),
     ]
@@ -334,7 +341,8 @@ def force_path_loop(delta, k1, kp, kc, phiF, a12, interpolation="linear"):
         D = 0.25 * Q * Q + P * P * P / 27
         if D >= 0:
             r = math.sqrt(D)
-            s = math.copysign(abs(-0.5 * Q + r) ** (1 / 3), -0.5 * Q + r) + math.copysign(abs(-0.5 * Q - r) ** (1 / 3), -0.5 * Q - r)
+            s = math.copysign(abs(-0.5 * Q + r) ** (1 / 3), -0.5 * Q + r) + math.copysign(abs(-0.5 * Q - r) ** (1 / 3),
+                                                                                          -0.5 * Q - r)
         else:
             s = 2 * math.sqrt(-P / 3) * math.cos(math.acos(1.5 * Q / P * math.sqrt(-3 / P)) / 3)
         s -= (s * s * s + P * s + Q) / (3 * s * s + P)
@@ -398,7 +406,8 @@ class NormalForcePath(unittest.TestCase):
         dmp = theory.delta_max_p(k1, kp, phiF, a12)
         d = [0.6 * dmp, 0.1 * dmp, 0.2 * dmp, 0.5 * dmp]
         f = theory.normal_force_path(d, *self.law)
-        dm = 0.1 * dmp * 0.5 + math.sqrt((0.1 * dmp) ** 2 / 4 + (k1 + kc) * dmp / (kp - k1) * 0.1 * dmp)  # the quadratic's root
+        # the quadratic's root
+        dm = 0.1 * dmp * 0.5 + math.sqrt((0.1 * dmp) ** 2 / 4 + (k1 + kc) * dmp / (kp - k1) * 0.1 * dmp)
         self.assertTrue(0.2 * dmp < dm < 0.5 * dmp)
         self.assertAlmostEqual(f[3], k1 * 0.5 * dmp, delta=1e-15)  # back on k1 delta before the first maximum 0.6
         k2 = k1 + (kp - k1) * dm / dmp

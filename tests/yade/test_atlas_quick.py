@@ -38,12 +38,15 @@ for stem, key in (("fig9_adhesivity", "long-9"), ("fig12_asymptote_eta", "long-1
 check(done["long-9"]["tuned_equals_reference_below_chi1"] < 1e-12, "Fig. 9: tuned (Eq. A.3) = reference for chi <= 1",
       f"{done['long-9']['tuned_equals_reference_below_chi1']:.1e}")
 loops = {r["model"]: r for r in done["long-10"]["loops"]}
-check(abs(loops["tuned"]["e_yade"] - loops["reference"]["e_yade"]) < 1e-6, "Fig. 10: YADE, tuned and reference alike below chi = 1")
+check(abs(loops["tuned"]["e_yade"] - loops["reference"]["e_yade"]) < 1e-6,
+      "Fig. 10: YADE, tuned and reference alike below chi = 1")
 
 cases = {c["gamma0"] > 0: c for c in done["long-11"]["cases"]}
-check(not cases[False]["stuck"] and cases[False]["e_yade"] < 1e-2, "Fig. 11: beta = beta*, no viscosity: rebounds with e ~ 0",
+check(not cases[False]["stuck"] and cases[False]["e_yade"] < 1e-2,
+      "Fig. 11: beta = beta*, no viscosity: rebounds with e ~ 0",
       f"e = {cases[False]['e_yade']:.2e}")
-check(cases[True]["stuck"] and cases[True]["final_overlap_over_dmp"] > 0.05, "Fig. 11: beta = beta*, gamma0 > 0: sticks at a finite overlap",
+check(cases[True]["stuck"] and cases[True]["final_overlap_over_dmp"] > 0.05,
+      "Fig. 11: beta = beta*, gamma0 > 0: sticks at a finite overlap",
       f"{cases[True]['final_overlap_over_dmp']}")
 check(done["long-15"]["worst_abs_sum_error_over_E0"] <= 1e-4, "Fig. 15: energies add up to E_kin(0) within 1e-4",
       f"{done['long-15']['worst_abs_sum_error_over_E0']:.1e}")
@@ -61,12 +64,15 @@ check(short6[5e-9]["largest_relative_departure_from_fa0"] < 1e-3 and short6[5e-9
       "short Fig. 6: fa = 5e-9 N on the fa = 0 curve over the plotted range",
       f"{short6[5e-9]['largest_relative_departure_from_fa0']:.1e}, v_f^a = {short6[5e-9]['v_f_a']:.2e} m/s")
 rebound, stuck = sorted(done["long-15"]["cases"], key=lambda c: c["chi"])
-check(rebound["min_plastic_potential_over_E0"] < 0 and stuck["min_plastic_potential_over_E0"] < 0 and not rebound["sticks"] and stuck["sticks"],
+check(rebound["min_plastic_potential_over_E0"] < 0 and stuck["min_plastic_potential_over_E0"] < 0
+      and not rebound["sticks"] and stuck["sticks"],
       "Fig. 15: the plastic potential turns negative at deltaMin (a, c)",
       f"{rebound['min_plastic_potential_over_E0']:.3f}, {stuck['min_plastic_potential_over_E0']:.3f}")
 check(stuck["plastic_potential_after_stick_over_E0"] > 0, "Fig. 15(c): it jumps back positive when the pair sticks",
       f"{stuck['plastic_potential_after_stick_over_E0']:.2e}")
-check(min(rebound["min_available_over_E0"], stuck["min_available_over_E0"]) > -1e-6, "Fig. 15(b, d): the available energy stays positive")
-check(abs(stuck["delta_c_yade"] / stuck["delta_c_closed_form"] - 1) < 1e-3, "Fig. 15(c): the stuck pair turns at the closed form's deltaC",
+check(min(rebound["min_available_over_E0"], stuck["min_available_over_E0"]) > -1e-6,
+      "Fig. 15(b, d): the available energy stays positive")
+check(abs(stuck["delta_c_yade"] / stuck["delta_c_closed_form"] - 1) < 1e-3,
+      "Fig. 15(c): the stuck pair turns at the closed form's deltaC",
       f"{stuck['delta_c_yade']:.6e} against {stuck['delta_c_closed_form']:.6e} m")
 finish()

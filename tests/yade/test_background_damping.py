@@ -1,4 +1,13 @@
-# ctest (inside yade): MesoBackgroundDamping relative to the contacts damps fluctuations only.
+# ctest (inside yade): `MesoBackgroundDamping` relative to the contacts: no drag force or torque on
+# a rigidly moving cluster or a layer moving with its wall (the lab-frame drag on them as a
+# control), −γ_b w on a fluctuation, every body's drag against the reference motion written out
+# independently, decay of velocity and spin fluctuations at γ_b/m and γ_br a²/I (the leapfrog
+# factor), bad attributes rejected. Every check runs with the reference gathered by the law
+# (`sumInLaw`, from the second step) and the drag equals the engine's own pass bitwise; a periodic
+# lattice moving with the cell under a velocity gradient feels no drag (a neighbour across the
+# boundary is its image: without the shift the boundary layer got 8 % of γ_b |∇v| L).
+#
+# MesoBackgroundDamping relative to the contacts damps fluctuations only.
 # - a cluster moving as a rigid body (translation + rotation), and a layer moving with a wall,
 #   feel no drag force or torque (to rounding), while the lab-frame drag on them is -gamma_b v;
 # - a particle with a velocity fluctuation w among rigidly moving neighbours feels -gamma_b w,
@@ -13,8 +22,6 @@ import numpy as np
 from yade import O, Matrix3, Vector3, utils
 from yade import wrapper as w
 from harness import check, finish
-
-
 
 
 R, GB, GBR = 0.005, 2e-4, 5e-5  # the tablet's units: mm, us, mg
@@ -76,11 +83,14 @@ vel = V + np.cross(W, pos - centre)
 spin = np.tile(W, (len(pos), 1))
 v_scale = np.abs(vel).max()
 f, t = drag(pos, vel, spin, "contacts")
-check(np.abs(f).max() <= 1e-12 * GB * v_scale, f"rigid cluster, drag vs contacts: |F| <= {np.abs(f).max():.1e} (gamma_b v = {GB * v_scale:.1e})")
+check(np.abs(f).max() <= 1e-12 * GB * v_scale,
+      f"rigid cluster, drag vs contacts: |F| <= {np.abs(f).max():.1e} (gamma_b v = {GB * v_scale:.1e})")
 check(np.abs(t).max() <= 1e-12 * GBR * R * R * np.abs(W).max(),
-      f"rigid cluster, drag vs contacts: |T| <= {np.abs(t).max():.1e} (gamma_br a^2 w = {GBR * R * R * np.abs(W).max():.1e})")
+      f"rigid cluster, drag vs contacts: |T| <= {np.abs(t).max():.1e} (gamma_br a^2 "
+      f"w = {GBR * R * R * np.abs(W).max():.1e})")
 f, t = drag(pos, vel, spin, "lab")
-check(np.abs(f + GB * vel).max() <= 1e-12 * GB * v_scale and np.abs(t + GBR * R * R * spin).max() <= 1e-12 * GBR * R * R * 50,
+check(np.abs(f + GB * vel).max() <= 1e-12 * GB * v_scale
+      and np.abs(t + GBR * R * R * spin).max() <= 1e-12 * GBR * R * R * 50,
       "rigid cluster, lab-frame drag: F = -gamma_b v, T = -gamma_br a^2 w (the measurement sees a drag)")
 
 # One particle (the centre, 13) with a fluctuation among the rigidly moving rest; the drag on
@@ -90,7 +100,8 @@ fluct, fluct_w = np.array([0.05, 0.02, -0.04]), np.array([7.0, 0.0, -3.0])
 vel2[13] += fluct
 spin2[13] += fluct_w
 f, t = drag(pos, vel2, spin2, "contacts")
-check(np.abs(f[13] + GB * fluct).max() <= 1e-12 * GB * v_scale and np.abs(t[13] + GBR * R * R * fluct_w).max() <= 1e-12 * GBR * R * R * 50,
+check(np.abs(f[13] + GB * fluct).max() <= 1e-12 * GB * v_scale
+      and np.abs(t[13] + GBR * R * R * fluct_w).max() <= 1e-12 * GBR * R * R * 50,
       f"fluctuating particle among rigid neighbours: F = -gamma_b w ({f[13]}), T = -gamma_br a^2 w_fluct")
 worst = 0.0
 for i in range(len(pos)):
@@ -117,9 +128,12 @@ f, t = drag(np.vstack([layer, free]), np.vstack([np.tile(U, (9, 1)), [[0.2, 0.1,
 check(np.abs(f[:9]).max() <= 1e-12 * GB * 0.1 and np.abs(t[:9]).max() <= 1e-12 * GBR * R * R,
       f"layer moving with its wall: no drag (|F| <= {np.abs(f[:9]).max():.1e})")
 check(np.abs(f[9]).max() == 0 and np.abs(t[9]).max() == 0, "a sphere without contacts: no drag")
-f_own, t_own = drag(np.vstack([layer, free]), np.vstack([np.tile(U, (9, 1)), [[0.2, 0.1, 0.3]]]), np.zeros((10, 3)), "contacts",
+f_own, t_own = drag(np.vstack([layer, free]), np.vstack([np.tile(U, (9, 1)), [[0.2, 0.1, 0.3]]]), np.zeros((10, 3)),
+                    "contacts",
                     walls=(wall,), sum_in_law=False)
-check(np.array_equal(f, f_own) and np.array_equal(t, t_own), "with a wall: law's sums and the engine's pass bitwise the same")
+check(np.array_equal(f, f_own) and np.array_equal(t, t_own),
+      "with a wall: law's sums and the engine's pass bitwise the same")
+
 
 # A periodic simple-cubic lattice (4^3, spacing 1.98 R) moving affinely with the cell under a
 # velocity gradient: every sphere sees its six neighbours symmetrically, those across the
@@ -142,8 +156,10 @@ def periodic_drag(sum_in_law):
         O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()], verletDist=0),
                      w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
                                        [w.Law2_ScGeom_MesoPhys_Meso()]),
-                     w.MesoBackgroundDamping(gammaB=g, gammaBR=GBR if g else 0.0, reference="contacts", sumInLaw=sum_in_law),
-                     w.NewtonIntegrator(damping=0)]  # it also updates the cell's velocity gradient, which the images' velocity uses
+                     w.MesoBackgroundDamping(gammaB=g, gammaBR=GBR if g else 0.0, reference="contacts",
+                                             sumInLaw=sum_in_law),
+                     # it also updates the cell's velocity gradient, which the images' velocity uses
+                     w.NewtonIntegrator(damping=0)]
         O.dt = 1e-5
         O.step()
         O.step()
@@ -151,7 +167,8 @@ def periodic_drag(sum_in_law):
         affine = max((O.bodies[b].state.vel - O.cell.velGrad * O.bodies[b].state.pos).norm() for b in ids)
         half = np.abs(grad).max() * max(O.bodies[b].state.vel.norm() for b in ids) * O.dt
         if g:
-            check(affine <= half, f"periodic lattice: every sphere at its affine velocity (within {affine:.1e} <= {half:.1e})")
+            check(affine <= half,
+                  f"periodic lattice: every sphere at its affine velocity (within {affine:.1e} <= {half:.1e})")
             check(all(len(O.bodies[b].intrs()) == 6 for b in ids), "periodic lattice: six contacts per sphere")
         out.append(np.array([list(O.forces.f(b)) for b in ids]))
     return out[0] - out[1], GB * np.abs(grad).max() * n * a
@@ -181,9 +198,11 @@ for attr, value in (("gammaB", -1.0), ("gammaB", math.inf), ("gammaBR", math.nan
 
 # Decay: a sphere held between two fixed spheres (overlap 1e-9 mm, no tangential mechanisms)
 # moving across the line of centres and spinning about it, among neighbours at rest.
-smooth = dict(MAT, kc=0.0, frictionAngle=0.0, kt=0.0, gammaT=0.0, kr=0.0, gammaR=0.0, muR=0.0, ko=0.0, gammaO=0.0, muO=0.0, gammaN=0.0)
+smooth = dict(MAT, kc=0.0, frictionAngle=0.0, kt=0.0, gammaT=0.0, kr=0.0, gammaR=0.0, muR=0.0, ko=0.0, gammaO=0.0,
+              muO=0.0, gammaN=0.0)
 gap = 2 * R - 1e-9
-ids, _ = scene([(-gap, 0, 0), (0, 0, 0), (gap, 0, 0)], [(0, 0, 0), (0, 1e-4, 0), (0, 0, 0)], [(0, 0, 0), (30.0, 0, 0), (0, 0, 0)],
+ids, _ = scene([(-gap, 0, 0), (0, 0, 0), (gap, 0, 0)], [(0, 0, 0), (0, 1e-4, 0), (0, 0, 0)],
+               [(0, 0, 0), (30.0, 0, 0), (0, 0, 0)],
                "contacts", GB, mat=smooth)
 for i in (ids[0], ids[2]):
     O.bodies[i].state.blockedDOFs = "xyzXYZ"
@@ -196,9 +215,11 @@ O.run(n, True)
 m, inertia = b.mass, b.inertia[0]
 expect_v, expect_w = v0 * (1 - GB * O.dt / m) ** n, w0 * (1 - GBR * R * R * O.dt / inertia) ** n
 rate_v = -math.log(b.vel[1] / v0) / (n * O.dt)
-check(abs(b.vel[1] / expect_v - 1) < 1e-3, f"velocity fluctuation decays at gamma_b/m: rate {rate_v:.5g} (gamma_b/m = {GB / m:.5g}), "
+check(abs(b.vel[1] / expect_v - 1) < 1e-3,
+      f"velocity fluctuation decays at gamma_b/m: rate {rate_v:.5g} (gamma_b/m = {GB / m:.5g}), "
       f"v/v_leapfrog - 1 = {b.vel[1] / expect_v - 1:.1e}")
-check(abs(b.angVel[0] / expect_w - 1) < 1e-3, f"spin fluctuation decays at gamma_br a^2/I: w/w_leapfrog - 1 = {b.angVel[0] / expect_w - 1:.1e}")
+check(abs(b.angVel[0] / expect_w - 1) < 1e-3,
+      f"spin fluctuation decays at gamma_br a^2/I: w/w_leapfrog - 1 = {b.angVel[0] / expect_w - 1:.1e}")
 check(b.vel[1] / v0 < 0.5, f"and it did decay (v/v0 = {b.vel[1] / v0:.3f})")
 
 finish()

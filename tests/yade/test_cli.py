@@ -1,6 +1,7 @@
-# ctest (inside yade, run from the build tree): the command lines check their values before
-# any work starts (issue #14 item 18): each bad value ends the script with an error naming the
-# option, within seconds, and leaves nothing behind; --help prints the usage.
+# ctest (inside yade, run from the build tree): the command lines check their values before any work
+# starts (issue #14 item 18): each bad value ends the script with an error naming the option, within
+# seconds, and leaves nothing behind; `figure.py` refuses unknown figures and papers; --help prints
+# the usage.
 import os
 import subprocess
 import tempfile
@@ -11,14 +12,16 @@ from harness import failures, finish
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(mesocontact.__file__))))
 # the library's scripts, and the studies' (the tablet's jobs behind tablet.py, the figures)
-where = {name: os.path.join(ROOT, "studies", "scripts") if name.startswith(("tablet", "figure")) else os.path.join(ROOT, "scripts")
+where = {name: (os.path.join(ROOT, "studies", "scripts") if name.startswith(("tablet", "figure"))
+                else os.path.join(ROOT, "scripts"))
          for name in ("pair_batch.py", "tablet.py", "tablet_report.py", "tablet_restore.py", "figure.py")}
 launcher = os.path.abspath("yade-meso")  # ctest runs this from the build directory
 
 
 def run(script, *args):
     t0 = time.time()
-    p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(where[script], script), *args], capture_output=True, text=True,
+    p = subprocess.run([launcher, "-j1", "-n", "-x", os.path.join(where[script], script), *args], capture_output=True,
+                       text=True,
                        timeout=120)
     return p.returncode, p.stdout + p.stderr, time.time() - t0
 
@@ -49,7 +52,8 @@ for job, args, option in cases:
     rc, text, secs = run("tablet.py", job, *args, "--out", out)
     ok = rc != 0 and option in text and secs < 60 and not os.path.exists(os.path.join(out, "released.yade.gz"))
     last = [line for line in text.splitlines() if option in line][-1:] or text.splitlines()[-1:]
-    print(("ok   " if ok else "FAIL ") + f"{script} {' '.join(args)}: rc {rc}, {secs:.0f} s: {last[0] if last else ''}", flush=True)
+    print(("ok   " if ok else "FAIL ") + f"{script} {' '.join(args)}: rc {rc}, {secs:.0f} s: {last[0] if last else ''}",
+          flush=True)
     if not ok:
         failures.append(f"{script} {' '.join(args)}")
 # An --out that cannot be written fails at once.
@@ -64,7 +68,8 @@ if not ok:
 os.chdir(tmp)
 rc, text, secs = run("figure.py", "--help")
 ok = rc == 0 and "usage" in text and not os.path.exists(os.path.join(tmp, "--help")) and "[atlas]" not in text
-print(("ok   " if ok else "FAIL ") + f"figure.py --help: rc {rc}, {secs:.0f} s, folder '--help': {os.path.exists('--help')}", flush=True)
+print(("ok   " if ok else "FAIL ")
+      + f"figure.py --help: rc {rc}, {secs:.0f} s, folder '--help': {os.path.exists('--help')}", flush=True)
 if not ok:
     failures.append("figure.py --help")
 # Every script without argparse honours --help too (pair_batch.py used to run a job), and the two
@@ -86,7 +91,8 @@ for args, says in ((["4"], "figure 4 of the long paper"), (["7", "--paper", "sho
                    (["5", "--paper", "mid"], "--paper")):
     rc, text, secs = run("figure.py", *args, "--out", out)
     ok = rc != 0 and says in text and "[atlas]" not in text and secs < 60
-    print(("ok   " if ok else "FAIL ") + f"figure.py {' '.join(args)}: rc {rc}, {secs:.0f} s: {says!r} in the message", flush=True)
+    print(("ok   " if ok else "FAIL ") + f"figure.py {' '.join(args)}: rc {rc}, {secs:.0f} s: {says!r} in the message",
+          flush=True)
     if not ok:
         failures.append(f"figure.py {' '.join(args)}")
 # An output path that is a file: named at once, no traceback (issue #49 item 10).
@@ -97,7 +103,8 @@ for script, args, says in (("figure.py", ["5", "--out", afile], "--out " + afile
                             "a file, not a directory")):
     rc, text, secs = run(script, *args)
     ok = rc != 0 and says in text and "Traceback" not in text and "[atlas]" not in text
-    print(("ok   " if ok else "FAIL ") + f"{script} with a file for its output: rc {rc}: {says!r} in the message", flush=True)
+    print(("ok   " if ok else "FAIL ") + f"{script} with a file for its output: rc {rc}: {says!r} in the message",
+          flush=True)
     if not ok:
         failures.append(f"{script} output file")
 

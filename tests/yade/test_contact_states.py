@@ -27,7 +27,8 @@ for _ in range(400000):
         seen.append(b)
     if b == "gone" and "tensile" in seen:
         break
-want = ["gone", "nonContact", "loading", "limit", "unloading", "tensile", "nonContact", "gone"]  # real from the pull-in on
+# real from the pull-in on
+want = ["gone", "nonContact", "loading", "limit", "unloading", "tensile", "nonContact", "gone"]
 got = [b for b in seen if b != "apart"]
 check(got == want, "a collision beyond the plastic limit passes every branch in order", " -> ".join(seen))
 
@@ -47,9 +48,12 @@ check(abs(sum(f.values()) - 1) < 1e-15 and f["unloading"] == 1.0, "branch_fracti
 with tempfile.TemporaryDirectory() as tmp:
     name = scene.export_contacts(os.path.join(tmp, "contacts"))
     text = open(name).read() if name else ""
-    fields = [k for k in scene.VTK_CONTACT_FIELDS if f"\n{k} " in text or f"SCALARS {k} " in text or f"VECTORS {k} " in text]
-    check(name is not None and text.startswith("# vtk DataFile") and "CELL_DATA 1" in text and len(fields) == len(scene.VTK_CONTACT_FIELDS),
+    fields = [k for k in scene.VTK_CONTACT_FIELDS if f"\n{k} " in text or f"SCALARS {k} " in text
+              or f"VECTORS {k} " in text]
+    check(name is not None and text.startswith("# vtk DataFile") and "CELL_DATA 1" in text
+          and len(fields) == len(scene.VTK_CONTACT_FIELDS),
           "export_contacts: a legacy VTK file with every field, one cell", f"{os.path.basename(name or '')}: {fields}")
+
 
 # Against a box and a facet, whose body positions lie 50 radii below and a third of the facet away:
 # each contact is drawn from the sphere's centre to its contact point (within the radius), and the

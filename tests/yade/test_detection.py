@@ -38,11 +38,13 @@ def collide(detect):
 e_default, _ = collide(False)
 e_set, factor = collide(True)
 RANGE = MAT["fa"] / MAT["kca"]
-check(abs(scene.adhesion_range() - RANGE) < 1e-12 * RANGE, "adhesion_range = fa/kca of the scene's material", f"{scene.adhesion_range():.3e}")
+check(abs(scene.adhesion_range() - RANGE) < 1e-12 * RANGE, "adhesion_range = fa/kca of the scene's material",
+      f"{scene.adhesion_range():.3e}")
 check(abs(factor - (1 + 1.2 * RANGE / R)) < 1e-12, "set_detection: factor 1 + 1.2 range/a_min", f"{factor}")
 check(abs(e_default - e_theory) > 1e-3, "default detection misses the pull-in (e off the closed form)",
       f"e = {e_default:.6f}, theory {e_theory:.6f}")
-check(abs(e_set - e_theory) <= 1e-3, "after set_detection e meets the closed form", f"e = {e_set:.6f}, theory {e_theory:.6f}")
+check(abs(e_set - e_theory) <= 1e-3, "after set_detection e meets the closed form",
+      f"e = {e_set:.6f}, theory {e_theory:.6f}")
 scene.reset()
 O.materials.append(w.MesoMat(k1=100.0, kp=500.0, density=RHO))
 O.bodies.append(utils.sphere((0, 0, 0), R, material=0))
@@ -62,7 +64,8 @@ def wall_scene():
     O.materials.append(w.MesoMat(**MAT))
     O.bodies.append([utils.sphere((0, 0, 0), R, material=0), utils.wall(-2 * R, axis=2, material=0)])
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Wall_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Wall_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Wall_Sphere_ScGeom()],
+                                   [w.Ip2_MesoMat_MesoMat_MesoPhys()],
                                    [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
 
@@ -70,7 +73,8 @@ def wall_scene():
 def detection_state():
     """What set_detection changes: the sphere bound's factor, the geometry functors and theirs."""
     return ([f.aabbEnlargeFactor for f in O.engines[1].boundDispatcher.functors if isinstance(f, w.Bo1_Sphere_Aabb)],
-            [(type(f).__name__, getattr(f, "interactionDetectionFactor", None)) for f in O.engines[2].geomDispatcher.functors])
+            [(type(f).__name__, getattr(f, "interactionDetectionFactor", None))
+             for f in O.engines[2].geomDispatcher.functors])
 
 
 def refused(what, call, error, words, scene_before=None):
@@ -80,8 +84,10 @@ def refused(what, call, error, words, scene_before=None):
         got = call()
         check(False, f"{what} refused", f"accepted: {got!r}, {detection_state()}")
     except error as e:
-        check(all(x in str(e) for x in words) and detection_state() == before, f"{what}: {error.__name__} naming {', '.join(words)}, "
-              "nothing changed", str(e) if detection_state() == before else f"{detection_state()} after, {before} before")
+        check(all(x in str(e) for x in words) and detection_state() == before,
+              f"{what}: {error.__name__} naming {', '.join(words)}, "
+              "nothing changed",
+              str(e) if detection_state() == before else f"{detection_state()} after, {before} before")
     except Exception as e:  # noqa: BLE001 - the wrong kind of error is the finding
         check(False, f"{what}: {error.__name__} naming {', '.join(words)}", f"{type(e).__name__}: {e}")
 
@@ -90,15 +96,17 @@ wall_scene()
 for margin in (math.inf, -math.inf, math.nan, -1.0, 0.5, "1.5", True, None):
     refused(f"set_detection(margin={margin!r})", lambda: scene.set_detection(margin=margin), ValueError, ["margin = "])
 O.bodies[0].shape.radius = 1e-9  # range/a_min = 200: a finite margin whose factor overflows
-refused("set_detection(margin=1e307) with a factor beyond floating point", lambda: scene.set_detection(margin=1e307), ValueError,
+refused("set_detection(margin=1e307) with a factor beyond floating point", lambda: scene.set_detection(margin=1e307),
+        ValueError,
         ["margin = 1e+307"])
 for radius in (0.0, -R, math.nan, math.inf):
     O.bodies[0].shape.radius = radius  # min(radii) = 0 divided by zero; NaN set NaN factors
-    refused(f"set_detection with a sphere radius {radius!r}", lambda: scene.set_detection(), ValueError, ["body #0", "radius"])
+    refused(f"set_detection with a sphere radius {radius!r}", lambda: scene.set_detection(), ValueError,
+            ["body #0", "radius"])
 O.bodies[0].shape.radius = R
 O.bodies[1].shape.axis = 3  # YADE takes it; its Bo1_Wall_Aabb aborts the process at the first step
 for what, call in (("set_detection", lambda: scene.set_detection()), ("time_step", lambda: scene.time_step()),
-                       ("check", lambda: scene.check())):
+                   ("check", lambda: scene.check())):
     refused(f"{what} with Wall.axis = 3", call, ValueError, ["body #1", "Wall.axis = 3", "0, 1 or 2"])
 O.bodies[1].shape.axis = 2
 for name in ("young", "poisson"):

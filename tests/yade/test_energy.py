@@ -1,7 +1,7 @@
-# ctest (inside yade): with O.trackEnergy, kinetic + stored + dissipated energy stays constant
-# to 1e-4 of the initial kinetic energy at every step of a collision, with every mechanism
-# of the normal law on; and the hysteretic dissipation of a rebound equals the closed form
-# E_i (1 - e^2).
+# ctest (inside yade): with O.trackEnergy, kinetic + stored + dissipated energy stays constant to
+# 1e-4 of the initial kinetic energy at every step of a collision, with every mechanism of the
+# normal law on, and the force parts add up to `normalForce`; the hysteretic dissipation of a
+# rebound equals the closed form E_i (1 - e^2).
 
 from yade import O
 from mesocontact import pair, params, theory
@@ -35,8 +35,8 @@ for label, mat, zeta, r2 in cases:
             split = max(split, abs(i.phys.normalForce.dot(i.geom.normal) - parts) / (s.m_r * v / s.contact_time))
     parts = {k: O.energy[k] / ek0 for k in O.energy.keys()}
     ok = worst <= 1e-4 and abs(e0 - ek0) / ek0 < 1e-6 and split <= 1e-12
-    line = f"{label:32s} max |E_total - E_0|/E_kin,0 = {worst:.2e}; force parts vs normalForce {split:.1e}; final shares: " + \
-        ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0)
+    line = (f"{label:32s} max |E_total - E_0|/E_kin,0 = {worst:.2e}; force parts vs normalForce {split:.1e}; "
+            "final shares: " + ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0))
     if label.startswith("fa=0"):  # rebound: all the lost kinetic energy went into the hysteresis
         e_th = theory.pair_collision(v, 100, 500, 100, 0.1, s.a12, s.m_r).e
         plastic_err = abs(parts["mesoPlastic"] - (1 - e_th ** 2)) / (1 - e_th ** 2)
@@ -51,11 +51,12 @@ for label, mat, zeta, r2 in cases:
 # All mechanisms: oblique, spinning sphere-sphere (ScGeom6D) and sphere-box collisions with
 # sliding, rolling and torsion springs, dashpots and Coulomb limits, adhesion, viscosity and
 # viscous background damping.
-from yade import wrapper as wr
+from yade import wrapper as wr  # noqa: E402
 
 full = dict(base, fa=fa, kca=100.0, adhesion="jumpIn", gammaN=2e-3, kt=40.0, gammaT=1e-3, frictionAngle=0.3,
             kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1, phiD=0.8)
-for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"), ("all mechanisms, sphere-box 6D", True, "lab"),
+for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"),
+                               ("all mechanisms, sphere-box 6D", True, "lab"),
                                ("sphere-sphere 6D, drag vs contacts", False, "contacts"),
                                ("sphere-box 6D, drag vs contacts", True, "contacts")):
     v = 0.08
@@ -65,11 +66,13 @@ for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"
     else:
         s = pair.build(r, v, full, track_energy=True)
         f = O.engines[2].geomDispatcher.functors[0]
-        O.engines[2].geomDispatcher.functors = [wr.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=f.interactionDetectionFactor)]
+        O.engines[2].geomDispatcher.functors = [
+            wr.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=f.interactionDetectionFactor)]
         O.bodies[s.ids[0]].state.vel += (0, 0.04, 0.01)  # oblique
         O.bodies[s.ids[0]].state.angVel = (40, 0, -60)
         O.bodies[s.ids[1]].state.angVel = (0, 70, 20)
-    O.engines = O.engines[:-1] + [wr.MesoBackgroundDamping(gammaB=1e-4, gammaBR=1e-4, reference=reference)] + O.engines[-1:]
+    O.engines = O.engines[:-1] + [wr.MesoBackgroundDamping(gammaB=1e-4, gammaBR=1e-4,
+                                                           reference=reference)] + O.engines[-1:]
     O.step()
     e0 = O.energy.total()
     worst = 0.0
@@ -77,9 +80,10 @@ for label, wall, reference in (("all mechanisms, sphere-sphere 6D", False, "lab"
         O.step()
         worst = max(worst, abs(O.energy.total() - e0) / e0)
     parts = {k: O.energy[k] / e0 for k in O.energy.keys()}
-    ok = worst <= 1e-4 and all(parts.get(k, 0) > 0 for k in ("mesoSliding", "mesoRolling", "mesoTorsion", "mesoBackground"))
-    print(("ok   " if ok else "FAIL ") + f"{label:32s} max |E_total - E_0|/E_0 = {worst:.2e}; final shares: " +
-          ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0), flush=True)
+    ok = worst <= 1e-4 and all(parts.get(k, 0) > 0
+                               for k in ("mesoSliding", "mesoRolling", "mesoTorsion", "mesoBackground"))
+    print(("ok   " if ok else "FAIL ") + f"{label:32s} max |E_total - E_0|/E_0 = {worst:.2e}; final shares: "
+          + ", ".join(f"{k}={val:.4f}" for k, val in sorted(parts.items()) if val != 0), flush=True)
     if not ok:
         failures.append(label)
 finish()

@@ -1,4 +1,9 @@
-# ctest (inside yade): the tablet's factor table (campaigns/tablet/factors/factors.md) from made-up
+# ctest (inside yade): the tablet's factor table from made-up files whose answers are worked by
+# hand: the weakest plane at the peak and at Dx = 0.2 and 0.81 (where the crack runs), each
+# criterion's ✓/✗ (a crack 1.1 d0 from a wall is not in the bulk), and the realizations' summary
+# (the values, their mean and sample standard deviation).
+#
+# The tablet's factor table (campaigns/tablet/factors/factors.md) from made-up
 # files, so that every criterion's answer and every summary is known by hand: two realizations
 # (seeds 1 and 2) of one preparation, L0 = 0.1155 (+0.43 %), the weakest plane 4.125 d0 from the
 # left wall at the peak; at Dx = 0.81 the crack plane 5.125 d0 from the left wall (seed 1) or
@@ -31,7 +36,8 @@ for seed, crack, gap, last in ((1, 20, 1.0, 7.0), (2, 4, 1.2, 9.0)):
     at_peak = profile(16, 11.55)  # 4.125 d0 from the left face
     json.dump({"drag": "contacts", "L0": 0.1155, "max_tension": -0.05, "max_tension_Dx": 0.2,
                "planes_at_start": at_peak, "planes_at_peak": dict(at_peak, Dx=0.0),
-               "planes_at_marks": {"0.2": dict(profile(crack, 11.75), Dx=0.2), "0.81": dict(profile(crack, 12.36), Dx=0.81)},
+               "planes_at_marks": {"0.2": dict(profile(crack, 11.75), Dx=0.2),
+                                   "0.81": dict(profile(crack, 12.36), Dx=0.81)},
                "first_gap_Dx_by_area": {"0.5": 0.8, "1": gap, "2": 1.5},
                "last_contact_Dx": last, "mean_force_after_last_contact": 0.0, "wall_clock_s": 1.0},
               open(os.path.join(prep, "pull-contacts", "pull-contacts.json"), "w"))
@@ -48,7 +54,8 @@ check("frictionless, loading, radii std 0.05, seed 1, contacts: L0 ✓, bulk rup
 check("seed 2, contacts: L0 ✓, bulk rupture ✓, crack in the bulk ✗, first gap ✓, last chain ✓" in md,
       "factor table: seed 2's crack at 1.125 d0 from a wall is not in the bulk")
 # the realizations' summary: mean and sample sd of (7, 9), (1.0, 1.2), (5.125, 1.125), worked by hand
-for line in ("- last chain Dx: 7.00, 9.00: mean 8.00, sd 1.41", "- first gap Dx (1 d0^2): 1.00, 1.20: mean 1.10, sd 0.14",
+for line in ("- last chain Dx: 7.00, 9.00: mean 8.00, sd 1.41",
+             "- first gap Dx (1 d0^2): 1.00, 1.20: mean 1.10, sd 0.14",
              "- weakest plane at Dx = 0.81 from the nearer wall [d0]: 5.1, 1.1: mean 3.1, sd 2.8",
              "- L0 against 0.115 [%]: 0.43, 0.43: mean 0.43, sd 0.00"):
     check(line in md, f"factor table: realizations summary {line!r}")
@@ -60,5 +67,6 @@ copy = tempfile.mkdtemp(prefix="factor-docs-")
 shutil.copytree(docs, os.path.join(copy, "factors"))
 campaign.factor_table(copy)
 check(open(os.path.join(copy, "factors", "factors.md")).read() == open(os.path.join(docs, "factors.md")).read(),
-      "campaigns/tablet/factors/factors.md is generated: studies/scripts/tablet.py factors --out campaigns/tablet --table")
+      "campaigns/tablet/factors/factors.md is generated: studies/scripts/tablet.py factors --out "
+      "campaigns/tablet --table")
 finish()

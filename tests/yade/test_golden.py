@@ -1,4 +1,11 @@
-# ctest (inside yade): golden regression. A small scene with every mechanism on (hysteresis with
+# ctest (inside yade): golden regression: 27 pressed spheres of two unlike materials (both adhesion
+# modes, both k2 rules) on a dominant adhesive wall with every mechanism on, 3000 steps on one
+# thread; every contact's history, springs and forces, every body's state and every energy term
+# equal to `tests/yade/golden/golden.json` to 1e-12 of the quantity's largest value. After a
+# deliberate change of the law: `build/yade-meso -j1 -n -x tests/yade/test_golden.py --regenerate`
+# (with `PYTHONPATH=tests/yade`), and say why in the commit.
+#
+# Golden regression. A small scene with every mechanism on (hysteresis with
 # both interpolations, reversible and jump-in adhesion, viscosity, sliding, rolling and torsion with
 # their dashpots, a dominant adhesive wall, unlike materials and radii, the background drag relative
 # to the contacts, gravity) runs 3000 steps on one thread; every contact's history, springs and
@@ -23,7 +30,8 @@ HERE = os.path.dirname(os.path.abspath(harness.__file__))
 GOLDEN = os.path.join(HERE, "golden", "golden.json")
 STEPS = 3000
 PHYS = ("deltaMax", "delta0", "k2", "touched", "hystereticForce", "adhesiveForce", "viscousForce", "normalForce",
-        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring", "torsionForce",
+        "shearForce", "slidingSpring", "rollingSpring", "rollingForce", "rollingTorque", "torsionSpring",
+        "torsionForce",
         "torsionTorque")
 
 
@@ -51,7 +59,8 @@ def build():
     O.engines = [
         w.ForceResetter(),
         w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()]),
-        w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+        w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D(), w.Ig2_Box_Sphere_ScGeom6D()],
+                          [w.Ip2_MesoMat_MesoMat_MesoPhys()],
                           [w.Law2_ScGeom_MesoPhys_Meso()]),
         w.MesoBackgroundDamping(gammaB=1e-5, gammaBR=1e-5, reference="contacts"),
         w.NewtonIntegrator(damping=0, gravity=(0, 0, -9.81)),
@@ -92,7 +101,8 @@ def flat(x):
 
 
 check(set(now["contacts"]) == set(ref["contacts"]), "the same contacts exist",
-      f"{len(now['contacts'])} now, {len(ref['contacts'])} stored; differ: {sorted(set(now['contacts']) ^ set(ref['contacts']))[:6]}")
+      f"{len(now['contacts'])} now, {len(ref['contacts'])} stored; differ: "
+      f"{sorted(set(now['contacts']) ^ set(ref['contacts']))[:6]}")
 check(now["dt"] == ref["dt"], "the same time step", f"{now['dt']!r} vs {ref['dt']!r}")
 kinds = {k for c in ref["contacts"].values() for k in c}
 touched_mech = {"rollingSpring", "torsionSpring", "slidingSpring", "adhesiveForce", "viscousForce"}
@@ -106,7 +116,8 @@ for k in sorted(kinds):
     check(worst <= 1e-12, f"contacts' {k} as stored", f"worst {worst:.1e} of its largest value {scale:.3e}")
 for k in ("pos", "vel", "angVel"):
     scale = max(abs(x) for b in ref["bodies"].values() for x in b[k])
-    worst = max(abs(a - b) for key, body in ref["bodies"].items() for a, b in zip(now["bodies"][key][k], body[k])) / scale
+    worst = max(abs(a - b)
+                for key, body in ref["bodies"].items() for a, b in zip(now["bodies"][key][k], body[k])) / scale
     check(worst <= 1e-12, f"bodies' {k} as stored", f"worst {worst:.1e} of {scale:.3e}")
 scale = max(abs(v) for v in ref["energy"].values())
 worst = max(abs(now["energy"].get(k, 0.0) - v) for k, v in ref["energy"].items()) / scale

@@ -1,4 +1,10 @@
-# ctest (inside yade): what must not crash or go silently wrong (issue #14's items 1-4, 6, 7, 11).
+# ctest (inside yade): what must not crash or go silently wrong, the faults of `docs/hardening/`
+# (issue #14's items 1-4, 6, 7, 11): hand-made or mismatched contacts, overflow, density, overlapped
+# starts, the stable time step (`Ip2.stableDt`) and its warning, the pair driver's own checks, wrong
+# types named; values outside 1e-100 … 1e100 refused naming the parameter, mixing at those limits
+# finite, and one warning for contacts born deeper than a radius.
+#
+# What must not crash or go silently wrong (issue #14's items 1-4, 6, 7, 11).
 # - a MesoPhys assigned from Python to a live contact is dropped with a warning and remade by the
 #   Ip2 (it used to crash: no pair parameters);
 # - a saved plain MesoPhys whose pair has tangential mechanisms is refused on load, naming the class;
@@ -14,12 +20,12 @@ import tempfile
 
 import numpy as np
 from yade import O, utils
-from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop, Ig2_Sphere_Sphere_ScGeom,
-                          Ig2_Sphere_Sphere_ScGeom6D, Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso, NewtonIntegrator,
+from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
+                          Ig2_Sphere_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom6D, Ip2_MesoMat_MesoMat_MesoPhys, Law2_ScGeom_MesoPhys_Meso,
+                          NewtonIntegrator,
                           MesoMat, MesoPhys, MesoTangentialPhys)
 from harness import Stderr, check, finish
-
-
 
 
 A, RHO = 1e-3, 2000.0
@@ -33,7 +39,8 @@ def two_spheres(mat, overlap=0.0, v=0.0, dt=1e-6, six=False):
     O.bodies[1].state.vel = (-v, 0, 0)
     ig2 = Ig2_Sphere_Sphere_ScGeom6D() if six else Ig2_Sphere_Sphere_ScGeom()
     ip2 = Ip2_MesoMat_MesoMat_MesoPhys()
-    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]), InteractionLoop([ig2], [ip2], [Law2_ScGeom_MesoPhys_Meso()]),
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([ig2], [ip2], [Law2_ScGeom_MesoPhys_Meso()]),
                  NewtonIntegrator(damping=0)]
     O.dt = dt
     return ip2
@@ -61,20 +68,23 @@ check(type(O.interactions[0, 1].phys).__name__ == "MesoTangentialPhys" and O.int
 # 1b. The same under O.run (the law in YADE's engine thread with the GIL released: dropping the
 #     Python-made object there aborted the interpreter), and other IPhys classes on a meso contact
 #     (the law took them for a MesoPhys: a segfault), on plain and tangential pairs.
-import yade.wrapper as W
+import yade.wrapper as W  # noqa: E402
 for tangential in (False, True):
     kw = dict(kt=50, frictionAngle=0.3) if tangential else {}
     want = "MesoTangentialPhys" if tangential else "MesoPhys"
-    for cls in ("MesoPhys", "MesoTangentialPhys", "FrictPhys", "NormShearPhys", "ViscElPhys", "RotStiffFrictPhys", "IPhys"):
+    for cls in ("MesoPhys", "MesoTangentialPhys", "FrictPhys", "NormShearPhys", "ViscElPhys", "RotStiffFrictPhys",
+                "IPhys"):
         two_spheres(MesoMat(k1=100, kp=500, density=RHO, **kw), overlap=1e-5, six=tangential)
         O.step()
         O.interactions[0, 1].phys = getattr(W, cls)()
         with Stderr() as err:
             O.run(100, True)
         i = O.interactions[0, 1]
-        check(i.isReal and type(i.phys).__name__ == want and f"has a {cls} not made" in err.text and err.text.count("WARNING") == 1
+        check(i.isReal and type(i.phys).__name__ == want and f"has a {cls} not made" in err.text
+              and err.text.count("WARNING") == 1
               and math.isfinite(i.phys.normalForce.norm()),
-              f"{cls} on a live {'tangential' if tangential else 'plain'} contact under O.run: warned, dropped, remade as {want}")
+              f"{cls} on a live {'tangential' if tangential else 'plain'} contact under O.run: warned, "
+              f"dropped, remade as {want}")
 
 # 2. A saved plain MesoPhys whose pair parameters have tangential mechanisms (the file edited).
 two_spheres(MesoMat(k1=100, kp=500, density=RHO), overlap=1e-5, dt=1e-5)
@@ -107,8 +117,10 @@ for x, y in ((1e99, 1e99), (1e99, 1e100), (1e-100, 3e-100)):
     p = O.interactions[0, 1].phys
     hm = 2 / (1 / x + 1 / y)
     f = max(abs(c) for c in p.normalForce)
-    check(abs(p.k1 - hm) <= 1e-15 * hm and abs(p.kp - y) <= 1e-15 * y and math.isfinite(p.k2) and math.isfinite(f) and f > 0,
-          f"mixing k1 = {x:g} with {y:g}", f"k1 {p.k1:.6g} (harmonic mean {hm:.6g}), kp {p.kp:.6g}, k2 {p.k2:.6g}, |F| {f:.3g}")
+    check(abs(p.k1 - hm) <= 1e-15 * hm and abs(p.kp - y) <= 1e-15 * y and math.isfinite(p.k2) and math.isfinite(f)
+          and f > 0,
+          f"mixing k1 = {x:g} with {y:g}",
+          f"k1 {p.k1:.6g} (harmonic mean {hm:.6g}), kp {p.kp:.6g}, k2 {p.k2:.6g}, |F| {f:.3g}")
 for kw, name in ((dict(k1=1e200, kp=1e200), "k1"), (dict(kp=1e308), "kp"), (dict(kt=1e308), "kt"),
                  (dict(fa=1e300, kca=1.0, adhesion="reversible"), "fa"), (dict(density=1e-310), "density"),
                  (dict(gammaN=1e-320), "gammaN")):
@@ -145,14 +157,16 @@ for _ in range(500):
     except ValueError:
         pass
     changed += (m.frictionAngle, m.density, m.k1, m.kp) != before
-check(changed == 0, "a rejected updateAttrs leaves density, frictionAngle (bitwise), k1, kp as they were", f"{changed} of 500 changed")
+check(changed == 0, "a rejected updateAttrs leaves density, frictionAngle (bitwise), k1, kp as they were",
+      f"{changed} of 500 changed")
 
 # 13. Wrong types name the attribute (TypeError), in the constructor, on assignment and in
 # updateAttrs (which then changes nothing); Boost.Python's own message named none.
 from yade.wrapper import MesoBackgroundDamping  # noqa: E402
 
 for label, make in (("MesoMat(k1='abc')", lambda: MesoMat(k1="abc")), ("MesoMat(kp=None)", lambda: MesoMat(kp=None)),
-                    ("MesoMat(adhesion=0)", lambda: MesoMat(adhesion=0)), ("MesoMat(dominant='yes')", lambda: MesoMat(dominant="yes")),
+                    ("MesoMat(adhesion=0)", lambda: MesoMat(adhesion=0)),
+                    ("MesoMat(dominant='yes')", lambda: MesoMat(dominant="yes")),
                     ("MesoMat(density=[1])", lambda: MesoMat(density=[1])),
                     ("Ip2(leverArm=3)", lambda: Ip2_MesoMat_MesoMat_MesoPhys(leverArm=3)),
                     ("MesoBackgroundDamping(gammaB='x')", lambda: MesoBackgroundDamping(gammaB="x"))):
@@ -168,12 +182,14 @@ for name, value in (("k1", "abc"), ("kp", True), ("adhesion", 0), ("frictionAngl
         setattr(m, name, value)
         check(False, f"m.{name} = {value!r} refused", "accepted")
     except TypeError as e:
-        check(str(e).startswith(name + " = ") and (m.k1, m.kp) == (10.0, 50.0), f"m.{name} = {value!r}: TypeError naming it", str(e))
+        check(str(e).startswith(name + " = ") and (m.k1, m.kp) == (10.0, 50.0),
+              f"m.{name} = {value!r}: TypeError naming it", str(e))
 try:
     m.updateAttrs({"kc": 7.0, "gammaO": None})
     check(False, "updateAttrs with a wrong type refused", "accepted")
 except TypeError as e:
-    check(str(e).startswith("gammaO = ") and m.kc == 5.0, "updateAttrs with a wrong type: names it, changes nothing", f"{e}; kc {m.kc}")
+    check(str(e).startswith("gammaO = ") and m.kc == 5.0, "updateAttrs with a wrong type: names it, changes nothing",
+          f"{e}; kc {m.kc}")
 try:
     MesoBackgroundDamping(gammaB=1.0).gammaB = -1.0
     check(False, "gammaB = -1 on assignment refused", "accepted")
@@ -203,9 +219,11 @@ for steps_per_contact in (100, 400):
     # k2 dd^2 / 2 with dd = v dt, v^2 = 2 E0 / m_r, i.e. (omega dt)^2 E0 = (pi / steps)^2 E0.
     tol = (math.pi / steps_per_contact) ** 2
     apart = not O.interactions.has(0, 1) or not O.interactions[0, 1].isReal
-    check(apart and abs(plastic) <= tol * E0 and abs(e1 - E0) <= 1e-12 * E0 and worst <= 1e-9 * E0 and abs(kin - E0) <= tol * E0,
+    check(apart and abs(plastic) <= tol * E0 and abs(e1 - E0) <= 1e-12 * E0 and worst <= 1e-9 * E0
+          and abs(kin - E0) <= tol * E0,
           f"overlapped start, {steps_per_contact} steps per contact: energy stored, not dissipated",
-          f"mesoPlastic/E0 {plastic / E0:.1e}, E(step 1)/E0 - 1 {e1 / E0 - 1:.1e}, drift {worst / E0:.1e}, final E_kin/E0 - 1 {kin / E0 - 1:.1e}")
+          f"mesoPlastic/E0 {plastic / E0:.1e}, E(step 1)/E0 - 1 {e1 / E0 - 1:.1e}, drift {worst / E0:.1e}, final "
+          f"E_kin/E0 - 1 {kin / E0 - 1:.1e}")
 
 
 # 7. The stable step against the integrator's own stability: YADE's leapfrog advances
@@ -227,7 +245,8 @@ for gamma in (0.0, 3e-3):
     ip2 = two_spheres(MesoMat(k1=100, kp=500, gammaN=gamma, density=RHO), overlap=1e-6)
     O.step()
     ref = leapfrog_bound(500, gamma, m_r)
-    check(abs(ip2.stableDt - ref) <= 1e-9 * ref, f"stableDt, normal kp, gamma0 = {gamma}", f"{ip2.stableDt:.9e} vs {ref:.9e}")
+    check(abs(ip2.stableDt - ref) <= 1e-9 * ref, f"stableDt, normal kp, gamma0 = {gamma}",
+          f"{ip2.stableDt:.9e} vs {ref:.9e}")
 # Rolling much stiffer than the normal law: v_r = a'(w1 - w2), torque a' f_r on each sphere, a' = a/2.
 I = 0.4 * MASS * A * A
 ip2 = two_spheres(MesoMat(k1=100, kp=500, kr=1e5, gammaR=1e-3, muR=0.1, density=RHO), overlap=1e-6, six=True)
@@ -240,7 +259,8 @@ ip2.stableDt  # inf before any contact
 O.dt = 1.5 * leapfrog_bound(500, 0, m_r)
 with Stderr() as err:
     O.run(20, True)
-check("exceeds the stable step" in err.text and "#0+#1" in err.text, "O.dt above the stable step warns, naming the contact")
+check("exceeds the stable step" in err.text and "#0+#1" in err.text,
+      "O.dt above the stable step warns, naming the contact")
 ip2 = two_spheres(MesoMat(k1=100, kp=500, density=RHO), v=0.01)
 O.dt = 0.5 * leapfrog_bound(500, 0, m_r)
 with Stderr() as err:
@@ -252,7 +272,8 @@ rev = dict(k1=100.0, kp=500.0, fa=1e-5, kca=50.0, adhesion="reversible", density
 two_spheres(MesoMat(**rev), overlap=-5e-6, v=0.05, dt=1e-6)  # a gap beyond the range 2e-7; YADE's default detection
 with Stderr() as err:
     O.run(300, True)
-check("pull-in over the range" in err.text and err.text.count("pull-in") == 1, "reversible adhesion detected only in contact: warned")
+check("pull-in over the range" in err.text and err.text.count("pull-in") == 1,
+      "reversible adhesion detected only in contact: warned")
 from mesocontact import pair as _pair  # noqa: E402
 
 with Stderr() as err:
@@ -276,8 +297,10 @@ def refused(label, exc, name, f, *args, **kw):
 for dt in (0, -1e-7, float("nan"), float("inf")):
     refused(f"pair.build(dt={dt}) refused", ValueError, "dt = ", pair.build, 1e-3, 0.05, mat, dt=dt)
 refused("pair.build(gap=-1e-3) refused", ValueError, "gap = ", pair.build, 1e-3, 0.05, mat, gap=-1e-3)
-refused("pair.collide at 100 m/s refused (tunnelling)", ValueError, "too fast", lambda: pair.collide(pair.build(1e-3, 100.0, mat)))
-refused("pair.collide with gap = 1 m refused (budget)", ValueError, "max_steps", lambda: pair.collide(pair.build(1e-3, 0.05, mat, gap=1.0)))
+refused("pair.collide at 100 m/s refused (tunnelling)", ValueError, "too fast",
+        lambda: pair.collide(pair.build(1e-3, 100.0, mat)))
+refused("pair.collide with gap = 1 m refused (budget)", ValueError, "max_steps",
+        lambda: pair.collide(pair.build(1e-3, 0.05, mat, gap=1.0)))
 rev = dict(mat, fa=1e-5, kca=50.0, adhesion="reversible")
 refused("pair.collide at 1e-9 m/s across a reversible range, refused (budget)", ValueError, "max_steps",
         lambda: pair.collide(pair.build(1e-3, 1e-9, rev)))
@@ -285,16 +308,19 @@ refused("pair.collide at 1e-9 m/s across a reversible range, refused (budget)", 
 # approach is cheap and ends stuck (the pull-off tail holds it).
 r = pair.collide(pair.build(1e-3, 1e-9, dict(rev, adhesion="jumpIn")))
 check(r.stuck and r.steps < 1e6, "pair.collide at 1e-9 m/s, jump-in: starts close, sticks", f"{r.steps} steps")
-refused("pair.collide after build_wall(v_inf=0) refused", ValueError, "v_inf", lambda: pair.collide(pair.build_wall(1e-3, 0.0, mat)))
+refused("pair.collide after build_wall(v_inf=0) refused", ValueError, "v_inf",
+        lambda: pair.collide(pair.build_wall(1e-3, 0.0, mat)))
 s = pair.build(1e-3, 0.05, mat, gap=2e-5)
 O.bodies[0].state.vel, O.bodies[1].state.vel = (0, 0, 0), (0, 1e-2, 0)  # sideways: they never meet
-refused("a pair that never touches is reported", RuntimeError, "never came into contact", pair.collide, s, max_contact_times=3)
+refused("a pair that never touches is reported", RuntimeError, "never came into contact", pair.collide, s,
+        max_contact_times=3)
 # The start gap and the separation test come from the Ip2's own mixing (a dominant wall here).
 wall = MesoMat(k1=100.0, kp=500.0, fa=4e-5, kca=100.0, adhesion="reversible", dominant=True, density=RHO)
 s = pair.build_wall(1e-3, 0.05, dict(mat, fa=1e-5, kca=50.0, adhesion="reversible"), wall_material=wall)
 O.run(5, True)
 i = O.interactions[s.ids]
-check(i.isReal and s.delta_a == i.phys.deltaA == -4e-5 / 100.0, "pair.build_wall: delta_a of a dominant wall is the contact's deltaA",
+check(i.isReal and s.delta_a == i.phys.deltaA == -4e-5 / 100.0,
+      "pair.build_wall: delta_a of a dominant wall is the contact's deltaA",
       f"{s.delta_a} vs {i.phys.deltaA}")
 O.tags["description"] = "job 1"
 pair.build(1e-3, 0.05, mat)
@@ -305,11 +331,13 @@ check(O.tags["description"] == "job 1", "pair.build keeps O.tags (yade-batch's d
 for depth, warned in ((1.5 * A, True), (0.1 * A, False)):
     two_spheres(MesoMat(k1=100.0, kp=500.0, density=RHO), overlap=depth, dt=1e-7)
     # a second such pair: still one warning
-    O.bodies.append([utils.sphere((0, 5 * A, 0), A, material=0), utils.sphere((2 * A - depth, 5 * A, 0), A, material=0)])
+    O.bodies.append([utils.sphere((0, 5 * A, 0), A, material=0),
+                     utils.sphere((2 * A - depth, 5 * A, 0), A, material=0)])
     with Stderr() as err:
         O.run(3, True)
     said = err.text.count("deeper than the radius")
-    check(said == (1 if warned else 0), f"overlap {depth / A:g} radius at the start: {'one warning' if warned else 'no warning'}",
+    check(said == (1 if warned else 0),
+          f"overlap {depth / A:g} radius at the start: {'one warning' if warned else 'no warning'}",
           err.text.strip()[:160])
 
 finish()

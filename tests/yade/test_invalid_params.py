@@ -53,7 +53,8 @@ for kw, name in cases:
     if len(kw) > 1:
         continue  # combined cases are checked by the constructor, which applies all keywords first
     m = MesoMat(k1=100, kp=500, kc=100)
-    before = {a: getattr(m, a) for a in ("k1", "kp", "kc", "phiF", "fa", "kca", "gammaN", "adhesion", "k2Interpolation")}
+    before = {a: getattr(m, a) for a in ("k1", "kp", "kc", "phiF", "fa", "kca", "gammaN", "adhesion",
+                                         "k2Interpolation")}
     try:
         setattr(m, name, kw[name])
         failures.append(f"assignment {kw}: no exception")
@@ -74,8 +75,10 @@ for name, value in (("poisson", "abc"), ("label", 3), ("id", 1.5), ("young", "x"
         if not str(e).startswith(name):
             failures.append(f"{name} = {value!r}: message does not name it: {e}")
 # Every class of the plugin: a misspelt name, a read-only attribute, a wrong type named; updateAttrs all or nothing.
-for make, name, value, error in ((Ip2_MesoMat_MesoMat_MesoPhys, "K1", 5.0, AttributeError), (Law2_ScGeom_MesoPhys_Meso, "label", 3, TypeError),
-                                 (Ip2_MesoMat_MesoMat_MesoPhys, "stableDt", 1.0, AttributeError), (MesoPhys, "deltaMax", 0.0, AttributeError),
+for make, name, value, error in ((Ip2_MesoMat_MesoMat_MesoPhys, "K1", 5.0, AttributeError),
+                                 (Law2_ScGeom_MesoPhys_Meso, "label", 3, TypeError),
+                                 (Ip2_MesoMat_MesoMat_MesoPhys, "stableDt", 1.0, AttributeError),
+                                 (MesoPhys, "deltaMax", 0.0, AttributeError),
                                  (Ig2_Facet_Sphere_MesoScGeom, "interactionDetectionFactor", [1.0], TypeError),
                                  (MesoBackgroundDamping, "dead", 1, TypeError), (MesoMat, "K1", 5.0, AttributeError),
                                  (MesoPhys, "shearForce", 1e155, TypeError)):

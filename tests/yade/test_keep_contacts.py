@@ -1,4 +1,7 @@
-# ctest (inside yade): MesoContactStore.keep / restore. A settled bed
+# ctest (inside yade): the `MesoContactStore` in one process: keep and restore, `exportContacts` /
+# `importContacts` (bitwise round trip, refused bytes), one store's contacts not in another's.
+#
+# MesoContactStore.keep / restore. A settled bed
 # whose interactions are all erased and remade by the collider (what yade.mpy's split does to the
 # pairs it imports) goes on as if nothing happened once the kept contacts are given back,
 # box-sphere pairs in their original body order included; without them it does not. Remade pairs
@@ -107,7 +110,8 @@ remake()
 store.keep()  # what a collision step keeps on the receiving rank: none of these are real now
 arrived = store.importContacts(data)
 restored = store.restore()
-check(arrived == len(before) and restored == arrived, f"{arrived} contacts through {len(data)} bytes, {restored} given back")
+check(arrived == len(before) and restored == arrived,
+      f"{arrived} contacts through {len(data)} bytes, {restored} given back")
 check(everything() == before, "every attribute of every contact's geometry and physics bitwise as before")
 O.run(300, True)
 dc, dx = difference(state(), serial)

@@ -15,7 +15,8 @@ for lever in ("reduced", "a12"):
     O.reset()
     mat = O.materials.append(w.MesoMat(k1=100.0, kp=500.0, kc=50.0, kt=80.0, gammaT=1e-3, frictionAngle=0.5, kr=40.0,
                                        gammaR=1e-3, muR=0.5, ko=30.0, gammaO=1e-3, muO=0.5, density=2000.0))
-    O.bodies.append([utils.sphere((0, 0, 0), a1, material=mat), utils.sphere((a1 + a2 - delta, 0, 0), a2, material=mat)])
+    O.bodies.append([utils.sphere((0, 0, 0), a1, material=mat),
+                     utils.sphere((a1 + a2 - delta, 0, 0), a2, material=mat)])
     O.bodies[0].state.angVel = Vector3(0.3, 2.0, -1.1)
     O.bodies[1].state.angVel = Vector3(-0.7, 0.4, 1.5)
     O.bodies[1].state.vel = Vector3(0, 0.01, 0.004)
@@ -41,7 +42,8 @@ for lever in ("reduced", "a12"):
     err = max((got1 - expect1).norm(), (got2 - expect2).norm()) / scale
     parts = fT.norm() > 0 and i.phys.rollingForce.norm() > 0 and abs(i.phys.torsionForce) > 0
     ok = parts and err <= 1e-12 and abs(i.phys.leverArm / lever_arm - 1) <= 1e-14 and abs(d / delta - 1) < 0.01
-    check(ok, f"leverArm '{lever}'", f"delta/a2 = {d / a2:.4f}, torques against arm_i = a_i - delta/2, a' = {lever_arm:.6e}: "
-          f"rel. error {err:.1e} (|T1| {got1.norm():.3e}); sliding {fT.norm():.2e}, rolling {i.phys.rollingForce.norm():.2e}, "
-          f"torsion {abs(i.phys.torsionForce):.2e}")
+    check(ok, f"leverArm '{lever}'",
+          f"delta/a2 = {d / a2:.4f}, torques against arm_i = a_i - delta/2, a' = {lever_arm:.6e}: "
+          f"rel. error {err:.1e} (|T1| {got1.norm():.3e}); sliding {fT.norm():.2e}, rolling "
+          f"{i.phys.rollingForce.norm():.2e}, torsion {abs(i.phys.torsionForce):.2e}")
 finish()

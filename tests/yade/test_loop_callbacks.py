@@ -23,7 +23,6 @@ from mesocontact import loop, mpi, pair
 from harness import check, finish
 
 
-
 def one_collision():
     s = pair.build(1e-3, 0.1, dict(k1=100.0, kp=500.0))
     return pair.collide(s).e
@@ -40,7 +39,8 @@ a_scene_runner()
 check(0 < e < 1, f"a pair collision through the registry: e = {e:.4f}")
 # YADE itself makes every engine's label a global name (its label mechanism): the labels only.
 labels = {"pairWatcher", "sceneRunner"}
-left = sorted((set(dir(builtins)) - before["builtins"] - labels) | (set(vars(__main__)) - before["main"] - labels - {"e", "before", "labels"}))
+left = sorted((set(dir(builtins)) - before["builtins"] - labels) | (set(vars(__main__)) - before["main"] - labels
+                                                                    - {"e", "before", "labels"}))
 check(not left, "no name left in builtins or __main__ but the runners' labels", left)
 
 # A registered callable against a plain PyRunner of the same period (its own counter in __main__).
@@ -50,8 +50,10 @@ __main__._plain_count = 0
 O.engines = [loop.runner(lambda: calls.append(O.iter), 3, "counter"),
              w.PyRunner(iterPeriod=3, command="import __main__; __main__._plain_count += 1")]
 O.run(20, True)
-check(len(calls) == __main__._plain_count > 0, f"called {len(calls)} times in 20 steps, as a plain PyRunner ({__main__._plain_count})")
-check(O.engines[0].label == "counter" and "counter" in loop.registered(), "the PyRunner carries the label it is registered under")
+check(len(calls) == __main__._plain_count > 0,
+      f"called {len(calls)} times in 20 steps, as a plain PyRunner ({__main__._plain_count})")
+check(O.engines[0].label == "counter" and "counter" in loop.registered(),
+      "the PyRunner carries the label it is registered under")
 other, first, plain_first = [], len(calls), __main__._plain_count
 loop.register("counter", lambda: other.append(O.iter))
 O.run(20, True)
@@ -68,19 +70,23 @@ try:
         O.step()
     check(False, "an unregistered label stops the run", "ran")
 except Exception as e:  # noqa: BLE001 - the message is what is checked
-    check("counter" in str(e) and "registered" in str(e), "an unregistered label stops the run, naming it", str(e)[:160])
+    check("counter" in str(e) and "registered" in str(e), "an unregistered label stops the run, naming it",
+          str(e)[:160])
 for label, fn, error in (("two words", print, ValueError), (5, print, ValueError), ("ok", None, TypeError)):
     try:
         loop.register(label, fn)
         check(False, f"register({label!r}, {fn!r}) refused", "accepted")
     except error as e:
-        check(str(e).startswith("label" if error is ValueError else "fn"), f"register({label!r}, ...) refused naming it", str(e))
+        check(str(e).startswith("label" if error is ValueError else "fn"),
+              f"register({label!r}, ...) refused naming it", str(e))
 
 # mesocontact.mpi replaces two yade.mpy functions: their parameters are checked first.
 good = dict(parallelCollide=lambda: None, reallocateBodiesToSubdomains=lambda _filter=None, blocking=True: None)
 check(mpi.check_mpy(types.SimpleNamespace(**good)) == config.version, "this YADE's mpy signatures pass")
-for change, words in ((dict(parallelCollide=lambda steps: None), f"parallelCollide of YADE {config.version} is (steps)"),
-                      (dict(reallocateBodiesToSubdomains=None), f"reallocateBodiesToSubdomains of YADE {config.version} is missing")):
+for change, words in ((dict(parallelCollide=lambda steps: None),
+                       f"parallelCollide of YADE {config.version} is (steps)"),
+                      (dict(reallocateBodiesToSubdomains=None),
+                       f"reallocateBodiesToSubdomains of YADE {config.version} is missing")):
     try:
         mpi.check_mpy(types.SimpleNamespace(**dict(good, **change)))
         check(False, f"an mpy with {words} refused", "accepted")
@@ -135,7 +141,7 @@ finally:
     print("FINALLY", flush=True)
 result.update(final=outcome(), reference=reference, seen=seen)
 print("RESULT " + json.dumps(result), flush=True)
-'''
+'''  # noqa: E501 (the child's script, kept as it was)
 child = os.path.join(tempfile.mkdtemp(prefix="loop-stop-"), "child.py")
 with open(child, "w") as f:
     f.write(CHILD)
@@ -147,7 +153,8 @@ if not os.path.exists(launcher):
 def child_run(how, fail_at=5):
     t0 = time.time()
     try:
-        p = subprocess.run([launcher, "-j1", "-n", "-x", child, how, str(fail_at)], capture_output=True, text=True, timeout=120)
+        p = subprocess.run([launcher, "-j1", "-n", "-x", child, how, str(fail_at)], capture_output=True, text=True,
+                           timeout=120)
     except subprocess.TimeoutExpired as e:
         out = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or "")
         return None, out, time.time() - t0
@@ -180,9 +187,11 @@ for how in ("exit-run", "exit-step"):
     rc, text, secs = child_run(how)
     done = [line for line in text.splitlines() if line.startswith("ATEXIT ")]
     check(rc == 7 and "RESULT " not in text and secs < 120,
-          f"SystemExit(7) in a callback under {'O.run' if how == 'exit-run' else 'O.step()'} ends the process with code 7",
+          f"SystemExit(7) in a callback under {'O.run' if how == 'exit-run' else 'O.step()'} ends the "
+          f"process with code 7",
           f"rc {rc} ({'timed out: hung' if rc is None else 'exited'}) after {secs:.0f} s")
     if how == "exit-run":
         check("FINALLY" in text and done and json.loads(done[-1][7:])[0] == 6,
-              "... as sys.exit does in the script: finally and atexit run, the step completed (O.iter 6)", done[-1:] or text[-200:])
+              "... as sys.exit does in the script: finally and atexit run, the step completed (O.iter 6)",
+              done[-1:] or text[-200:])
 finish()

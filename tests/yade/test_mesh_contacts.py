@@ -48,7 +48,8 @@ floor = [[(-L, -L, 0), (L, -L, 0), (L, L, 0)], [(-L, -L, 0), (L, L, 0), (-L, L, 
 large = [[(-4 * L, -4 * L, 0), (4 * L, -4 * L, 0), (0, 4 * L, 0)]]
 gap = 1.5 * MAT["fa"] / MAT["kca"]
 
-for where, xy in (("over the diagonal", (0.0, 0.0)), ("over one facet, 0.05 R from the diagonal", (0.05 * R / math.sqrt(2), -0.05 * R / math.sqrt(2))),
+for where, xy in (("over the diagonal", (0.0, 0.0)),
+                  ("over one facet, 0.05 R from the diagonal", (0.05 * R / math.sqrt(2), -0.05 * R / math.sqrt(2))),
                   ("over the shared corner (-L, -L)", (-L + 0.2 * R, -L + 0.25 * R))):
     start = (xy[0], xy[1], R + gap)
     most, v = fall(floor, start)

@@ -1,4 +1,12 @@
 # ctest (inside yade; also run with -j2): a contact keeps its history across a mesh's edges and
+# vertices (also run with two threads: `yade.mesh_history_j2`): a sphere pressed onto the limit
+# branch and dragged over two coplanar facets, through the vertex of four and along a strip of 120
+# feels the force one large facet gives at every step (to 1e-9 of the force), with one contact and
+# no warning; a save and load 1.5 R from the facet that made the contact goes on bitwise
+# (`MesoPhys.meshFacet`); a belt of facets carries the sphere as one large moving facet; a 174° fold
+# crossed and back keeps one contact per face, none missing.
+#
+# A contact keeps its history across a mesh's edges and
 # vertices (issue #57). A sphere is pressed onto the limit branch, partly unloaded, then dragged
 # slowly (prescribed x, y velocity; z free under a constant force) over a floor of facets: across the
 # diagonal two coplanar facets share (a geom.facetBox floor), and through the vertex four facets
@@ -26,7 +34,7 @@ four = [[(0, 0, 0), (L, -L, 0), (L, L, 0)], [(0, 0, 0), (L, L, 0), (-L, L, 0)],
 large = [[(-4 * L, -4 * L, 0), (4 * L, -4 * L, 0), (0, 4 * L, 0)]]
 S = 0.1 * R  # a strip of small squares along x, each split on its diagonal: many hand-overs
 strip = [t for k in range(-30, 30) for t in ([(k * S, -S, 0), ((k + 1) * S, -S, 0), ((k + 1) * S, S, 0)],
-                                              [(k * S, -S, 0), ((k + 1) * S, S, 0), (k * S, S, 0)])]
+                                             [(k * S, -S, 0), ((k + 1) * S, S, 0), (k * S, S, 0)])]
 
 
 def sphere_on(facets, centre, blocked):
@@ -67,7 +75,8 @@ def drag(facets, start, direction, distance, save_at=None):
                 O.loadTmp("mesh")
                 O.forces.setPermF(ball, (0, 0, -HOLD))  # not saved with the scene
             O.step()
-            real = [O.interactions[i, ball] for i in ids if O.interactions.has(i, ball) and O.interactions[i, ball].isReal]
+            real = [O.interactions[i, ball] for i in ids if O.interactions.has(i, ball)
+                    and O.interactions[i, ball].isReal]
             most = max(most, len(real))
             f = [0.0, 0.0, 0.0]
             for i in real:
@@ -91,9 +100,11 @@ for name, mesh, start, direction, distance, save_fraction in cases:
     f_mesh, most, seen, err = drag(mesh, start, direction, distance)
     f_ref, most_ref, _, err_ref = drag(large, start, direction, distance)
     check(most == 1 and most_ref == 1, f"{name}: one contact at every step", f"at most {most} (large facet {most_ref})")
-    check(len(seen - {-1}) >= 1, f"{name}: the contact travelled to another facet (meshFacet)", f"{len(seen - {-1})} others")
+    check(len(seen - {-1}) >= 1, f"{name}: the contact travelled to another facet (meshFacet)",
+          f"{len(seen - {-1})} others")
     gap = max(math.dist(a, c) for a, c in zip(f_mesh, f_ref))
-    check(gap <= 1e-9 * PRESS, f"{name}: the force follows the large facet's at every step", f"largest difference {gap:.3g} N")
+    check(gap <= 1e-9 * PRESS, f"{name}: the force follows the large facet's at every step",
+          f"largest difference {gap:.3g} N")
     for j, axis in ((2, "normal (z)"), (0, "sliding (x)")):
         dm, dr = largest_step(f_mesh, j), largest_step(f_ref, j)
         print(f"   {name}: largest one-step change of the {axis} force {dm:.4g} N (one large facet {dr:.4g} N)")
@@ -126,7 +137,8 @@ half = [[(-4 * L, -4 * L, 0), (0, -4 * L, 0), (0, 4 * L, 0)], [(0, -4 * L, 0), (
 still = [[(-4 * L, -4 * L, -L), (-3.9 * L, -4 * L, -L), (-3.9 * L, -3.9 * L, -L)]]  # a still facet far away
 v_walked, walked = belt(half)
 v_one, _ = belt(still + large)
-check(walked and abs(v_walked - v_one) <= 1e-6 * abs(v_one), "a contact walked onto a moving facet is carried as by one large moving facet",
+check(walked and abs(v_walked - v_one) <= 1e-6 * abs(v_one),
+      "a contact walked onto a moving facet is carried as by one large moving facet",
       f"y velocity {v_walked:.9g} m/s (one large facet {v_one:.9g} m/s)")
 
 
@@ -160,12 +172,15 @@ def fold(first, degrees=3.0):
                 inside = all(((y - x).cross(q - x)).dot(nrm) > 1e-9 * R * R for x, y in ((a, u), (u, v), (v, a)))
                 if inside and R - abs(nrm.dot(c - a)) > 1e-3 * R and f not in on:
                     uncovered += 1
-                    print(f"   facet {f} overlapped {(R - abs(nrm.dot(c - a))) / R:.4g} R without a contact at step {k} of {2 * n}")
+                    print(f"   facet {f} overlapped {(R - abs(nrm.dot(c - a))) / R:.4g} R without a contact at "
+                          f"step {k} of {2 * n}")
     return doubled, uncovered, err.text
 
 
 for first in (0, 1):
     doubled, uncovered, err = fold(first)
-    check(doubled == 0 and uncovered == 0, f"a shallow concave fold crossed and back (facet {first} of the smaller id): one contact per facet, "
-          "none missing", f"{doubled} steps with two contacts on one facet, {uncovered} with a facet overlapped and no contact")
+    check(doubled == 0 and uncovered == 0,
+          f"a shallow concave fold crossed and back (facet {first} of the smaller id): one contact per facet, "
+          "none missing",
+          f"{doubled} steps with two contacts on one facet, {uncovered} with a facet overlapped and no contact")
 finish()

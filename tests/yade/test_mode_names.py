@@ -10,14 +10,16 @@ from harness import check, finish
 
 modes = w.MesoMat.adhesionModes()
 check(modes == tuple(theory.ADHESION_MODES), f"theory's adhesion modes are the C++ table's {modes}")
-check(w.MesoPhys.branchNames() == tuple(scene_names.BRANCHES), f"scene_names.BRANCHES are the C++ branches {w.MesoPhys.branchNames()}")
+check(w.MesoPhys.branchNames() == tuple(scene_names.BRANCHES),
+      f"scene_names.BRANCHES are the C++ branches {w.MesoPhys.branchNames()}")
 
 try:
     w.MesoMat(adhesion="glue")
     check(False, "an unknown mode is refused")
 except ValueError as e:
     listed = [m for m in modes if f"'{m}'" in str(e)]
-    check(str(e).startswith("adhesion") and listed == list(modes), f"an unknown mode is refused, every mode listed: {e}")
+    check(str(e).startswith("adhesion") and listed == list(modes),
+          f"an unknown mode is refused, every mode listed: {e}")
 
 doc = w.MesoMat.adhesion.__doc__ or ""
 check(all(f"'{m}'" in doc for m in modes), "MesoMat.adhesion's doc names every mode")

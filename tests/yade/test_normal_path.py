@@ -1,4 +1,9 @@
-# ctest (inside yade): theory.normal_force_path is the law of pkg/core/NormalLaw.hpp. One sphere is
+# ctest (inside yade): a sphere moved against another under displacement control along a cyclic path
+# (every branch, the −kc branch twice, separation and a new contact): YADE's hysteretic force is
+# `theory.normal_force_path` on the recorded overlaps to 64 ulps of the largest force (measured: 0
+# with 'linear', 0.2 ulps with 'sqrt').
+#
+# Theory.normal_force_path is the law of pkg/core/NormalLaw.hpp. One sphere is
 # moved against a fixed one under displacement control (its position set every step; no damping,
 # no tangential, rolling or torsion springs, no non-contact adhesion) along a cyclic path: loading
 # to 0.6 deltaMax^p, unloading into tension past the pull-off onto the -kc branch, re-loading from

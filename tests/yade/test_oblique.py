@@ -31,7 +31,9 @@ res, vel, w = impact(vn, vt, 0.5)
 vc = vel[0] - r * w[1]  # contact-point velocity along x (w about y; contact point below the centre)
 err_stick = abs(vc - (-vt)) / vt
 ok = not res.stuck and err_stick <= 1e-3 and abs(res.e - 1) < 1e-3
-print(("ok   " if ok else "FAIL ") + f"stick: contact-point velocity {vt:.4f} -> {vc:.6f} (analytic {-vt}), rel. error {err_stick:.1e}; e_n = {res.e:.6f}")
+print(("ok   " if ok else "FAIL ")
+      + f"stick: contact-point velocity {vt:.4f} -> {vc:.6f} (analytic {-vt}), rel. error "
+        f"{err_stick:.1e}; e_n = {res.e:.6f}")
 if not ok:
     failures.append("stick")
 
@@ -44,7 +46,8 @@ err_slide = abs(dv - dv_th) / dv_th
 dw_th = dv_th * m * r / (0.4 * m * r * r)  # spin-up by the same impulse at arm a (a - delta/2 ~ a)
 err_spin = abs(w[1] - dw_th) / dw_th  # friction below the centre spins it up about +y
 ok = err_slide <= 1e-3 and err_spin <= 2e-3
-print(("ok   " if ok else "FAIL ") + f"slide: tangential velocity loss {dv:.6e} (analytic mu (1+e) v_n = {dv_th:.6e}), rel. error {err_slide:.1e}; "
+print(("ok   " if ok else "FAIL ")
+      + f"slide: tangential velocity loss {dv:.6e} (analytic mu (1+e) v_n = {dv_th:.6e}), rel. error {err_slide:.1e}; "
       f"spin-up rel. error {err_spin:.1e}")
 if not ok:
     failures.append("slide")
@@ -54,7 +57,7 @@ if not ok:
 # centrifugal force stretches the contact, the orbital angular velocity then lags the spin
 # (angular momentum), and the contact slides a little; over one radian that force grows as w^2.
 # A kinematic error (a spring not following the frame, a wrong arm) would not fall with w.
-from yade import wrapper as wr
+from yade import wrapper as wr  # noqa: E402
 
 mat = dict(k1=1e3, kp=5e3, kc=1e3, phiF=0.1, fa=1e-3, kca=1e3, adhesion="jumpIn", gammaN=0.1, kt=400.0, gammaT=0.02,
            kr=200.0, gammaR=0.01, muR=0.2, ko=200.0, gammaO=0.01, muO=0.2, frictionAngle=0.5)
@@ -63,7 +66,8 @@ mat = dict(k1=1e3, kp=5e3, kc=1e3, phiF=0.1, fa=1e-3, kca=1e3, adhesion="jumpIn"
 def rigid_rotation(steps_per_contact, rate):
     s = pair.build(r, 0.05, mat, steps_per_contact=steps_per_contact)
     f = O.engines[2].geomDispatcher.functors[0]
-    O.engines[2].geomDispatcher.functors = [wr.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=f.interactionDetectionFactor)]
+    O.engines[2].geomDispatcher.functors = [
+        wr.Ig2_Sphere_Sphere_ScGeom6D(interactionDetectionFactor=f.interactionDetectionFactor)]
     O.run(int(100 * s.contact_time / O.dt), True)
     i = O.interactions[s.ids[0], s.ids[1]]
     b1, b2 = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
@@ -88,7 +92,8 @@ _, _, fine = rigid_rotation(800, 20.0)
 ratio = fast[0] / slow[0] if slow[0] > 0 else math.inf
 ok = at_rest and fast[0] <= 1e-3 * level and fast[1] == 0 and fast[2] == 0 and ratio > 3.5 \
     and abs(fine[0] - fast[0]) <= 0.05 * fast[0]
-print(("ok   " if ok else "FAIL ") + f"rigid rotation by 1 rad of a stuck pair (at rest before: {at_rest}): max |f_t| = {fast[0]:.2e} N = "
+print(("ok   " if ok else "FAIL ")
+      + f"rigid rotation by 1 rad of a stuck pair (at rest before: {at_rest}): max |f_t| = {fast[0]:.2e} N = "
       f"{fast[0] / level:.1e} of the Coulomb level at |w| = {Vector3(0.3, -0.5, 0.8).norm() * 20:.1f} rad/s; "
       f"{slow[0]:.2e} N at half the rate (ratio {ratio:.2f}, centrifugal ~ w^2), {fine[0]:.2e} N with dt/2; "
       f"max |f_r| = {fast[1]:.1e}, |f_o| = {fast[2]:.1e}")

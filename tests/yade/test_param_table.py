@@ -1,7 +1,9 @@
-# ctest (inside yade): the parameters generated from pkg/core/MesoParamTable.hpp. Every number of a
-# MesoMat reaches its contacts by the mixing rule the documentation states (rules written out here,
-# independently of the table), is refused by name when invalid, and survives O.save/O.load in both
-# formats; a file of the first PairParams layout (version 0, without phiD) still loads.
+# ctest (inside yade): the parameters generated from `pkg/core/MesoParamTable.hpp`: every number of
+# `MesoMat` (the list is read from `MesoMat` itself, so a new parameter without a rule here fails)
+# reaches its contacts by the rule the docs state, written out here independently (harmonic,
+# arithmetic or smaller mean), `muD = phiD muS`, is refused by name when invalid, kept by
+# `O.save`/`O.load` in both formats, and a file of the first `PairParams` layout
+# (`tests/yade/golden/pairparams_v0.*`, written by 20d0512) loads with `phiD` recovered.
 import json
 import math
 import os
@@ -24,8 +26,11 @@ RULES = {"k1": (harmonic, 100.0, 150.0), "kp": (harmonic, 500.0, 650.0), "kc": (
          "phiF": (lambda x, y: 0.5 * (x + y), 0.1, 0.3), "fa": (harmonic, 1e-4, 3e-4), "kca": (harmonic, 100.0, 40.0),
          "gammaN": (harmonic, 1e-3, 3e-3), "phiD": (min, 0.9, 0.6), "kt": (harmonic, 40.0, 70.0),
          "gammaT": (harmonic, 1e-3, 4e-3), "kr": (harmonic, 20.0, 35.0), "gammaR": (harmonic, 5e-4, 2e-3),
-         "muR": (min, 0.3, 0.1), "ko": (harmonic, 25.0, 10.0), "gammaO": (harmonic, 6e-4, 1e-3), "muO": (min, 0.05, 0.2)}
-numbers = sorted(k for k, v in w.MesoMat().dict().items() if isinstance(v, float) and k not in ("density", "young", "poisson", "frictionAngle"))
+         "muR": (min, 0.3, 0.1), "ko": (harmonic, 25.0, 10.0), "gammaO": (harmonic, 6e-4, 1e-3),
+         "muO": (min, 0.05, 0.2)}
+numbers = sorted(k for k, v in w.MesoMat().dict().items() if isinstance(v, float) and k not in ("density", "young",
+                                                                                                "poisson",
+                                                                                                "frictionAngle"))
 check(numbers == sorted(RULES), "every number of MesoMat has its rule here", f"MesoMat: {numbers}")
 
 mat_a = dict({k: v[1] for k, v in RULES.items()}, adhesion="reversible", density=2000.0, frictionAngle=math.atan(0.5))
@@ -36,7 +41,8 @@ i = contact(mat_a, mat_b, 200, angVel=(1, 2, 3), vel=(0.01, 0.003, 0), overlap=2
 p = i.phys
 for name, (rule, x, y) in RULES.items():
     want = rule(x, y)
-    check(abs(getattr(p, name) - want) <= 1e-15 * abs(want), f"MesoPhys.{name} = its rule of A and B", f"{getattr(p, name)!r} vs {want!r}")
+    check(abs(getattr(p, name) - want) <= 1e-15 * abs(want), f"MesoPhys.{name} = its rule of A and B",
+          f"{getattr(p, name)!r} vs {want!r}")
 mu_s = min(math.tan(mat_a["frictionAngle"]), math.tan(mat_b["frictionAngle"]))
 check(p.muS == mu_s, "MesoPhys.muS = the smaller tan(frictionAngle)", f"{p.muS!r} vs {mu_s!r}")
 mixed = O.engines[2].physDispatcher.functors[0].mixedParameters(O.materials[0], O.materials[1])

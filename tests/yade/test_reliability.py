@@ -1,10 +1,19 @@
-# ctest (inside yade): what a user could reach that crashed or passed silently (issue #49).
+# ctest (inside yade): what a user could reach that crashed or passed silently (issue #49): a
+# contact's own phys or geometry assigned back from Python, and another contact's phys, while
+# contacts end under `O.run` (each aborted the process: released without the GIL); contacts restored
+# onto a loop that makes another geometry class (refused, nothing restored); the facet and wall
+# functors given a geometry of another class; slivers (two coincident or three collinear vertices)
+# detected; `Wall.axis` 3; `interactionDetectionFactor` outside [1, ∞). Each item runs alone (`yade
+# -n -x tests/yade/test_reliability.py item2`) to show it before a fix.
+#
+# What a user could reach that crashed or passed silently (issue #49).
 # - a valid MesoPhys assigned from Python (a contact's own, or another contact's) while contacts end
 #   under O.run: the process aborted (the Python object released without the GIL); now the own one
 #   runs on unchanged and is released safely, another contact's is dropped with a warning and remade;
 # - contacts restored onto pairs whose loop makes another geometry class: YADE's functor cast it to
 #   the wrong type (segfault); now restore() refuses, naming the pair and both classes, and restores
-#   nothing; likewise contacts whose parameters the bodies' materials no longer give (item9); the facet and wall functors replace a geometry of another class instead of casting it;
+#   nothing; likewise contacts whose parameters the bodies' materials no longer give (item9); the facet
+#   and wall functors replace a geometry of another class instead of casting it;
 # - Wall.axis outside 0-2 read pos[3]: the wall functor makes no contact and says so, set_detection
 #   refuses it;
 # - interactionDetectionFactor of the surface functors below 1 or not finite: spheres passed through;
@@ -68,9 +77,11 @@ def item1():
         i.phys = i.phys
         with Stderr() as err:
             O.run(3000, True)
-        check(not O.interactions.has(0, 1) or not O.interactions[0, 1].isReal, "own phys re-assigned: the contact ended under O.run")
+        check(not O.interactions.has(0, 1) or not O.interactions[0, 1].isReal,
+              "own phys re-assigned: the contact ended under O.run")
         check(outcome() == reference and "WARNING" not in err.text,
-              f"own phys re-assigned ({'tangential' if tangential else 'plain'}): the collision bitwise as without, no warning")
+              f"own phys re-assigned ({'tangential' if tangential else 'plain'}): the collision bitwise as "
+              f"without, no warning")
 
 
 # 2. Another contact's phys assigned to a contact: one history for two contacts. It is dropped and
@@ -84,11 +95,14 @@ def item2():
         O.step()
         O.step()
     p1, p2 = O.interactions[0, 1].phys, O.interactions[0, 2].phys
-    check("of another contact" in err.text and err.text.count("WARNING") == 1, "another contact's phys: warned once", err.text.strip()[:120])
+    check("of another contact" in err.text and err.text.count("WARNING") == 1, "another contact's phys: warned once",
+          err.text.strip()[:120])
     check(p1 is not p2 and p1.deltaMax > 0 and p2.deltaMax > 0 and p2.deltaMax < p1.deltaMax,
-          "another contact's phys: remade, each contact its own history", f"deltaMax {p1.deltaMax:.3e} {p2.deltaMax:.3e}")
+          "another contact's phys: remade, each contact its own history",
+          f"deltaMax {p1.deltaMax:.3e} {p2.deltaMax:.3e}")
     O.run(3000, True)
-    check(not any(O.interactions.has(0, k) and O.interactions[0, k].isReal for k in (1, 2)), "both contacts ended under O.run, process alive")
+    check(not any(O.interactions.has(0, k) and O.interactions[0, k].isReal for k in (1, 2)),
+          "both contacts ended under O.run, process alive")
 
 
 # 3. The contact store across geometry classes: contacts exported with Ig2_Sphere_Sphere_ScGeom,
@@ -112,7 +126,8 @@ def item3():
               "ScGeom restored onto a ScGeom6D loop: refused, naming the pair and both classes", str(e)[:160])
     O.run(10, True)
     i = O.interactions[0, 1]
-    check(type(i.geom).__name__ == "ScGeom6D" and math.isfinite(i.phys.normalForce.norm()), "after the refusal the loop goes on with its own geometry")
+    check(type(i.geom).__name__ == "ScGeom6D" and math.isfinite(i.phys.normalForce.norm()),
+          "after the refusal the loop goes on with its own geometry")
     # the same classes still restore
     pair(six=True)
     until_touch(1)
@@ -120,7 +135,8 @@ def item3():
     store.keep()
     O.interactions.clear()
     O.engines[1]()  # the collider makes the candidate pair anew, without geometry
-    check(store.restore() == 1 and type(O.interactions[0, 1].geom).__name__ == "ScGeom6D", "ScGeom6D restored onto a ScGeom6D loop")
+    check(store.restore() == 1 and type(O.interactions[0, 1].geom).__name__ == "ScGeom6D",
+          "ScGeom6D restored onto a ScGeom6D loop")
     # item 10: ids given as a dict (whose ids: keys or values?) refused; a set taken; bytes with a tail refused
     O.run(2, True)
     try:
@@ -162,14 +178,16 @@ def item4():
         O.interactions[0, 1].geom = w.IGeom()  # from Python: released in YADE's thread it aborted the process
         O.run(5, True)
         i = O.interactions[0, 1]
-        check(type(i.geom).__name__ == made and abs(i.geom.penetrationDepth - 0.1e-3) < 1e-6, f"{cls} given an IGeom: a new {made}",
+        check(type(i.geom).__name__ == made and abs(i.geom.penetrationDepth - 0.1e-3) < 1e-6,
+              f"{cls} given an IGeom: a new {made}",
               f"{type(i.geom).__name__} overlap {i.geom.penetrationDepth:.3e}")
     # a sphere's own geometry assigned back from Python, then the contact ends under O.run
     pair()
     until_touch(1)
     O.interactions[0, 1].geom = O.interactions[0, 1].geom
     O.run(3000, True)
-    check(not O.interactions[0, 1].isReal if O.interactions.has(0, 1) else True, "own geometry re-assigned: the contact ended under O.run")
+    check(not O.interactions[0, 1].isReal if O.interactions.has(0, 1) else True,
+          "own geometry re-assigned: the contact ended under O.run")
 
 
 # 5. Slivers: a facet with two coincident vertices (a segment) and one with three collinear ones.
@@ -179,7 +197,8 @@ def item5():
         on_facet(w.Ig2_Facet_Sphere_MesoScGeom(), vertices)
         O.step()
         real = O.interactions.has(0, 1) and O.interactions[0, 1].isReal
-        check(real and abs(O.interactions[0, 1].geom.penetrationDepth - 0.1e-3) < 1e-9, f"facet with {label}: detected with its overlap",
+        check(real and abs(O.interactions[0, 1].geom.penetrationDepth - 0.1e-3) < 1e-9,
+              f"facet with {label}: detected with its overlap",
               f"real {real}")
     # A vertex that is not finite: no collider finds the facet (its box is NaN); set_detection says so.
     on_facet(w.Ig2_Facet_Sphere_MesoScGeom(), ((-2e-3, -2e-3, 0), (2e-3, -2e-3, 0), (0, float("nan"), 0)))
@@ -187,18 +206,21 @@ def item5():
         scene.set_detection()
         check(False, "a facet with a NaN vertex: set_detection refuses it")
     except ValueError as e:
-        check("#0" in str(e) and "not finite" in str(e), "a facet with a NaN vertex: set_detection refuses it, naming the body", str(e))
+        check("#0" in str(e) and "not finite" in str(e),
+              "a facet with a NaN vertex: set_detection refuses it, naming the body", str(e))
 
 
 # 6. Wall.axis outside 0-2: no contact, a warning naming the value; set_detection refuses it.
 def item6():
     O.reset()
-    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=100, phiF=0.1, density=RHO, fa=1e-5, kca=100, adhesion="reversible"))
+    m = O.materials.append(w.MesoMat(k1=100, kp=500, kc=100, phiF=0.1, density=RHO, fa=1e-5, kca=100,
+                                     adhesion="reversible"))
     O.bodies.append(utils.wall(0, axis=2, material=m))
     O.bodies.append(utils.sphere((0, 0, 0.9e-3), A, material=m))
     O.bodies[0].shape.axis = 3
-    O.engines = [w.ForceResetter(), w.InteractionLoop([w.Ig2_Wall_Sphere_MesoScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
-                                                      [w.Law2_ScGeom_MesoPhys_Meso()]), w.NewtonIntegrator(damping=0)]
+    O.engines = [w.ForceResetter(),
+                 w.InteractionLoop([w.Ig2_Wall_Sphere_MesoScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]), w.NewtonIntegrator(damping=0)]
     O.dt = 1e-6
     with Stderr() as err:
         try:
@@ -206,8 +228,10 @@ def item6():
             made = O.interactions.has(0, 1) and O.interactions[0, 1].isReal
         except Exception:
             made = False
-    check(not made and "Wall.axis = 3 is invalid" in err.text, "Wall.axis 3: no contact, warned", err.text.strip()[:120])
-    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Wall_Aabb()]), O.engines[1], O.engines[2]]
+    check(not made and "Wall.axis = 3 is invalid" in err.text, "Wall.axis 3: no contact, warned",
+          err.text.strip()[:120])
+    O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Wall_Aabb()]), O.engines[1],
+                 O.engines[2]]
     try:
         scene.set_detection()
         check(False, "set_detection refuses Wall.axis 3")
@@ -233,7 +257,8 @@ def item7():
                 if "interactionDetectionFactor" in str(e):
                     refused.append(bad)
         f.interactionDetectionFactor = 1.0
-        check(len(refused) == 14 and f.interactionDetectionFactor == 1.0, f"{cls}.interactionDetectionFactor: 7 bad values refused on "
+        check(len(refused) == 14 and f.interactionDetectionFactor == 1.0,
+              f"{cls}.interactionDetectionFactor: 7 bad values refused on "
               "assignment and in the constructor, the old value kept; 1 accepted", f"refused {len(refused)} of 14")
         named = []  # wrong types name the attribute (Boost said "None.None(..., complex) did not match C++ signature")
         for bad in (None, 3 + 0j, "1.2", [1.2]):
@@ -339,12 +364,15 @@ def item10():
     fail = start + 10
     _, error, text = run(fail)
     check(error is not None and "'probeFailing' raised at iteration %d" % fail in error and "probe failure" in error,
-          "a raising callback stops the run with an error naming the runner, the iteration and the error", str(error)[:160])
-    check(O.iter == fail + 1, "the failing step was completed (O.iter advanced past it)", f"O.iter {O.iter}, failed at {fail}")
+          "a raising callback stops the run with an error naming the runner, the iteration and the error",
+          str(error)[:160])
+    check(O.iter == fail + 1, "the failing step was completed (O.iter advanced past it)",
+          f"O.iter {O.iter}, failed at {fail}")
     check("probe failure" in text, "the error is printed when it happens", text[:120])
     loop.register("probeFailing", lambda: seen.append(O.iter))  # the fix
     O.run(start + 40 - O.iter, True)
-    check(outcome() + [(O.iter,)] == reference, "resuming after the fix repeats no step: the run without the failure, to the bit")
+    check(outcome() + [(O.iter,)] == reference,
+          "resuming after the fix repeats no step: the run without the failure, to the bit")
     check([e for e in O.engines if isinstance(e, w.PyRunner) and "raise_pending" in e.command] == [],
           "the engine that raised the error is gone")
 

@@ -1,6 +1,7 @@
-# ctest (inside yade): pair collisions against the closed form, docs/model.md §6, over all four
-# regimes; eta = 4, beta = 1 and three parameter sets of our own (unequal radii, unlike
-# materials); fa > 0 in both adhesion modes; both k2 interpolations; sticking overlaps.
+# ctest (inside yade): YADE pair collisions against the closed form (`docs/model.md` §6), |Δe| ≤
+# 1e-3, over all four regimes: eta = 4, beta = 1 and three parameter sets of our own (unequal radii,
+# unlike materials); fa > 0 in both adhesion modes; both k2 interpolations; sticking overlaps
+# against Eqs. 36/38 within 1e-3 δmax^p.
 import math
 
 from mesocontact import pair, params, theory
@@ -71,7 +72,8 @@ for alpha in (0.042, 0.42):  # Fig. 5: fa from alpha at v_i = 0.01 m/s; kca = kc
               dict(paper, fa=fa, kca=100.0, adhesion=mode), r)
 # Own sets: unequal radii and densities; stiffer and more plastic; unlike materials with sqrt.
 own1 = dict(k1=1e3, kp=1e4, kc=500.0, phiF=0.05)  # eta = 9, beta = 0.5 > beta* = 1/8
-sweep("own1 eta9 unequal radii", [0.05, 0.3, 0.6, 1.0, 1.5, 4.0], own1, 1e-3, r2=2.5e-3, density=2500.0, density2=1500.0)
+sweep("own1 eta9 unequal radii", [0.05, 0.3, 0.6, 1.0, 1.5, 4.0], own1, 1e-3, r2=2.5e-3, density=2500.0,
+      density2=1500.0)
 own2 = dict(k1=50.0, kp=200.0, kc=30.0, phiF=0.2, fa=2e-5, kca=40.0, adhesion="reversible")
 sweep("own2 eta3 reversible", [0.01, 0.1, 0.4, 0.8, 1.1, 2.0], own2, 2e-3, r2=1e-3)
 own3a = dict(k1=200.0, kp=4000.0, kc=100.0, phiF=0.08, fa=1e-4, kca=200.0, adhesion="jumpIn", k2Interpolation="sqrt")

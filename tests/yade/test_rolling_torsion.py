@@ -58,7 +58,9 @@ alpha = -fit_slope(ts, ys)
 alpha_th = arm * mat["phiD"] * mat["muO"] * lv / I
 err = abs(alpha - alpha_th) / alpha_th
 ok = err <= 1e-3 and b.angVel[2] > 0
-print(("ok   " if ok else "FAIL ") + f"spin: deceleration {alpha:.6e} rad/s2, a' mu_o,d level / I = {alpha_th:.6e}, rel. error {err:.1e}", flush=True)
+print(("ok   " if ok else "FAIL ")
+      + f"spin: deceleration {alpha:.6e} rad/s2, a' mu_o,d level / I = {alpha_th:.6e}, rel. error {err:.1e}",
+      flush=True)
 if not ok:
     failures.append("spin")
 
@@ -76,7 +78,8 @@ acc_th = arm * (arm * mat["phiD"] * mat["muR"] * lv) / (I + m * arm * arm)
 err = abs(acc - acc_th) / acc_th
 slip = abs(b.vel[0] - arm * b.angVel[1]) / b.vel[0]
 ok = err <= 1e-3 and slip < 1e-3
-print(("ok   " if ok else "FAIL ") + f"rolling: deceleration {acc:.6e} m/s2, analytic {acc_th:.6e}, rel. error {err:.1e}; "
+print(("ok   " if ok else "FAIL ")
+      + f"rolling: deceleration {acc:.6e} m/s2, analytic {acc_th:.6e}, rel. error {err:.1e}; "
       f"contact-point slip / v = {slip:.1e}", flush=True)
 if not ok:
     failures.append("rolling")
@@ -99,7 +102,8 @@ for label, axis, k_spring, mu in (("rolling", 1, mat["kr"], mat["muR"]), ("torsi
     T_spring = k_spring * arm * arm * theta
     err = abs(T_spring - T) / T
     ok = err <= 1e-3 and b.angVel.norm() < 1e-6
-    print(("ok   " if ok else "FAIL ") + f"{label} spring: angle {theta:.4e} rad under T = {T:.4e} N m; k a'^2 theta = {T_spring:.4e}, "
+    print(("ok   " if ok else "FAIL ")
+          + f"{label} spring: angle {theta:.4e} rad under T = {T:.4e} N m; k a'^2 theta = {T_spring:.4e}, "
           f"rel. error {err:.1e}", flush=True)
     if not ok:
         failures.append(label + " spring")

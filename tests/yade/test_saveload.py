@@ -1,7 +1,8 @@
-# ctest (inside yade): O.save / O.load in the middle of a collision continues identically
-# (the contact history, the jump-in flag and the energy bookkeeping survive), in YADE's
-# binary and XML formats, at three moments: loading, on the -kc branch after a history
-# reset, and in the pull-off tail after contact.
+# ctest (inside yade): O.save / O.load in the middle of a collision continues identically (the
+# contact history, the jump-in flag and the energy bookkeeping survive), in YADE's binary and XML
+# formats, at three moments: loading, on the -kc branch after a history reset, and in the pull-off
+# tail after contact; the contact classes survive; a file with `MesoBackgroundDamping` written by
+# 798c4df (`tests/yade/golden/drag_v0.*`) loads and runs on.
 import os
 import tempfile
 
@@ -66,7 +67,8 @@ for moment in ("loading", "kc-branch", "tail"):
         if not ok:
             failures.append(f"{moment} {ext}")
 # All three springs (sliding, rolling, torsion) of a spinning, sliding sphere on a box (ScGeom6D).
-full = dict(mat, kt=40.0, gammaT=1e-3, frictionAngle=0.3, kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1, phiD=0.8)
+full = dict(mat, kt=40.0, gammaT=1e-3, frictionAngle=0.3, kr=20.0, gammaR=5e-4, muR=0.1, ko=20.0, gammaO=5e-4, muO=0.1,
+            phiD=0.8)
 
 
 def springs():
@@ -79,7 +81,8 @@ for ext in (".yade.gz", ".xml"):
     s = pair.build_wall(r, 0.08, full, kind="box", six_d=True, tangential_velocity=(0.05, 0.02, 0), spin=(30, -50, 80),
                         track_energy=True)
     steps = 0
-    while not (O.interactions.has(0, 1) and O.interactions[0, 1].isReal and O.interactions[0, 1].phys.slidingSpring.norm() > 0
+    while not (O.interactions.has(0, 1) and O.interactions[0, 1].isReal
+               and O.interactions[0, 1].phys.slidingSpring.norm() > 0
                and abs(O.interactions[0, 1].phys.torsionSpring) > 0 and steps > 300):
         O.step()
         steps += 1
@@ -95,7 +98,9 @@ for ext in (".yade.gz", ".xml"):
         O.step()
     resumed = snapshot()
     ok = direct == resumed and after_load == before
-    print(("ok   " if ok else "FAIL ") + f"springs    {ext:9s} saved at step {steps}, springs {before[:3]}; identical after 2000 more steps: {direct == resumed}",
+    print(("ok   " if ok else "FAIL ")
+          + f"springs    {ext:9s} saved at step {steps}, springs {before[:3]}; identical after 2000 more steps: "
+            f"{direct == resumed}",
           flush=True)
     if not ok:
         failures.append(f"springs {ext}")
@@ -108,8 +113,10 @@ for ext in (".yade.gz", ".xml"):
 from yade import pack, utils, wrapper as w  # noqa: E402
 from mesocontact import scene  # noqa: E402
 
-every = w.MesoMat(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0, adhesion="jumpIn", gammaN=1e-4, density=2000,
-                  kt=50.0, gammaT=1e-5, frictionAngle=0.4, kr=10.0, gammaR=1e-6, muR=0.1, ko=10.0, gammaO=1e-6, muO=0.1, phiD=0.8)
+every = w.MesoMat(k1=100.0, kp=500.0, kc=20.0, phiF=0.1, fa=1e-6, kca=100.0, adhesion="jumpIn", gammaN=1e-4,
+                  density=2000,
+                  kt=50.0, gammaT=1e-5, frictionAngle=0.4, kr=10.0, gammaR=1e-6, muR=0.1, ko=10.0, gammaO=1e-6, muO=0.1,
+                  phiD=0.8)
 
 
 def settled_packing():
@@ -128,7 +135,8 @@ def settled_packing():
 
 def everything():
     return ([(tuple(b.state.pos), tuple(b.state.vel), tuple(b.state.angVel), tuple(b.state.ori)) for b in O.bodies],
-            sorted((i.id1, i.id2, repr(sorted(i.phys.dict().items()))) for i in O.interactions if i.isReal), O.energy.total())
+            sorted((i.id1, i.id2, repr(sorted(i.phys.dict().items()))) for i in O.interactions if i.isReal),
+            O.energy.total())
 
 
 settled_packing()
@@ -144,7 +152,9 @@ for ext in (".xml", ".xml.gz", ".xml.bz2", ".yade", ".yade.gz", ".yade.bz2"):
     O.load(base + ext)
     O.run(2000, True)
     ok = direct == everything()
-    print(("ok   " if ok else "FAIL ") + f"packing    {ext:9s} {len(O.bodies) - 1} spheres, {contacts} -> {contacts_after} contacts (every mechanism, drag): "
+    print(("ok   " if ok else "FAIL ")
+          + f"packing    {ext:9s} {len(O.bodies) - 1} spheres, {contacts} -> {contacts_after} contacts "
+            f"(every mechanism, drag): "
           f"bitwise after 2000 more steps: {direct == everything()}", flush=True)
     if not ok:
         failures.append(f"packing {ext}")
@@ -156,7 +166,8 @@ shared = w.MesoMat(k1=100.0, kp=500.0, kc=100.0, kt=50.0, frictionAngle=0.3, den
 O.materials.append(shared)
 O.bodies.append([utils.sphere((i * 1.9e-3, 0, 0), 1e-3, material=shared) for i in range(6)])
 O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                               [w.Law2_ScGeom_MesoPhys_Meso()]),
              w.NewtonIntegrator()]
 O.dt = 1e-7
 O.step()
@@ -168,7 +179,8 @@ ok = n_contacts == 5 and n_params == 1 and xml.count("<pairParams") == n_contact
 # A pair with sliding carries the springs (MesoTangentialPhys); the collisions above had none (MesoPhys).
 classes = {type(i.phys).__name__ for i in O.interactions if i.isReal}
 ok = ok and classes == {"MesoTangentialPhys"} and loaded_class == "MesoPhys"
-print(("ok   " if ok else "FAIL ") + f"shared     {n_contacts} contacts saved with {n_params} MesoPairParams; classes {classes}, "
+print(("ok   " if ok else "FAIL ")
+      + f"shared     {n_contacts} contacts saved with {n_params} MesoPairParams; classes {classes}, "
       f"without tangential mechanisms {loaded_class}", flush=True)
 if not ok:
     failures.append("shared parameters saved once")
@@ -180,7 +192,8 @@ O.bodies.append(utils.sphere((-1.9e-3, 0, 0), 1e-3, material=shared))
 O.step()
 kts = sorted(i.phys.kt for i in O.interactions if i.isReal)
 ok = kts == [50.0] * 5 + [80.0]
-print(("ok   " if ok else "FAIL ") + f"revision   sliding stiffness of the contacts after kt = 80 on the material: {kts}", flush=True)
+print(("ok   " if ok else "FAIL ")
+      + f"revision   sliding stiffness of the contacts after kt = 80 on the material: {kts}", flush=True)
 if not ok:
     failures.append("material change after load")
 # The background drag remembers the previous step's velocities and forces for its energy
@@ -193,7 +206,8 @@ for reference in ("lab", "contacts"):
     for i, b in enumerate(O.bodies):
         b.state.vel = (0.01 * (-1) ** i, 0.002 * i, 0)
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.MesoBackgroundDamping(gammaB=2e-3, gammaBR=2e-3, reference=reference), w.NewtonIntegrator(damping=0)]
     O.dt = 1e-6
     O.trackEnergy = True
@@ -206,25 +220,29 @@ for reference in ("lab", "contacts"):
     O.run(500, True)
     resumed = {k: O.energy[k] for k in O.energy.keys()}
     ok = direct == resumed and direct.get("mesoBackground", 0) > 0
-    print(("ok   " if ok else "FAIL ") + f"drag       reference '{reference}': energies identical 500 steps after loading: {direct == resumed} "
-          f"(mesoBackground {direct.get('mesoBackground', 0):.9e} / {resumed.get('mesoBackground', 0):.9e})", flush=True)
+    print(("ok   " if ok else "FAIL ")
+          + f"drag       reference '{reference}': energies identical 500 steps after loading: {direct == resumed} "
+          f"(mesoBackground {direct.get('mesoBackground', 0):.9e} / {resumed.get('mesoBackground', 0):.9e})",
+          flush=True)
     if not ok:
         failures.append(f"background drag energy after load ({reference})")
 # A file written by the plugin of commit 798c4df, before MesoBackgroundDamping had sumInLaw (a new
 # attribute must not shift the binary layout: such a file failed with "vector::_M_default_append"
 # when sumInLaw was saved): it loads with its values and goes on, the law gathering the sums.
-import json
-from yade import wrapper as _w
+import json  # noqa: E402
+from yade import wrapper as _w  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__import__("harness").__file__))
 with open(os.path.join(HERE, "golden", "drag_v0.json")) as f:
     v0 = json.load(f)
 O.load(os.path.join(HERE, "golden", "drag_v0.yade.gz"))
 drag = [e for e in O.engines if isinstance(e, _w.MesoBackgroundDamping)][0]
-kept = (drag.gammaB, drag.gammaBR, drag.reference, len(O.bodies), O.iter) == \
-    (v0["gammaB"], v0["gammaBR"], v0["reference"], v0["bodies"], v0["iter"]) and O.energy["mesoBackground"] == v0["mesoBackground"]
+kept = ((drag.gammaB, drag.gammaBR, drag.reference, len(O.bodies), O.iter)
+        == (v0["gammaB"], v0["gammaBR"], v0["reference"], v0["bodies"], v0["iter"])
+        and O.energy["mesoBackground"] == v0["mesoBackground"])
 O.run(100, True)
 ok = kept and drag.sumInLaw and drag.lawSumSteps == 99 and O.energy["mesoBackground"] > v0["mesoBackground"]
-print(("ok   " if ok else "FAIL ") + f"drag       a file of the first layout (798c4df) loads with its values ({kept}) and runs on, "
+print(("ok   " if ok else "FAIL ")
+      + f"drag       a file of the first layout (798c4df) loads with its values ({kept}) and runs on, "
       f"the law gathering the sums in {drag.lawSumSteps} of 100 steps", flush=True)
 if not ok:
     failures.append("drag file of the first layout")

@@ -76,6 +76,7 @@ for label, mat in cases:
     dyn_err = abs(ph.shearForce.norm() - mu_d * lv) / (mu_d * lv)
     ok = stat_err <= 1e-3 and onset_err <= 1e-3 and acc_err <= 1e-3 and dyn_err <= 1e-3
     check(ok, label, f"level f_n + kc delta = {level:.4e} N (kc delta = {ph.kc * i.geom.penetrationDepth:.4e}); "
-          f"peak |f_t| / (mu_s level) - 1 = {stat_err:.1e}; applied pull at the peak / (mu_s level) - 1 = {onset_err:.1e}; "
-          f"sliding |f_t| / (mu_d level) - 1 = {dyn_err:.1e}; acceleration rel. error = {acc_err:.1e}")
+          f"peak |f_t| / (mu_s level) - 1 = {stat_err:.1e}; applied pull at the peak / (mu_s level) - "
+          f"1 = {onset_err:.1e}; sliding |f_t| / (mu_d level) - 1 = {dyn_err:.1e}; acceleration rel. "
+          f"error = {acc_err:.1e}")
 finish()

@@ -1,4 +1,11 @@
-# ctest (inside yade): the pull-in of reversible adhesion reaches every surface. A sphere drifts
+# ctest (inside yade): the pull-in at a fixed sphere, a box, a facet and a wall: after
+# `set_detection` the interaction starts within one step (V0 dt) of the range's edge and the energy
+# of the pull-in (kinetic plus adhesive potential) stays within 1e-4 of the work fa·range/2; YADE's
+# facet and wall functors alone miss it and the Ip2 warns once naming the functor to use; no warning
+# for pairs that overlapped before the first step; in overlap the facet and wall geometry equals
+# YADE's.
+#
+# The pull-in of reversible adhesion reaches every surface. A sphere drifts
 # toward a fixed sphere, a box, a facet and a wall across the adhesion range. After
 # scene.set_detection() each interaction starts within one step of the range's edge and the
 # sphere's energy follows the closed form of the pull-in (kinetic + adhesive potential constant);
@@ -37,8 +44,10 @@ def drift(kind, detect, start_gap=1.5 * RANGE):
     ball = O.bodies.append(utils.sphere((0, 0, R + start_gap), R, material=0))
     O.bodies[ball].state.vel = (0, 0, -V0)
     O.engines = [w.ForceResetter(),
-                 w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()], verletDist=0),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom(), w.Ig2_Facet_Sphere_ScGeom(),
+                 w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()],
+                                         verletDist=0),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom(),
+                                    w.Ig2_Facet_Sphere_ScGeom(),
                                     w.Ig2_Wall_Sphere_ScGeom()],
                                    [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
@@ -46,7 +55,8 @@ def drift(kind, detect, start_gap=1.5 * RANGE):
         scene.set_detection()
     O.dt = 1e-6  # 200 steps across the range at V0; the adhesive spring's omega dt = 2.4e-3
     b = O.bodies[ball]
-    out = {"start_gap": None, "worst": 0.0, "functors": [type(f).__name__ for f in O.engines[2].geomDispatcher.functors]}
+    out = {"start_gap": None, "worst": 0.0,
+           "functors": [type(f).__name__ for f in O.engines[2].geomDispatcher.functors]}
     with Stderr() as err:
         gap_before = b.state.pos[2] - R
         out["v_contact"] = None
@@ -77,7 +87,8 @@ for kind in ("sphere", "box", "facet", "wall"):
     # The interaction starts on the first step whose loop sees a gap inside the range (up to V0 dt below it).
     check(r["start_gap"] is not None and RANGE - 1.01 * V0 * O.dt < r["start_gap"] <= RANGE,
           f"{kind}: after set_detection the interaction starts at the range's edge",
-          f"gap {r['start_gap']:.6e} m, range {RANGE:.6e} m, V0 dt {V0 * O.dt:.1e} m" if r["start_gap"] is not None else "never")
+          f"gap {r['start_gap']:.6e} m, range {RANGE:.6e} m, V0 dt {V0 * O.dt:.1e} m" if r["start_gap"] is not None
+          else "never")
     # Energy: 1/2 m v^2 - kca (range - g)^2 / 2 = 1/2 m v0^2 to the leapfrog's (omega dt)^2 ~ 6e-6 of W.
     check(r["worst"] < 1e-4, f"{kind}: the pull-in follows the closed form (energy constant)",
           f"worst |dE|/W = {r['worst']:.1e}, v on touching {r['v_contact']:.6e} m/s "
@@ -95,14 +106,16 @@ for kind in ("sphere", "box", "facet", "wall"):
 
 for kind in ("facet", "wall"):
     r = drift(kind, False)
-    check(r["start_gap"] is not None and r["start_gap"] <= 0, f"{kind}: YADE's functor alone makes the contact only in overlap",
+    check(r["start_gap"] is not None and r["start_gap"] <= 0,
+          f"{kind}: YADE's functor alone makes the contact only in overlap",
           f"gap {r['start_gap']}")
     check(f"Ig2_{kind.capitalize()}_Sphere_MesoScGeom" in r["stderr"] and "missed" in r["stderr"],
           f"{kind}: the Ip2 warns once, naming the functor to use", r["stderr"].strip()[:300])
     check(r["stderr"].count("WARNING") == 1, f"{kind}: one warning", str(r["stderr"].count("WARNING")))
 
 r = drift("wall", False, start_gap=-0.2 * RANGE)  # in overlap before the first step: nothing missed
-check("WARNING" not in r["stderr"], "no warning for a pair that overlapped before the first step", r["stderr"].strip()[:200])
+check("WARNING" not in r["stderr"], "no warning for a pair that overlapped before the first step",
+      r["stderr"].strip()[:200])
 
 # In contact the facet and wall geometry equals YADE's (shrinkFactor 0).
 for kind, yade_f, meso_f in (("facet", w.Ig2_Facet_Sphere_ScGeom, w.Ig2_Facet_Sphere_MesoScGeom),
@@ -113,7 +126,8 @@ for kind, yade_f, meso_f in (("facet", w.Ig2_Facet_Sphere_ScGeom, w.Ig2_Facet_Sp
         O.materials.append(w.MesoMat(k1=100.0, kp=500.0, density=RHO))
         O.bodies.append(surface(kind))
         O.bodies.append(utils.sphere((0.3 * R, -0.2 * R, 0.9 * R), R, material=0))
-        O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
+        O.engines = [w.ForceResetter(),
+                     w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Facet_Aabb(), w.Bo1_Wall_Aabb()]),
                      w.InteractionLoop([f()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
                      w.NewtonIntegrator(damping=0)]
         O.dt = 1e-7
@@ -124,12 +138,14 @@ for kind, yade_f, meso_f in (("facet", w.Ig2_Facet_Sphere_ScGeom, w.Ig2_Facet_Sp
     dn = max(abs(a - b) for a, b in zip(geoms[0][1], geoms[1][1]))
     dp = max(abs(a - b) for a, b in zip(geoms[0][2], geoms[1][2]))
     check(abs(geoms[0][0] - geoms[1][0]) < 1e-15 * R and dn < 1e-12 and dp < 1e-12 * R,
-          f"{kind}: in overlap the geometry equals YADE's", f"overlap {geoms[0][0]:.6e} / {geoms[1][0]:.6e}, |dn| {dn:.1e}, |dC| {dp:.1e} m")
+          f"{kind}: in overlap the geometry equals YADE's",
+          f"overlap {geoms[0][0]:.6e} / {geoms[1][0]:.6e}, |dn| {dn:.1e}, |dC| {dp:.1e} m")
 
 scene.reset()
 O.materials.append(w.MesoMat(**MAT))
 O.bodies.append([utils.sphere((0, 0, 0), R, material=0)])
-O.engines = [w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]), w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom(shrinkFactor=0.1)], [], [])]
+O.engines = [w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
+             w.InteractionLoop([w.Ig2_Facet_Sphere_ScGeom(shrinkFactor=0.1)], [], [])]
 try:
     scene.set_detection()
     check(False, "a shrinkFactor the replacement lacks is refused")

@@ -1,9 +1,12 @@
-# ctest (inside yade): the tablet campaign in quick mode (216 particles, one cycle) checks the
-# protocol: the full law acts from the start, stress targets and rest after sintering and
-# release, the unconfined start (adhesive loading walls that kept their contacts' histories,
-# drag relative to the contacts), cycles back to zero strain at the set amplitude, tension
-# re-loading with positive slope, the pull's gap and break and a force-free detached half,
-# snapshots that are pictures of the sample; and the crack measures on known pictures.
+# ctest (inside yade): the tablet campaign in quick mode (216 particles, one cycle): the full law
+# from the start, stress targets and rest after sintering and release, lateral walls gone, the
+# adhesive wall law on the wall contacts with their sintering history kept (and `adoptMaterials`
+# refusing a change of k1), drag relative to the contacts, cycles back to zero strain at the set
+# amplitude, tension re-loading with positive slope, the first visible crack and the last contact
+# chain of the pull, zero mean force on the detached halves, snapshots that are pictures of shaded
+# spheres in one frame; the crack measures on known pictures (a ring of spheres, a layer with a
+# missing block); the time-step study at 1 and 2 times the campaign's step closes its energy balance
+# (the walls' work against kinetic + stored + dissipated energy) within 1e-3.
 import glob
 import json
 import math
@@ -19,8 +22,6 @@ from mesostudies.tablet import campaign, snapshots, uniaxial
 from harness import check, finish
 
 
-
-
 # 1. The crack measures on known pictures (seen from -y). A ring of 12 touching spheres encloses
 #    a see-through hole; a sphere behind covers it.
 O.reset()
@@ -30,7 +31,8 @@ O.bodies.append([utils.sphere((R * math.cos(2 * math.pi * k / 12), 0, R * math.s
                  for k in range(12)])
 hole = snapshots.see_through_holes(pixel=tablet.D0 / 40)
 inner = (R - r) ** 2 * math.pi / tablet.D0 ** 2  # the inscribed disk lies inside the hole
-check(inner < hole < 1.2 * math.pi * R ** 2 / tablet.D0 ** 2, f"ring of spheres: hole {hole:.3f} d0^2 (> inscribed disk {inner:.3f})")
+check(inner < hole < 1.2 * math.pi * R ** 2 / tablet.D0 ** 2,
+      f"ring of spheres: hole {hole:.3f} d0^2 (> inscribed disk {inner:.3f})")
 O.bodies.append(utils.sphere((0, 0.02, 0), R + 0.5 * r))
 check(snapshots.see_through_holes(pixel=tablet.D0 / 40) == 0, "ring covered by a sphere behind: no hole")
 # A front layer (square lattice, spacing d0) 5 d0 before a back layer: no crack; with a 3 x 3
@@ -44,7 +46,8 @@ for missing in (False, True):
     area = snapshots.visible_gap(pixel=d / 20)
     if missing:  # 9 empty cells and the 28 quarter pores of the touching lattice around them
         expect = 9 + 28 * (1 - math.pi / 4) / 4
-        check(abs(area - expect) < 0.3, f"front layer with a 3x3 block missing: crack {area:.2f} d0^2 (cells and pores {expect:.2f})")
+        check(abs(area - expect) < 0.3,
+              f"front layer with a 3x3 block missing: crack {area:.2f} d0^2 (cells and pores {expect:.2f})")
     else:
         check(area < 1.0, f"whole front layer: largest deep region {area:.2f} d0^2 < 1 (the lattice's pores)")
 
@@ -62,7 +65,8 @@ O.bodies.append(utils.box((L + 0.25 * d, 0, 2 * d), (0.25 * d, 5 * d, 5 * d), fi
 for z, shift in ((0.0, 0.0), (3 * d, 0.002 * d)):
     O.bodies.append([utils.sphere(((k + 0.5) * d + (shift if k >= 4 else 0.0), 0, z), 0.5005 * d) for k in range(10)])
 O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb(), w.Bo1_Box_Aabb()]),
-             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom()], [w.Ip2_FrictMat_FrictMat_FrictPhys()],
+             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom(), w.Ig2_Box_Sphere_ScGeom()],
+                               [w.Ip2_FrictMat_FrictMat_FrictPhys()],
                                [w.Law2_ScGeom_FrictPhys_CundallStrack()]), w.NewtonIntegrator()]
 O.dt = 1e-9
 O.step()
@@ -75,7 +79,8 @@ check(len(prof["x"]) == 40 and prof["count"] == expect and abs(prof["mean"] - 1.
 # Planes nearer than 0.5 d0 to a wall's face cross only the glued wall's contacts: not the weakest.
 syn = {"x": [0.125, 0.375, 0.625, 5.0, 9.875], "count": [1, 3, 4, 2, 1], "length_d0": 10.0}
 wk = uniaxial.weakest_plane(syn)
-check(wk == {"count": 2, "from_left_d0": 5.0, "from_right_d0": 5.0} and uniaxial.weakest_plane(syn, margin=0)["count"] == 1,
+check(wk == {"count": 2, "from_left_d0": 5.0, "from_right_d0": 5.0}
+      and uniaxial.weakest_plane(syn, margin=0)["count"] == 1,
       f"weakest plane away from the walls' faces: {wk}")
 
 out = tempfile.mkdtemp(prefix="tablet-quick-")
@@ -100,7 +105,9 @@ for damage in ("truncated state", "truncated JSON", "kc_over_kp as text", "no JS
     else:
         os.remove(p_unc + ".json")
     again = campaign.prepare(out, quick=True, progress=False)
-    check(len(tablet.sphere_ids()) == info["built"]["n"] and all(again["built"][k] == info["built"][k] for k in ("n", "material", "kc_over_kp")) and os.path.exists(p_unc + ".json"),
+    check(len(tablet.sphere_ids()) == info["built"]["n"]
+          and all(again["built"][k] == info["built"][k] for k in ("n", "material", "kc_over_kp"))
+          and os.path.exists(p_unc + ".json"),
           f"stage with a {damage}: made again and loaded")
 info = campaign.prepare(out, quick=True)
 particles = [m for m in O.materials if m.label == "particles"][0]
@@ -111,17 +118,21 @@ for stage, goal in (("sintered", tablet.SINTER_STRESS), ("released", tablet.RELE
     err = max(abs(v / goal - 1) for v in s["wall_stress"].values())
     check(err < 0.01, f"{stage}: six wall stresses within 1% of {goal:g} (worst {err:.2e})")
     check(s["kinetic_energy_ratio"] < 1e-4, f"{stage}: at rest, E_kin/E_ref = {s['kinetic_energy_ratio']:.1e}")
-    check(0.3 < s["solid_fraction"] < 0.74 and s["coordination"] > 2, f"{stage}: solid fraction {s['solid_fraction']:.3f}, "
+    check(0.3 < s["solid_fraction"] < 0.74 and s["coordination"] > 2,
+          f"{stage}: solid fraction {s['solid_fraction']:.3f}, "
           f"C {s['coordination']:.2f}, with walls {s['coordination_with_walls']:.2f}, rattlers {s['rattlers']}")
 p_r = 2e-5 * tablet.KP / tablet.D0  # the paper's d0 p_r/kp = 2e-5
-check(all(abs(v / p_r - 1) < 0.01 for v in info["released"]["wall_stress"].values()), f"release stress is d0 p_r/kp = 2e-5 (p_r = {p_r:g})")
+check(all(abs(v / p_r - 1) < 0.01 for v in info["released"]["wall_stress"].values()),
+      f"release stress is d0 p_r/kp = 2e-5 (p_r = {p_r:g})")
 u = info["unconfined"]
 check(u["force_error"] < 1e-4 and u["kinetic_energy_ratio"] < 1e-4,
-      f"unconfined start: wall force at p_r A to {u['force_error']:.1e} kp d0, at rest ({u['kinetic_energy_ratio']:.1e})")
+      f"unconfined start: wall force at p_r A to {u['force_error']:.1e} kp d0, at rest "
+      f"({u['kinetic_energy_ratio']:.1e})")
 
 # 3. The unconfined start: two walls, adhesive, whose contacts kept their sintering history.
 test = uniaxial.Test(progress=False)
-check(abs(test.force() - u["target_force"] / (tablet.KP * tablet.D0)) < 1e-4, f"test starts at rest: F/(kp d0) = {test.force():.2e}")
+check(abs(test.force() - u["target_force"] / (tablet.KP * tablet.D0)) < 1e-4,
+      f"test starts at rest: F/(kp d0) = {test.force():.2e}")
 check(set(tablet.wall_ids()) == {"left", "right"}, "lateral walls removed")
 drag = [e for e in O.engines if isinstance(e, w.MesoBackgroundDamping)]
 check(len(drag) == 1 and drag[0].reference == "contacts", "tests: background drag relative to the contacts")
@@ -132,7 +143,8 @@ check(len(wall_contacts) > 0 and all(abs(I.phys.kc - 20 * tablet.KP) < 1e-12 and
 mould = [m for m in O.materials if m.label == "walls"][0]
 check(mould.kc == 0 and mould.frictionAngle == 0, "the other walls' material stays the smooth mould")
 kept = sum(1 for I in wall_contacts if I.phys.deltaMax > 1.5 * I.geom.penetrationDepth)
-check(kept > len(wall_contacts) // 2, f"wall contacts kept their sintering history: {kept}/{len(wall_contacts)} with deltaMax > 1.5 x overlap")
+check(kept > len(wall_contacts) // 2,
+      f"wall contacts kept their sintering history: {kept}/{len(wall_contacts)} with deltaMax > 1.5 x overlap")
 ip2 = [e for e in O.engines if isinstance(e, w.InteractionLoop)][0].physDispatcher.functors[0]
 walls_mat = [m for m in O.materials if m.label == "loading walls"][0]
 walls_mat.k1 = 0.3 * tablet.KP
@@ -156,7 +168,8 @@ except ValueError as e:
 summaries = {}
 for mode in ("tension", "compression"):
     amps = (0.05, 0.2)
-    summary = summaries[mode] = campaign.cyclic(mode, out, amps, quick=True, periods=campaign.PERIODS[mode][:1], progress=False)
+    summary = summaries[mode] = campaign.cyclic(mode, out, amps, quick=True, periods=campaign.PERIODS[mode][:1],
+                                                progress=False)
     for amp in amps:
         name = campaign.run_name(mode, amp, campaign.PERIODS[mode][0])
         run = summary["runs"][name]
@@ -195,7 +208,8 @@ check(sorted(names) == sorted(before) and all(outputs.complete(os.path.join(runs
       and all(open(os.path.join(runs_dir, n, n + ".csv")).read() == before[n] for n in names),
       f"restore: {len(names)} runs from the docs copies, complete and identical")
 t0 = time.time()
-again = campaign.cyclic("tension", out, (0.05, 0.2), quick=True, periods=campaign.PERIODS["tension"][:1], progress=False)
+again = campaign.cyclic("tension", out, (0.05, 0.2), quick=True, periods=campaign.PERIODS["tension"][:1],
+                        progress=False)
 check(time.time() - t0 < 10 and again["runs"].keys() == summaries["tension"]["runs"].keys()
       and all(again["runs"][n]["peaks"] == summaries["tension"]["runs"][n]["peaks"] for n in again["runs"]),
       f"fig16 regathered from restored runs in {time.time() - t0:.1f} s")
@@ -218,7 +232,8 @@ for bad_docs, bad_out, says in ((os.path.join(docs, "missing"), out, "docsdir"),
 
 # Every run records the preparation it was made from; a file without it is of the first protocol.
 protos = [info["protocol"] for m in summaries for info in summaries[m]["runs"].values()]
-check(all(p == campaign.PROTOCOL for p in protos) and campaign.protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
+check(all(p == campaign.PROTOCOL for p in protos)
+      and campaign.protocol_of({}) == {"packing": "full", "glue": "loading", "rel_std": 0.05},
       f"runs record their preparation {protos[0]}")
 
 # 4b. Issue #47's variants on the same sample: cycles back to the start's force (E6) with kc/kp = 0.5
@@ -243,7 +258,8 @@ check(run["tensile_stiffness"]["was"] == 0.2 and kcs == {0.5, 20.0},
 
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
-pull = campaign.pull(out, quick=True, speed=3 * campaign.PULL_SPEED, progress=False)  # 3x faster: the protocol, not the figure
+# 3x faster: the protocol, not the figure
+pull = campaign.pull(out, quick=True, speed=3 * campaign.PULL_SPEED, progress=False)
 check(pull["last_contact_Dx"] is not None, f"pull: the last contact chain breaks at Dx = {pull['last_contact_Dx']}")
 check(pull["first_gap_Dx"] is not None and pull["first_gap_Dx"] < pull["until"],
       f"pull: first visible crack at Dx = {pull['first_gap_Dx']}")
@@ -251,7 +267,8 @@ f_mean, f_rms = pull["mean_force_after_last_contact"], pull["rms_force_after_las
 # The halves ring about zero (rms up to ~10 % of the peak in this small sample); a drag on
 # them would show as a steady mean (the lab-frame drag gave about the peak itself).
 check(f_mean is not None and abs(f_mean) < 0.02 * abs(pull["max_tension"]),
-      f"pull: detached halves force-free on average: mean F = {f_mean:.2e} (rms {f_rms:.1e}, peak tension {pull['max_tension']:.3g})")
+      f"pull: detached halves force-free on average: mean F = {f_mean:.2e} (rms {f_rms:.1e}, peak tension "
+      f"{pull['max_tension']:.3g})")
 g = [pull["first_gap_Dx_by_area"][k] for k in sorted(pull["first_gap_Dx_by_area"], key=float)]
 check(len(g) == 3 and g[1] == pull["first_gap_Dx"] and all(x is not None for x in g) and g[0] <= g[1] <= g[2],
       f"pull: the first gap at 0.5, 1 and 2 d0^2 in order: {g}")
@@ -265,16 +282,17 @@ pngs = sorted(glob.glob(os.path.join(fig17, "fig17-0*.png")))
 vtks = sorted(glob.glob(os.path.join(fig17, "fig17-spheres-*.vtk")))
 check(len(pngs) == len(campaign.FIG17_DX) == len(vtks), f"pull: {len(pngs)} PNG and {len(vtks)} VTK snapshots")
 check(open(vtks[-1]).readline().startswith("# vtk DataFile"), "VTK snapshot is legacy VTK")
-import matplotlib
+import matplotlib  # noqa: E402
 matplotlib.use("Agg")
-import matplotlib.image as mpimg
+import matplotlib.image as mpimg  # noqa: E402
 for p in (pngs[0], pngs[-1]):
     img = mpimg.imread(p)[..., :3]
     coloured = (img.max(axis=2) - img.min(axis=2)) > 0.15  # the spheres; background white, walls grey
     red, blue = (coloured & (img[..., 0] > img[..., 2])).mean(), (coloured & (img[..., 2] > img[..., 0])).mean()
     shades = np.unique(np.round(img[coloured].sum(axis=1), 2)).size
     check(coloured.mean() > 0.05 and red > 0 and shades > 50,
-          f"{os.path.basename(p)}: a picture of shaded spheres ({coloured.mean():.0%} coloured, {shades} shades, red {red:.0%}, blue {blue:.1%})")
+          f"{os.path.basename(p)}: a picture of shaded spheres ({coloured.mean():.0%} coloured, {shades} shades, red "
+          f"{red:.0%}, blue {blue:.1%})")
 check(len({mpimg.imread(p).shape for p in pngs}) == 1, "pull snapshots share one frame")
 
 # 6. The time-step study: one cycle each way at 1 and 2 times the campaign's step, with the energy
@@ -283,17 +301,22 @@ check(len({mpimg.imread(p).shape for p in pngs}) == 1, "pull snapshots share one
 #    and 3e-4 in compression here; 1e-3 leaves room, a wall missing from the work gives ~50 %).
 ts = campaign.timestep_study(out, quick=True, factors=(1.0, 2.0), runs=("tension", "compression"), progress=False)
 rows = {r["factor"]: r for r in ts["rows"]}
-check(set(rows) == {1.0, 2.0} and all(abs(rows[f][f"{m}_energy_residual"]) < 1e-3 for f in rows for m in ("tension", "compression")),
+check(set(rows) == {1.0, 2.0}
+      and all(abs(rows[f][f"{m}_energy_residual"]) < 1e-3 for f in rows for m in ("tension", "compression")),
       "time-step study: energy balance within 1e-3 of the walls' gross work: "
-      + ", ".join(f"x{f:g} {m} {rows[f][f'{m}_energy_residual']:.1e}" for f in sorted(rows) for m in ("tension", "compression")))
-check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12 and set(rows[2.0]["change_vs_1dt"]) ==
-      {"tension_peak", "tension_F_at_Dx0", "compression_peak", "compression_F_at_Dx0"},
+      + ", ".join(f"x{f:g} {m} {rows[f][f'{m}_energy_residual']:.1e}" for f in sorted(rows)
+                  for m in ("tension", "compression")))
+check(abs(rows[2.0]["dt"] / rows[1.0]["dt"] - 2) < 1e-12
+      and set(rows[2.0]["change_vs_1dt"]) == {"tension_peak", "tension_F_at_Dx0", "compression_peak",
+                                              "compression_F_at_Dx0"},
       f"time-step study: 2 dt against 1 dt {rows[2.0]['change_vs_1dt']}")
 
 # The campaign's time steps are those the committed study accepts (campaigns/tablet/timestep.json).
-with open(os.path.join(os.path.dirname(os.path.abspath(__import__("harness").__file__)), "..", "..", "campaigns", "tablet", "timestep", "timestep.json")) as f:
+with open(os.path.join(os.path.dirname(os.path.abspath(__import__("harness").__file__)), "..", "..", "campaigns",
+                       "tablet", "timestep", "timestep.json")) as f:
     accepted = json.load(f)["largest_accepted_factor"]
-check(accepted == campaign.DT_FACTORS, f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
+check(accepted == campaign.DT_FACTORS,
+      f"campaign.DT_FACTORS {campaign.DT_FACTORS} = the study's accepted factors {accepted}")
 
 # Fig. 19: compression to large strain (here Dx = 1, a sixth of the quick sample, 3x faster):
 # lettered snapshots at the marks, the sample spreading sideways under a compressive force.
@@ -303,8 +326,8 @@ sn = big["snapshots"]
 widths = [0.5 * (x["width_y_d0"] + x["width_z_d0"]) for x in sn]
 check(len(sn) == 3 and all(os.path.exists(os.path.join(campaign.root(out, quick=True), "fig19", x["png"])) for x in sn)
       and widths[0] < widths[1] < widths[2] and sn[1]["F"] > 0 and sn[2]["F"] > 0,
-      f"fig19: compression to Dx = 1, snapshots at {[round(-x['Dx'], 2) for x in sn]}, widths {[round(w, 2) for w in widths]} d0, "
-      f"force {[round(x['F'], 3) for x in sn]}")
+      f"fig19: compression to Dx = 1, snapshots at {[round(-x['Dx'], 2) for x in sn]}, widths "
+      f"{[round(w, 2) for w in widths]} d0, force {[round(x['F'], 3) for x in sn]}")
 
 # 7. The preparation's options (the factor study): frictionless packing, all six walls glued.
 #    The stage cache tells the preparations apart; the full law acts after the packing.
@@ -313,9 +336,11 @@ finfo = campaign.prepare(fout, quick=True, progress=False, packing="frictionless
 check(finfo["built"]["packing"] == "frictionless" and finfo["built"]["glue"] == "all",
       f"factor preparation recorded: {finfo['built']['packing']}, {finfo['built']['glue']}")
 spheres = [O.bodies[i] for i in tablet.sphere_ids()]
-check(all(b.material.label == "particles" for b in spheres), "frictionless packing: the full law on every sphere for the tests")
+check(all(b.material.label == "particles" for b in spheres),
+      "frictionless packing: the full law on every sphere for the tests")
 sphere_contacts = [I for I in O.interactions if I.id1 in tablet.sphere_ids() and I.id2 in tablet.sphere_ids()]
-check(sphere_contacts and all(abs(I.phys.muS - 1.0) < 1e-12 and abs(I.phys.kc - 0.2 * tablet.KP) < 1e-12 for I in sphere_contacts),
+check(sphere_contacts
+      and all(abs(I.phys.muS - 1.0) < 1e-12 and abs(I.phys.kc - 0.2 * tablet.KP) < 1e-12 for I in sphere_contacts),
       f"frictionless packing: {len(sphere_contacts)} contacts adopted the full law (mu = 1, kc = 0.2 kp)")
 # A deeper sintering (d0 p_s/kp = 0.05): sintered at that stress, released to the paper's p_r.
 sout = campaign.factor_dir(out, "full", "loading", sinter=0.05)
@@ -323,7 +348,8 @@ sinfo = campaign.prepare(sout, quick=True, progress=False, sinter=0.05)
 check(sout.endswith("full-loading-sinter0.05") and sinfo["built"]["sinter"] == 0.05
       and abs(sinfo["sintered"]["goal"] / (0.05 * tablet.KP / tablet.D0) - 1) < 1e-12
       and abs(sinfo["released"]["goal"] / (1e-3 * 0.02 * tablet.KP / tablet.D0) - 1) < 1e-12,
-      f"deeper sintering: goals {sinfo['sintered']['goal']:.4g} then {sinfo['released']['goal']:.4g} (stress units), in {os.path.basename(sout)}")
+      f"deeper sintering: goals {sinfo['sintered']['goal']:.4g} then {sinfo['released']['goal']:.4g} (stress units), "
+      f"in {os.path.basename(sout)}")
 try:
     campaign.prepare(fout, quick=True, progress=False)
     check(False, "a directory holding another preparation is refused")

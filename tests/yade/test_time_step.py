@@ -62,8 +62,9 @@ for name, (mat, kick) in cases.items():
 
 # The spinning sphere: rolling and torsion 100 times stiffer than the normal law.
 spin = dict(base, kr=1e4, ko=1e4)
-resting(spin=(1.0, 0, 1.0), timestepper=w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.8, timeStepUpdateInterval=1,
-                                                                     defaultDt=1e-6), **spin)
+resting(spin=(1.0, 0, 1.0),
+        timestepper=w.GlobalStiffnessTimeStepper(timestepSafetyCoefficient=0.8, timeStepUpdateInterval=1,
+                                                 defaultDt=1e-6), **spin)
 e_kick = utils.kineticEnergy()
 O.run(5, True)  # the stepper sets O.dt from the contact's kn and ks
 dt_gsts = O.dt
@@ -72,7 +73,8 @@ g_gsts = growth(e0=e_kick)
 resting(spin=(1.0, 0, 1.0), **spin)
 O.dt = scene.time_step(safety=0.8)
 g_ours = growth()
-check(g_gsts > 50 and g_ours < 11, "spinning sphere, kr = ko = 100 kp: GlobalStiffnessTimeStepper's step blows up, time_step's does not",
+check(g_gsts > 50 and g_ours < 11,
+      "spinning sphere, kr = ko = 100 kp: GlobalStiffnessTimeStepper's step blows up, time_step's does not",
       f"{dt_gsts:.3e} s: x{g_gsts:.3g}; {O.dt:.3e} s: x{g_ours:.3g}")
 
 # Several materials and sizes: the smallest sphere of the stiffest pair decides; walls count.
@@ -87,15 +89,19 @@ check(abs(scene.time_step(safety=1.0) - want) < 1e-15 * want, "two materials: th
       f"{scene.time_step(safety=1.0):.4e} s")
 scene.reset()  # one sphere on a wall: no sphere-sphere pair exists, the wall's decides
 wall = w.MesoMat(k1=100.0, kp=1e4, density=RHO)
-O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff), utils.box((0, 0, -3 * R), (5 * R, 5 * R, R), material=wall, fixed=True)])
+O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff),
+                 utils.box((0, 0, -3 * R), (5 * R, 5 * R, R), material=wall, fixed=True)])
 want = ip2.stableStep(stiff, wall, 0.5 * R, 0.0)
 check(abs(scene.time_step(safety=1.0) - want) < 1e-15 * want and want > ip2.stableStep(stiff, stiff, 0.5 * R, 0.5 * R),
       "one sphere on a wall: the sphere-wall bound", f"{scene.time_step(safety=1.0):.4e} s")
-scene.reset()  # a sphere against a fixed sphere (no other partner): the fixed one counts as a wall (it does not move back)
-O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff), utils.sphere((0, 0, -2 * R), R, material=wall, fixed=True)])
+# a sphere against a fixed sphere (no other partner): the fixed one counts as a wall (it does not move back)
+scene.reset()
+O.bodies.append([utils.sphere((0, 0, 0), 0.5 * R, material=stiff),
+                 utils.sphere((0, 0, -2 * R), R, material=wall, fixed=True)])
 want = ip2.stableStep(stiff, wall, 0.5 * R, 0.0)
 got = scene.time_step(safety=1.0)
-check(math.isfinite(got) and abs(got - want) < 1e-15 * want, "a sphere against a fixed sphere: the sphere-wall bound, not inf",
+check(math.isfinite(got) and abs(got - want) < 1e-15 * want,
+      "a sphere against a fixed sphere: the sphere-wall bound, not inf",
       f"{got:.4e} s")
 for bad, says in ((0.0, "safety"), (-1.0, "safety"), (math.nan, "safety"), (math.inf, "safety"), ("0.5", "safety")):
     try:

@@ -13,7 +13,8 @@ wall, ball = O.bodies[s.ids[0]].state, O.bodies[s.ids[1]].state
 wall.vel = (0, 0, -0.01)
 O.run(int(50 * s.contact_time / O.dt), True)
 ok = O.interactions.has(s.ids[0], s.ids[1]) and abs(ball.vel[2] - (-0.01)) < 1e-4
-print(("ok   " if ok else "FAIL ") + f"adhesive wall pulling: sphere velocity {ball.vel[2]:.5f} m/s following the wall's -0.01 m/s")
+print(("ok   " if ok else "FAIL ")
+      + f"adhesive wall pulling: sphere velocity {ball.vel[2]:.5f} m/s following the wall's -0.01 m/s")
 if not ok:
     failures.append("wall pull")
 finish()

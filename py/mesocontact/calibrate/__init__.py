@@ -21,7 +21,8 @@ its result ``Fit``), ``cycles`` (``fit_cycles`` on F(delta), its result ``CycleF
 (parameters from dimensionless groups, from e and a contact time), ``verify`` (the fit through
 YADE, its picture). Every public name is reachable here.
 """
-from .data import AGAINST, PARAMETERS, SIGMA_MIN, UNITS, Data, DataError, Setup, check_data, geometry, load_data  # noqa: F401
+from .data import (AGAINST, PARAMETERS, SIGMA_MIN, UNITS, Data, DataError, Setup, check_data, geometry,  # noqa: F401
+                   load_data)
 from .fitting import RESTARTS, Fit, fit  # noqa: F401
 from .cycles import CYCLE_PARAMETERS, CYCLE_STARTS, MAGNITUDES, CycleFit, fit_cycles  # noqa: F401
 from .groups import contact_duration, from_groups, from_restitution_and_contact_time, material  # noqa: F401

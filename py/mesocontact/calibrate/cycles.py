@@ -52,7 +52,8 @@ class CycleFit:
         """The fitted law's force along delta (default: the data's overlaps)."""
         p = self.params
         d = self.delta if delta is None else np.asarray(delta, float)
-        return _theory.normal_force_path(d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12, self.interpolation)
+        return _theory.normal_force_path(d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12,
+                                         self.interpolation)
 
     def bound(self, n):
         """The 95 % bound the cycles put on an undetermined parameter, in words (the data's units)."""
@@ -60,12 +61,15 @@ class CycleFit:
         return _bound_text(self.ci95[n], (self.params["k1"] if floor is None else floor, top), "")
 
     def to_json(self):
-        # An undetermined parameter keeps its number here (studies read these keys as numbers); the reason says what it is.
+        # An undetermined parameter keeps its number here (studies read these keys as numbers); the reason says what it
+        # is.
         return {**{n: self.params[n] for n in CYCLE_PARAMETERS + ("shift",)}, "a12": self.a12,
-                "undetermined_reason": {n: f"undetermined by the cycles: {self.bound(n)}; the value is the fit's point, one "
+                "undetermined_reason": {n: f"undetermined by the cycles: {self.bound(n)}; the value is "
+                                           f"the fit's point, one "
                                         "of many that fit as well" for n in self.undetermined},
                 "k2Interpolation": self.interpolation, "free": self.free, "ci95": _open_ends(self.ci95),
-                "correlation": {"names": self.free, "matrix": _nulls(self.correlation)}, "undetermined": self.undetermined,
+                "correlation": {"names": self.free, "matrix": _nulls(self.correlation)},
+                "undetermined": self.undetermined,
                 "statements": self.statements, "rms_residual": self.rms_residual, "max_residual": self.max_residual,
                 "force_scale": self.force_scale, "rms_relative": self.rms_residual / self.force_scale,
                 "max_relative": self.max_residual / self.force_scale, "chi2_reduced": self.chi2_reduced,
@@ -87,7 +91,8 @@ class CycleFit:
             else:
                 lines.append(f"  {n:5s} = {self.params[n]:.6g}   (fixed)")
         if self.undetermined:
-            lines.append("  (the curve uses the fit's point for " + ", ".join(f"{n} = {self.params[n]:.4g}" for n in self.undetermined)
+            lines.append("  (the curve uses the fit's point for "
+                         + ", ".join(f"{n} = {self.params[n]:.4g}" for n in self.undetermined)
                          + ": one of many that fit as well)")
         lines.append("  branches: " + ", ".join(f"{k} {v}" for k, v in self.branches.items()))
         lines += ["  " + t for t in self.statements]
@@ -155,14 +160,15 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
                          "more points are needed than free parameters")
     overlaps = len(np.unique(d))
     if overlaps < len(free):
-        raise ValueError(f"delta: {overlaps} distinct overlap(s) ({d[0]!r}{', ...' if overlaps > 1 else ''}) cannot determine "
-                         f"{len(free)} free parameters ({', '.join(free)}): F(delta) needs a range of overlaps")
+        raise ValueError(f"delta: {overlaps} distinct overlap(s) ({d[0]!r}{', ...' if overlaps > 1 else ''}) cannot "
+                         f"determine {len(free)} free parameters ({', '.join(free)}): F(delta) needs "
+                         f"a range of overlaps")
     scale = float(np.max(np.abs(F)))
     if not scale > 0:
         raise ValueError("force: every value is 0, there is no contact force to fit")
     if not np.max(F) > 0:  # a fresh contact's first loading pushes (k1 delta > 0) whatever the parameters
-        raise ValueError(f"force: no value is > 0 (the largest is {float(np.max(F))!r}): the law's force is repulsive (> 0) "
-                         "on its first loading; if compression is negative in these data, pass -force")
+        raise ValueError(f"force: no value is > 0 (the largest is {float(np.max(F))!r}): the law's force is repulsive "
+                         "(> 0) on its first loading; if compression is negative in these data, pass -force")
     if np.all(F == F[0]):
         raise ValueError(f"force: all {len(F)} values are {F[0]!r}: a constant force carries no stiffness to fit "
                          "(a wrong column?)")
@@ -171,7 +177,8 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
     else:
         if np.ndim(sigma) == 0 and not _checks.is_number(sigma):
             raise ValueError(f"sigma = {sigma!r} is invalid: must be a number or one per point")
-        s = np.broadcast_to(np.asarray(sigma, float), d.shape) if np.ndim(sigma) == 0 else _checks.finite_array("sigma", sigma)
+        s = (np.broadcast_to(np.asarray(sigma, float), d.shape) if np.ndim(sigma) == 0
+             else _checks.finite_array("sigma", sigma))
         if s.shape != d.shape:
             raise ValueError(f"sigma must be one number or one per point ({len(s)} for {len(d)} points)")
         bad = np.flatnonzero(~(np.isfinite(s) & (s > 0)))
@@ -179,8 +186,9 @@ def _checked(delta, force, a12, free, values, sigma, interpolation, shift):
             raise ValueError(f"sigma[{bad[0]}] = {s[bad[0]]!r} is invalid: must be a finite number > 0")
         bad = np.flatnonzero(s < SIGMA_MIN * scale)
         if bad.size:
-            raise ValueError(f"sigma[{bad[0]}] = {s[bad[0]]!r} is invalid: must be >= {SIGMA_MIN:g} of the largest |force| "
-                             f"({scale!r}): the force is known to its rounding at best, and a smaller error overflows the weights")
+            raise ValueError(f"sigma[{bad[0]}] = {s[bad[0]]!r} is invalid: must be >= {SIGMA_MIN:g} of the largest "
+                             f"|force| ({scale!r}): the force is known to its rounding at best, and a smaller error "
+                             f"overflows the weights")
         w = 1.0 / s
     return d, F, w, free, values
 
@@ -199,7 +207,8 @@ def _guesses(d, F, a12, values):
         k1 = float(np.percentile(F[first] / x[first], 90)) if first.any() else float(np.max(np.abs(F))) / top
         k1 = min(k1, values.get("kp", k1))
     tension = big & (F < 0)
-    kc = values["kc"] if "kc" in values else float(np.percentile(-F[tension] / x[tension], 90)) if tension.any() else 0.0
+    kc = (values["kc"] if "kc" in values
+          else float(np.percentile(-F[tension] / x[tension], 90)) if tension.any() else 0.0)
     out = []
     for kp in ((values["kp"],) if "kp" in values else (2 * k1, 5 * k1, 17 * k1)):
         for reach in ((None,) if "phiF" in values else (0.3, 1.0, 3.0)):
@@ -218,7 +227,8 @@ class _Cycles:
         self.dscale = float(np.max(np.abs(d)))
 
     def force(self, p):
-        return _theory._force_path(self.d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12, self.interpolation, np)[0]
+        return _theory._force_path(self.d - p["shift"], p["k1"], p["kp"], p["kc"], p["phiF"], self.a12,
+                                   self.interpolation, np)[0]
 
     def to_x(self, n, p):
         # the e(v) fit's coordinates (problem._to_x), with kc over the start's k1; the shift is signed
@@ -236,7 +246,8 @@ class _Cycles:
                 r = np.full(len(self.d), np.inf)
             if not np.all(np.isfinite(r)):
                 return np.full(len(self.d), 1e3)  # outside floating point: far from any data
-            return np.clip(r, -1e100, 1e100)  # finite but vast (a trial k of 1e250): the solver's differences stay finite
+            # finite but vast (a trial k of 1e250): the solver's differences stay finite
+            return np.clip(r, -1e100, 1e100)
         return fun
 
     def solve(self, names, fixed, start):
@@ -284,8 +295,8 @@ def fit_cycles(delta, force, a12, free=CYCLE_PARAMETERS, values=None, sigma=None
         else:
             s2, chi2, sigma_used = 1.0, ssr_min / (n - k), float(np.median(1 / w))
         if sigma is None and ssr_min < 1e-24 * n:  # rms below 1e-12 of the largest |F|
-            raise ValueError("force: the fit passes through every point (to 1e-12 of the largest |F|): without sigma the noise, "
-                             "and so any interval, cannot be estimated; give sigma")
+            raise ValueError("force: the fit passes through every point (to 1e-12 of the largest |F|): without sigma "
+                             "the noise, and so any interval, cannot be estimated; give sigma")
         ci, corr, undetermined, statements = _identify(pb, free, p, s2)
         ci_jacobian = _open_ends({m: list(v) for m, v in ci.items()})
         better = _profile(pb, p, ssr_min, s2, ci, undetermined, statements)
@@ -294,6 +305,7 @@ def fit_cycles(delta, force, a12, free=CYCLE_PARAMETERS, values=None, sigma=None
         starts = [better] + starts  # a profile refit beat the fit: start again from it
     counts, coverage = _coverage(pb, p)
     scale = float(np.max(np.abs(F)))
-    return CycleFit(p, free, a12, interpolation, d, F, ci, corr, [m for m in free if m in undetermined], coverage + statements,
+    return CycleFit(p, free, a12, interpolation, d, F, ci, corr, [m for m in free if m in undetermined],
+                    coverage + statements,
                     float(np.sqrt(np.mean(res ** 2))), float(np.max(np.abs(res))), scale, chi2, sigma_used, counts,
                     time.time() - t0, extra={"ci95_jacobian": ci_jacobian})

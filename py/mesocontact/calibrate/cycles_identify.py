@@ -32,7 +32,8 @@ def _jacobian(pb, names, p):
             if n == "phiF" and hi[n] > 1:
                 hi[n] = p[n]
             linear.append(False)
-        step = (math.log(hi[n] / lo[n]) if not linear[-1] else (hi[n] - lo[n]) / (pb.dscale if n == "shift" else pb.kscale))
+        step = (math.log(hi[n] / lo[n]) if not linear[-1]
+                else (hi[n] - lo[n]) / (pb.dscale if n == "shift" else pb.kscale))
         # a value so small that the step does not move it (a subnormal) has no derivative: the data do not see it
         cols.append((pb.force(hi) - pb.force(lo)) * pb.w / step if step else np.zeros(len(pb.d)))
     return np.array(cols).T, linear
@@ -83,8 +84,8 @@ def _coverage(pb, p):
         out.append("no un- or re-loading point: kp and phiF are not seen")
     elif dm < dmp:
         comb = "(kp - k1)^2/(kp phiF)" if pb.interpolation == "linear" else "(kp - k1)^2/(kp phiF) (k2 with sqrt)"
-        out.append(f"largest deltaMax {dm:.4g} below deltaMax^p = {dmp:.4g} (chi = {dm / dmp:.3g}): the limit branch is not seen, "
-                   f"kp and phiF act only through k2(deltaMax), i.e. through {comb}")
+        out.append(f"largest deltaMax {dm:.4g} below deltaMax^p = {dmp:.4g} (chi = {dm / dmp:.3g}): the limit branch "
+                   f"is not seen, kp and phiF act only through k2(deltaMax), i.e. through {comb}")
     return counts, out
 
 
@@ -96,12 +97,14 @@ def _moves(m, p, pb):
     f, v = UNDETERMINED_FACTOR, p[m]
     at_k1 = m == "kp" and not v / p["k1"] - 1 > 1e-12
     if m == "shift" or (m == "kc" and v <= 1e-12 * pb.kscale) or at_k1:
-        ends = [(0, v - pb.dscale), (1, v + pb.dscale)] if m == "shift" else [(1, 2 * p["k1"] if at_k1 else 0.1 * pb.kscale)]
+        ends = ([(0, v - pb.dscale), (1, v + pb.dscale)] if m == "shift"
+                else [(1, 2 * p["k1"] if at_k1 else 0.1 * pb.kscale)])
         return [(k, e, lambda t, e=e: v + t * (e - v), lambda x, e=e: (x - v) / (e - v)) for k, e in ends]
     k1 = p["k1"]
     g, g_inv = ((lambda x: x / k1 - 1), (lambda y: k1 * (1 + y))) if m == "kp" else ((lambda x: x), (lambda y: y))
     y = g(v)
-    ends = [(0, g_inv(y / f))] + ([(1, min(v * f, 1.0) if m == "phiF" else g_inv(y * f))] if m != "phiF" or v < 1 else [])
+    ends = [(0, g_inv(y / f))] + ([(1, min(v * f, 1.0) if m == "phiF" else g_inv(y * f))] if m != "phiF" or v < 1
+                                  else [])
     return [(k, e, lambda t, e=e: g_inv(y * (g(e) / y) ** t),
              lambda x, e=e: math.log(g(x) / y) / math.log(g(e) / y) if g(x) > 0 else math.inf) for k, e in ends]
 
@@ -118,7 +121,8 @@ def _profile(pb, p, ssr_min, s2, ci, undetermined, statements):
     def refit(m, value, seeds):
         fixed = dict(p, **{m: value})
         others = [n for n in pb.free if n != m]
-        ssr, q = pb.best(others, fixed, [dict(s, **{m: value}) for s in seeds], len(seeds)) if others else (pb.ssr(fixed), fixed)
+        ssr, q = (pb.best(others, fixed, [dict(s, **{m: value}) for s in seeds], len(seeds)) if others
+                  else (pb.ssr(fixed), fixed))
         if ssr < better[0]:
             better[:] = [ssr, q]
         return (ssr - ssr_min) / s2, q
@@ -139,8 +143,8 @@ def _profile(pb, p, ssr_min, s2, ci, undetermined, statements):
                 if m not in undetermined:
                     undetermined.append(m)
                 growth = round(growth, 2) + 0.0  # no "-0.00"
-                statements.append(f"{m}: set to {moved:.4g} with the others refitted it fits as well ({growth:+.2f} noise^2; "
-                                  f"95 % threshold {PROFILE_CHI2:.2f})")
+                statements.append(f"{m}: set to {moved:.4g} with the others refitted it fits as well ({growth:+.2f} "
+                                  f"noise^2; 95 % threshold {PROFILE_CHI2:.2f})")
                 continue
             rise = lambda t: refit(m, path(t), [prev])[0] - PROFILE_CHI2  # noqa: E731
             try:

@@ -11,7 +11,8 @@ from .. import theory as _theory
 
 PARAMETERS = ("k1", "kp", "kc", "phiF", "fa")
 AGAINST = ("particle", "wall")
-UNITS = {"k1": "N/m", "kp": "N/m", "kc": "N/m", "phiF": "", "fa": "N", "kca": "N/m"}  # SI units of the fitted parameters
+# SI units of the fitted parameters
+UNITS = {"k1": "N/m", "kp": "N/m", "kc": "N/m", "phiF": "", "fa": "N", "kca": "N/m"}
 SIGMA_MIN = 1e-15                 # a restitution's error below this is below e's rounding (and its weight overflows)
 
 
@@ -59,8 +60,10 @@ def check_data(v, e, sigma=None, source="data"):
         raise DataError(f"{source}: v and e must be two lists of the same length (got {v.shape} and {e.shape})")
     if len(v) == 0:
         raise DataError(f"{source}: no data points")
-    for name, x, ok, need in (("v", v, lambda a: np.isfinite(a) & (a > 0), "a finite speed > 0 [m/s] (the approach speed)"),
-                              ("e", e, lambda a: np.isfinite(a) & (a >= 0) & (a <= 1), "in [0, 1] (e = 0: the pair stuck)")):
+    for name, x, ok, need in (("v", v, lambda a: np.isfinite(a) & (a > 0),
+                               "a finite speed > 0 [m/s] (the approach speed)"),
+                              ("e", e, lambda a: np.isfinite(a) & (a >= 0) & (a <= 1),
+                               "in [0, 1] (e = 0: the pair stuck)")):
         bad = np.flatnonzero(~ok(x))
         if bad.size:
             raise DataError(f"{source}: {name} = {x[bad[0]]!r} at point {bad[0] + 1} is invalid: must be {need}")
@@ -70,10 +73,12 @@ def check_data(v, e, sigma=None, source="data"):
             raise DataError(f"{source}: sigma must have one value per point ({sigma.shape} for {v.shape})")
         bad = np.flatnonzero(~(np.isfinite(sigma) & (sigma > 0)))
         if bad.size:
-            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be a finite number > 0")
+            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be "
+                            f"a finite number > 0")
         bad = np.flatnonzero(sigma < SIGMA_MIN)
         if bad.size:
-            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must be >= {SIGMA_MIN:g} "
+            raise DataError(f"{source}: sigma = {sigma[bad[0]]!r} at point {bad[0] + 1} is invalid: must "
+                            f"be >= {SIGMA_MIN:g} "
                             "(e is known to its rounding at best; a smaller error overflows the fit's weights)")
     return Data(v, e, sigma, source)
 
@@ -95,7 +100,8 @@ def load_data(path):
         raise DataError(f"{path}: column {twice[0]!r} appears {header.count(twice[0])} times in the header {header}")
     for need in ("v", "e"):
         if need not in header:
-            raise DataError(f"{path}: column {need!r} is missing (the header is {header}; needed: v, e and optionally sigma)")
+            raise DataError(f"{path}: column {need!r} is missing (the header is {header}; needed: v, e "
+                            f"and optionally sigma)")
     cols = {name: [] for name in header}
     for n, row in enumerate(reader, start=2):
         if len(row) != len(header):

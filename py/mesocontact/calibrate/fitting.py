@@ -8,7 +8,8 @@ import numpy as np
 
 from .. import theory as _theory
 from .data import PARAMETERS, UNITS, Data, Setup
-from .identify import _coverage_statements, _edge_statements, _identify, _kca_response, _kca_statements, _regimes, v_p_edge
+from .identify import (_coverage_statements, _edge_statements, _identify, _kca_response, _kca_statements, _regimes,
+                       v_p_edge)
 from .problem import _check_result, _count, _multistart, _noise, _Problem, _validated
 from .profile import _BOUND_END, PROFILE_CHI2, _bootstrap, _Profile
 
@@ -99,10 +100,12 @@ class Fit:
             lines.append(f"  kca   = {s.kca:.6g} N/m   (assumed, not fitted: the fit holds for it, see below)")
         if self.v_p is not None:
             lines.append(f"  v_p   = {self.v_p:.4g} m/s   (the fit's plastic-limit speed, Eq. 19"
-                         + (f"; at the data's {' and '.join(e['side'] for e in self.v_p_edge)} edge" if self.v_p_edge else "") + ")")
+                         + (f"; at the data's {' and '.join(e['side'] for e in self.v_p_edge)} edge" if self.v_p_edge
+                            else "") + ")")
         if self.undetermined:
             lines.append("  (the curve, the regimes and the YADE check use the fit's point for "
-                         + ", ".join(f"{n} = {self.params[n]:.4g}" + (" " + UNITS[n] if UNITS[n] else "") for n in self.undetermined)
+                         + ", ".join(f"{n} = {self.params[n]:.4g}" + (" " + UNITS[n] if UNITS[n] else "")
+                                     for n in self.undetermined)
                          + ": one of many that fit as well)")
         lines.append("  regimes: " + ", ".join(f"{k} {v}" for k, v in self.regimes.items()))
         lines += ["  " + t for t in self.statements]
@@ -115,7 +118,8 @@ def _bound_text(ci, ends, unit):
     lo, hi = ci
     u = (" " + unit) if unit else ""
     floor, top = ends
-    has_lo = lo is not None and math.isfinite(lo) and (lo > floor + 1e-12 * abs(floor) if math.isfinite(floor) else True)
+    has_lo = lo is not None and math.isfinite(lo) and (lo > floor + 1e-12 * abs(floor) if math.isfinite(floor)
+                                                       else True)
     has_hi = hi is not None and math.isfinite(hi) and (hi < top - 1e-12 * abs(top) if math.isfinite(top) else True)
     if has_lo and has_hi:
         return f"between {lo:.3g} and {hi:.3g}{u}"
@@ -150,7 +154,8 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     t0 = time.time()
     starts, bootstrap, seed = _count("starts", starts, 1), _count("bootstrap", bootstrap, 0), _count("seed", seed, 0)
     for attempt in range(RESTARTS + 1):
-        data, setup, free, values = _validated(data, radius, density, against, adhesion, kca, interpolation, free, values)
+        data, setup, free, values = _validated(data, radius, density, against, adhesion, kca, interpolation, free,
+                                               values)
         pb = _Problem(data, setup, free, values, seed)
         best, p = _multistart(pb, starts)
         _check_result(p, free, "these e(v)")
@@ -170,7 +175,8 @@ def fit(data, radius, density, against="particle", adhesion="none", kca=math.inf
     v_p = _theory.plastic_limit_velocity(p["k1"], p["kp"], p["phiF"], setup.a12, setup.m_r,
                                          p["fa"] if setup.adhesion != "none" else 0.0)
     edges = v_p_edge(data.v, v_p)
-    response = _kca_response(free, p, setup, data, pb.w) if setup.adhesion != "none" and math.isfinite(setup.kca) else None
+    response = (_kca_response(free, p, setup, data, pb.w) if setup.adhesion != "none" and math.isfinite(setup.kca)
+                else None)
     statements = (_coverage_statements(setup, p, data, free) + _edge_statements(edges, v_p, undetermined) + statements
                   + _kca_statements(setup, response or {}))
     boot = _bootstrap(pb, best.x, bootstrap) if bootstrap else {}

@@ -57,15 +57,17 @@ def contact_duration(chi, eta, beta, interpolation="linear"):
     if not (_checks.is_number(chi) and 0 < chi <= 1):
         raise ValueError(f"chi = {chi!r} is invalid: must lie in (0, 1] (below v_p)")
     if _theory.en_squared(chi, eta, beta, interpolation) <= 0:
-        raise ValueError(f"chi = {chi!r} with eta = {eta!r}, beta = {beta!r}: the pair sticks, the contact does not end")
+        raise ValueError(f"chi = {chi!r} with eta = {eta!r}, beta = {beta!r}: the pair sticks, the contact does "
+                         "not end")
     phiF = 0.5 if eta > 0 else 1.0  # any: chi carries the scale
     v = _theory.impact_velocity_for_chi(chi, 1.0, 1.0 + eta, phiF, 1.0, 1.0)
     t = _theory.contact_duration(v, 1.0, 1.0 + eta, beta, phiF, 1.0, 1.0, interpolation=interpolation)
     if not math.isfinite(t):  # the pair rebounds (above), so its contact ends: an inf is the closed form's rounding
         e = _theory.restitution_fa0(chi, eta, beta, interpolation)
-        raise ValueError(f"chi = {chi!r}, eta = {eta!r}, beta = {beta!r}: the pair rebounds (e = {e:.3g}) but the closed-form "
-                         "duration is not finite there: it loses its precision for a pair that barely leaves (e near 0) "
-                         "or a tensile branch far weaker than k1 (use beta = 0 for beta below about 1e-16)")
+        raise ValueError(f"chi = {chi!r}, eta = {eta!r}, beta = {beta!r}: the pair rebounds (e = {e:.3g}) but the "
+                         "closed-form duration is not finite there: it loses its precision for a pair that barely "
+                         "leaves (e near 0) or a tensile branch far weaker than k1 (use beta = 0 for "
+                         "beta below about 1e-16)")
     return t
 
 
@@ -103,12 +105,13 @@ def from_restitution_and_contact_time(e, t_c, v, eta, beta, radius, density, aga
     m_r, a12 = geometry(radius, density, against)
     k1 = m_r * (contact_duration(chi, eta, beta, interpolation) / t_c) ** 2
     if not (math.isfinite(k1) and k1 >= sys.float_info.min):  # before phiF, which would blame the overlap
-        raise ValueError(f"e = {e!r}, t_c = {t_c!r} with eta = {eta!r}, beta = {beta!r}: k1 = m_r (duration/t_c)^2 = {k1!r} N/m "
-                         f"is out of floating-point range (chi = {chi:.6g}, m_r = {m_r:.4g} kg)")
+        raise ValueError(f"e = {e!r}, t_c = {t_c!r} with eta = {eta!r}, beta = {beta!r}: k1 = m_r "
+                         f"(duration/t_c)^2 = {k1!r} N/m is out of floating-point range (chi = {chi:.6g}, "
+                         f"m_r = {m_r:.4g} kg)")
     phiF = _phiF_for(v / chi, k1, eta, m_r, a12)
     if not 0 < phiF <= 1:
-        raise ValueError(f"t_c = {t_c!r} and v = {v!r} need phiF = {phiF:.4g}, outside (0, 1]: the overlap would exceed "
-                         "the particle's size")
+        raise ValueError(f"t_c = {t_c!r} and v = {v!r} need phiF = {phiF:.4g}, outside (0, 1]: the overlap would "
+                         "exceed the particle's size")
     return {"k1": k1, "kp": (1 + eta) * k1, "kc": beta * k1, "phiF": phiF, "chi": chi}
 
 
@@ -131,10 +134,12 @@ def material(params, adhesion=None, kca=None, interpolation=None, density=None):
             continue
         if fit_value is not None and given != fit_value:
             unit = {"kca": " N/m", "density": " kg/m^3"}.get(name, "")
-            warnings.warn(f"calibrate.material: {name} = {given!r}{unit} overrides the fit's {fit_value!r}{unit}: the fitted "
-                          f"parameters hold for {fit_value!r}, and e(v) with {given!r} differs", UserWarning, stacklevel=2)
+            warnings.warn(f"calibrate.material: {name} = {given!r}{unit} overrides the fit's {fit_value!r}{unit}: the "
+                          f"fitted parameters hold for {fit_value!r}, and e(v) with {given!r} differs", UserWarning,
+                          stacklevel=2)
         chosen[name] = given
-    adhesion, kca, interpolation, density = chosen["adhesion"], chosen["kca"], chosen["interpolation"], chosen["density"]
+    adhesion, kca, interpolation, density = (chosen["adhesion"], chosen["kca"], chosen["interpolation"],
+                                             chosen["density"])
     if adhesion not in _theory.ADHESION_MODES:
         raise ValueError(f"adhesion = {adhesion!r} is invalid: must be one of {_theory.ADHESION_MODES}")
     if interpolation not in _theory.K2_INTERPOLATIONS:
@@ -149,8 +154,8 @@ def material(params, adhesion=None, kca=None, interpolation=None, density=None):
     fa = values.get("fa", 0.0)
     _checks.nonnegative("fa", fa)
     if fa > 0 and adhesion == "none" and "adhesion" not in known:  # dropping fa would change e(v) unnoticed
-        raise ValueError(f"fa = {fa!r} N > 0 with adhesion 'none': a plain dict does not say the fit's adhesion; pass the Fit "
-                         "itself (calibrate.material(fit)) or adhesion='reversible' or 'jumpIn'")
+        raise ValueError(f"fa = {fa!r} N > 0 with adhesion 'none': a plain dict does not say the fit's adhesion; pass "
+                         "the Fit itself (calibrate.material(fit)) or adhesion='reversible' or 'jumpIn'")
     if undetermined:
         warnings.warn("calibrate.material: " + ", ".join(f"{n} = {values[n]:.4g}" for n in undetermined)
                       + " taken from the fit's point: the data leave " + ("it" if len(undetermined) == 1 else "them")
@@ -174,8 +179,8 @@ def _calibration(fitted):
             known["density"] = fitted.density
         return dict(fitted.params), known, list(fitted.undetermined)
     if not hasattr(fitted, "keys"):
-        raise TypeError(f"params = {fitted!r:.80} is invalid: must be a calibrate.Fit, calibration.json's dict or a dict of "
-                        "k1, kp, kc, phiF[, fa]")
+        raise TypeError(f"params = {fitted!r:.80} is invalid: must be a calibrate.Fit, calibration.json's dict or a "
+                        "dict of k1, kp, kc, phiF[, fa]")
     known = {}
     if "adhesion" in fitted:
         known["adhesion"] = fitted["adhesion"]
@@ -185,5 +190,6 @@ def _calibration(fitted):
     if fitted.get("density") is not None and "adhesion" in fitted:  # calibration.json: the command's density
         known["density"] = fitted["density"]
     point = fitted.get("fit_point") or {}  # calibration.json: an undetermined parameter is null, its fit's point here
-    values = {n: point[n] if fitted.get(n) is None and n in point else fitted[n] for n in PARAMETERS if n in fitted or n in point}
+    values = {n: point[n] if fitted.get(n) is None and n in point else fitted[n]
+              for n in PARAMETERS if n in fitted or n in point}
     return values, known, [n for n in fitted.get("undetermined", []) if n in values]

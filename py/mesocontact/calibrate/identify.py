@@ -77,8 +77,8 @@ def _combinations(names, sv, Vt, s2, what):
             continue
         ref = max(involved, key=lambda t: abs(t[1]))[1]
         moves = ", ".join(f"{n} x lambda^{c / ref:+.2f}" for n, c in involved)
-        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; {what} stays the same "
-                          f"(to the noise) along {moves}; fix one of them")
+        statements.append(f"{', '.join(n for n, _ in involved)}: the data fix only a combination; {what} stays "
+                          f"the same (to the noise) along {moves}; fix one of them")
     return statements
 
 
@@ -162,15 +162,17 @@ def _edge_statements(edges, v_p, undetermined=()):
     for e in edges:
         n, speed = e["points"], e["speed"]
         if e["side"] == "fast":
-            out.append(f"v_p = {v_p:.4g} m/s lies at the fast edge of the data: {n} point{'' if n == 1 else 's'} faster than it "
-                       f"(fewer than {EDGE_POINTS}; the fastest at {speed:.4g} m/s), so "
+            out.append(f"v_p = {v_p:.4g} m/s lies at the fast edge of the data: {n} point{'' if n == 1 else 's'} "
+                       f"faster than it (fewer than {EDGE_POINTS}; the fastest at {speed:.4g} m/s), so "
                        + ("one point sets v_p" if n == 1 else "the trend towards the fastest points alone sets v_p")
                        + "; beyond v_p the fitted e(v) climbs back towards 1 (Eq. 33), which the data do not show: "
                        f"use the curve only up to {speed:.4g} m/s, or measure faster")
         else:
-            out.append(f"v_p = {v_p:.4g} m/s lies at the slow edge of the data: {n} point{'' if n == 1 else 's'} slower than it "
-                       f"(fewer than {EDGE_POINTS}; the slowest at {speed:.4g} m/s), so e(v) below v_p (Eq. 32) rests on "
-                       + ("one point" if n == 1 else "no point") + f": use the curve only down to {speed:.4g} m/s, or measure slower")
+            out.append(f"v_p = {v_p:.4g} m/s lies at the slow edge of the data: {n} point{'' if n == 1 else 's'} "
+                       f"slower than it (fewer than {EDGE_POINTS}; the slowest at {speed:.4g} m/s), so e(v) below "
+                       f"v_p (Eq. 32) rests on "
+                       + ("one point" if n == 1 else "no point")
+                       + f": use the curve only down to {speed:.4g} m/s, or measure slower")
     if loose and out:
         out[-1] += f" ({', '.join(loose)} undetermined: this v_p is the fit's point's, one of many that fit as well)"
     return out
@@ -183,7 +185,8 @@ def _kca_response(names, p, setup, data, w):
     left out too (no logarithm)."""
     J, at_zero = _log_jacobian(names, p, setup, data, w)
     h = 1e-5
-    moved = [Setup(setup.m_r, setup.a12, setup.adhesion, setup.kca * math.exp(s * h), setup.interpolation) for s in (-1, 1)]
+    moved = [Setup(setup.m_r, setup.a12, setup.adhesion, setup.kca * math.exp(s * h), setup.interpolation)
+             for s in (-1, 1)]
     j = (moved[1].curve(data.v, p) - moved[0].curve(data.v, p)) * w / (2 * h)
     dx = -np.linalg.lstsq(J, j, rcond=NULL_RCOND)[0]
     return {n: float(dx[i]) for i, n in enumerate(names) if not at_zero[i]}
@@ -197,9 +200,9 @@ def _kca_statements(setup, response):
         return ["kca = inf is assumed, not fitted (--kca): no pull-off tail; a finite kca adds the tail's energy "
                 "fa^2/(2 kca) to what e(v) sees, and the fit then gives another fa"]
     moves = [(n, s) for n, s in response.items() if abs(s) > 0.01]
-    head = (f"kca = {setup.kca:.4g} N/m is assumed, not fitted (--kca), and the fit holds for it: e(v) sees the non-contact "
-            "force through fa in contact and the pull-off tail's energy fa^2/(2 kca), so what the data fix is fa together "
-            "with kca")
+    head = (f"kca = {setup.kca:.4g} N/m is assumed, not fitted (--kca), and the fit holds for it: e(v) sees the "
+            "non-contact force through fa in contact and the pull-off tail's energy fa^2/(2 kca), so what the data fix "
+            "is fa together with kca")
     if not moves:
         return [head + "; at these speeds the fit hardly moves with kca (every d ln p/d ln kca below 0.01)"]
     # x2, not x10: the slopes change along a decade of kca (measured: x2.5 predicted, x1.98 refitted)

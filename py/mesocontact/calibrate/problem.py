@@ -82,7 +82,8 @@ def _residuals(names, fixed, scale, setup, data, w, seen=None):
         try:
             p = _from_x(names, x, fixed, scale)
             r = (setup.curve(data.v, p) - data.e) * w
-        except (ValueError, OverflowError):  # outside the law's domain (e.g. an impact beyond floating point): far from any data
+        # outside the law's domain (e.g. an impact beyond floating point): far from any data
+        except (ValueError, OverflowError):
             return np.full(len(data.v), 10.0) * w
         if seen is not None:
             seen.append((float(r @ r), p))
@@ -170,7 +171,8 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
     if len(set(free)) != len(free):
         raise ValueError(f"free = {free}: a parameter is named twice")
     if adhesion == "none" and "fa" in free:
-        raise ValueError("free parameter 'fa' needs adhesion 'reversible' or 'jumpIn' (with adhesion 'none' fa does nothing)")
+        raise ValueError("free parameter 'fa' needs adhesion 'reversible' or 'jumpIn' (with adhesion "
+                         "'none' fa does nothing)")
     if adhesion != "none" and not (_checks.is_number(kca) and kca > 0):
         raise ValueError(f"kca = {kca!r} is invalid: must be > 0 with adhesion {adhesion!r} (inf allowed for 'jumpIn')")
     if adhesion == "reversible" and not math.isfinite(kca):
@@ -193,7 +195,8 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
         raise ValueError(f"no value for {', '.join(missing)}: fixed parameters need a value (k1 also when free, as its "
                          "starting guess; e(v) alone cannot fix the stiffness scale)")
     if len(data.v) < len(free):
-        raise DataError(f"{data.source}: {len(data.v)} points cannot fix {len(free)} free parameters ({', '.join(free)})")
+        raise DataError(f"{data.source}: {len(data.v)} points cannot fix {len(free)} free parameters "
+                        f"({', '.join(free)})")
     values.setdefault("kp", values["k1"] * 5.0)
     values.setdefault("phiF", 0.1)
     _theory.check_law(values["k1"], values["kp"], values["phiF"], a12)
@@ -201,15 +204,16 @@ def _validated(data, radius, density, against, adhesion, kca, interpolation, fre
         values["kp"] = values["k1"] * 1.5
     speeds = len(np.unique(data.v))
     if speeds < len(free):
-        raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters ({', '.join(free)}): "
+        raise DataError(f"{data.source}: {speeds} distinct speed(s) cannot determine {len(free)} free parameters "
+                        f"({', '.join(free)}): "
                         "measure at more speeds or fix some (free=...)")
     for i, v in enumerate(data.v):  # the fit moves from here: a collision outside floating point is named now
         try:
             setup.outcome(float(v), values)
         except ValueError as e:
             raise DataError(f"{data.source}: v = {v!r} at point {i + 1}: the collision with the starting values (k1 = "
-                            f"{values['k1']!r} N/m, kp = {values['kp']!r} N/m, phiF = {values['phiF']!r}; m_r = {m_r:.4g} kg, "
-                            f"a12 = {a12:.4g} m) cannot be computed: {e}") from None
+                            f"{values['k1']!r} N/m, kp = {values['kp']!r} N/m, phiF = {values['phiF']!r}; "
+                            f"m_r = {m_r:.4g} kg, a12 = {a12:.4g} m) cannot be computed: {e}") from None
     return data, setup, free, values
 
 
@@ -257,7 +261,8 @@ class _Problem:
         on_data = data is None
         fun = _residuals(names, fix, self.scale, self.setup, self.data if on_data else data, self.w if on_data else w,
                          self.seen if on_data else None)
-        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12, gtol=1e-12,
+        return least_squares(fun, x0, bounds=_bounds(names), x_scale="jac", method="trf", xtol=1e-12, ftol=1e-12,
+                             gtol=1e-12,
                              max_nfev=max_nfev)
 
     def best_of(self, names, fix, starts_p, explore=False):
@@ -265,7 +270,8 @@ class _Problem:
         EXPLORE_NFEV steps only and the best EXPLORE_KEPT of those are refitted to convergence
         (many starts end on the same plateau; only which basin a start reaches matters)."""
         lo, hi = _bounds(names)
-        xs = [np.clip([_to_x(n, p0, self.scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12) for p0 in starts_p]
+        xs = [np.clip([_to_x(n, p0, self.scale) for n in names], np.array(lo) + 1e-12, np.array(hi) - 1e-12)
+              for p0 in starts_p]
         if explore and len(xs) > EXPLORE_KEPT:
             short = sorted((self.solve(names, fix, x0, EXPLORE_NFEV) for x0 in xs), key=lambda r: r.cost)
             xs = [r.x for r in short[:EXPLORE_KEPT]]
@@ -283,14 +289,16 @@ class _Problem:
 
     def grid(self, names, fix):
         """The grid starts (_grid_starts), best sum of squares first."""
-        return sorted(_grid_starts(names, fix, self.setup, self.data, self.grid_rng), key=lambda q: self.ssr_of(names, fix, q))
+        return sorted(_grid_starts(names, fix, self.setup, self.data, self.grid_rng),
+                      key=lambda q: self.ssr_of(names, fix, q))
 
 
 def _multistart(pb, starts):
     """The best local fit from the given values, `starts` - 1 random starts on grids of the
     dimensionless groups and the SCREEN_POLISHED best grid starts: (least_squares result, parameters)."""
     grid = pb.grid(pb.free, pb.fixed)
-    best = pb.best_of(pb.free, pb.fixed, _starts(pb.free, pb.values, pb.setup, pb.data, starts, pb.rng) + grid[:SCREEN_POLISHED])
+    best = pb.best_of(pb.free, pb.fixed,
+                      _starts(pb.free, pb.values, pb.setup, pb.data, starts, pb.rng) + grid[:SCREEN_POLISHED])
     return best, pb.params(pb.free, best.x, pb.fixed)
 
 
@@ -301,7 +309,7 @@ def _noise(data, res, k):
     if data.sigma is not None:
         return 1.0, float(np.sum((res / data.sigma) ** 2) / max(n - k, 1)), float(np.median(data.sigma))
     if n <= k or float(np.sum(res ** 2)) < 1e-24 * n:
-        raise DataError(f"{data.source}: the fit passes through every point ({n} points, {k} free parameters): without a sigma "
-                        "column the noise, and so any interval, cannot be estimated; give sigma or more points")
+        raise DataError(f"{data.source}: the fit passes through every point ({n} points, {k} free parameters): without "
+                        "a sigma column the noise, and so any interval, cannot be estimated; give sigma or more points")
     s2 = float(np.sum(res ** 2) / max(n - k, 1))
     return s2, None, math.sqrt(s2)

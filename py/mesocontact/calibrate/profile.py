@@ -15,7 +15,8 @@ PROFILE_STARTS = 6                # random starts at the factor's value (the fit
 MUTATIONS = (0.01, 100.0)  # factors on the scan neighbour's values, one parameter at a time
 
 # a side of a parameter's interval that the data leave open
-_BOUND_END = {"k1": (0.0, math.inf), "kp": (None, math.inf), "kc": (0.0, math.inf), "phiF": (0.0, 1.0), "fa": (0.0, math.inf)}
+_BOUND_END = {"k1": (0.0, math.inf), "kp": (None, math.inf), "kc": (0.0, math.inf), "phiF": (0.0, 1.0),
+              "fa": (0.0, math.inf)}
 
 
 def _profile_values(m, p, setup, data):
@@ -246,4 +247,5 @@ def _bootstrap(pb, x, n_resamples):
         r = pb.solve(pb.free, pb.fixed, x, data=d, w=pb.w[idx])
         samples.append([pb.params(pb.free, r.x, pb.fixed)[m] for m in pb.free])
     samples = np.array(samples)
-    return {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))] for i, m in enumerate(pb.free)}
+    return {m: [float(np.percentile(samples[:, i], 2.5)), float(np.percentile(samples[:, i], 97.5))]
+            for i, m in enumerate(pb.free)}

@@ -17,7 +17,8 @@ def yade_check(fitted, velocities, radius, density, against="particle", progress
     with warnings.catch_warnings():  # the report said which parameters are undetermined; the check runs the fit's point
         warnings.simplefilter("ignore", UserWarning)
         mat = material(fitted, density=density)
-    point = fitted.get("fit_point") or fitted  # calibration.json before the fit's point was written: the values themselves
+    # calibration.json before the fit's point was written: the values themselves
+    point = fitted.get("fit_point") or fitted
     setup = Setup(*geometry(radius, density, against), fitted["adhesion"], kca, fitted["k2Interpolation"])
     out = []
     for i, v in enumerate(velocities):
@@ -27,7 +28,8 @@ def yade_check(fitted, velocities, radius, density, against="particle", progress
         e_fit = float(setup.curve(float(v), point)[0])
         out.append((float(v), float(r.e), e_fit))
         if progress:
-            print(f"  YADE check {i + 1}/{len(velocities)}: v = {v:.4g} m/s  e_yade = {r.e:.5f}  e_fit = {e_fit:.5f}", flush=True)
+            print(f"  YADE check {i + 1}/{len(velocities)}: v = {v:.4g} m/s  e_yade = {r.e:.5f}  e_fit = {e_fit:.5f}",
+                  flush=True)
     return out
 
 

@@ -4,13 +4,13 @@ From the carved, relaxed pair (make.ensure) the second agglomerate is moved alon
 direction (``axis``, default x: the pair as carved; another direction first places the second
 agglomerate beside the first along it, make.place_along, so that other faces meet) until its
 surface lies ``gap`` d0 from the first's (make.move_to_gap), and each is given half the relative
-speed towards the other, every particle the same velocity and no spin. There is no background drag: a collision's losses are the contacts'
-own (viscous, plastic, and what breaks). The run ends when no contact has joined the two for
-``quiet`` of the touch's duration so far and the smallest gap between their surfaces has grown
-over PARTING checks (head-on, or sliding past each other where the faces that meet are tilted to
-the approach), or when the two largest
-fragments, one from each agglomerate, are separate clusters moving apart (particles they exchanged
-may still join them), or after ``max_time`` (default STUCK_AFTER primary contact times; then the
+speed towards the other, every particle the same velocity and no spin. There is no background drag:
+a collision's losses are the contacts' own (viscous, plastic, and what breaks). The run ends when no
+contact has joined the two for ``quiet`` of the touch's duration so far and the smallest gap between
+their surfaces has grown over PARTING checks (head-on, or sliding past each other where the faces
+that meet are tilted to the approach), or when the two largest fragments, one from each
+agglomerate, are separate clusters moving apart (particles they exchanged may still join them), or
+after ``max_time`` (default STUCK_AFTER primary contact times; then the
 agglomerates are read as stuck together if one cluster holds most of both).
 
 Read at the end: the fragments (connected clusters through contacts in overlap); the two
@@ -35,10 +35,11 @@ from yade import Vector3
 from yade import wrapper as _w
 
 from mesocontact import loop as _loop
-from mesostudies.tablet import sample
-from mesostudies.tablet import snapshots as _snapshots
-from mesostudies.tablet.uniaxial import _before_newton
+from mesocontact.bulk import pictures as _pictures
+from mesocontact.bulk import sample
+from mesocontact.bulk.uniaxial import before_newton as _before_newton
 from . import make
+from .primaries import D0, KP
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
 PARTING = 4  # checks over which the surface gap must grow before a run ends (the surfaces' vibration is noise)
@@ -49,7 +50,7 @@ class Collision:
     def __init__(self, members, radii, every=20, axis=make.X_AXIS):
         self.members = [list(m) for m in members]
         self.radii = list(radii)
-        self.n = Vector3(*make._frame(axis)[0])
+        self.n = Vector3(*make.axis_frame(axis)[0])
         if tuple(axis) != make.X_AXIS:
             make.place_along(self.members[0], self.members[1], axis, self.radii)
         self.owner = {i: k for k, m in enumerate(self.members) for i in m}
@@ -70,9 +71,9 @@ class Collision:
         """(contacts in overlap joining the two, the sum of their normal forces on the second
         agglomerate's particles)."""
         count, f = 0, Vector3(0, 0, 0)
-        for I, on_id2 in make.joining(*self.members):
+        for inter, on_id2 in make.joining(*self.members):
             count += 1
-            f += I.phys.normalForce if on_id2 else -I.phys.normalForce  # Law2: +normalForce acts on id2
+            f += inter.phys.normalForce if on_id2 else -inter.phys.normalForce  # Law2: +normalForce acts on id2
         return count, f
 
     def _watch(self):
@@ -89,7 +90,7 @@ class Collision:
     def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None):
         """One collision at relative speed v_rel [mm/us]; returns its outcome (a dict). The gap is
         at most what the pair crosses in APPROACH us. ``snapshot``: a PNG of the end state."""
-        d0 = sample.D0
+        d0 = D0
         c = [make.centre_of_mass(m)[0].dot(self.n) for m in self.members]
         side = self._side = 1.0 if c[1] > c[0] else -1.0
         make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH), tuple(self.n))
@@ -115,17 +116,21 @@ class Collision:
                 state = "apart" if apart else "joined"
                 gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
                 if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])):
-                    break  # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
+                    # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
+                    break
                 if O.time - self.first > 5 * chunk * O.dt and self._parted():
-                    state = "parted"  # the two largest fragments, one from each, separate; exchanged particles still join them
+                    # the two largest fragments, one from each, separate; exchanged particles still join them
+                    state = "parted"
                     break
             if progress:
-                print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  delta = {self.delta() / d0:+.4f} d0  "
-                      f"({time.time() - t0:.0f} s)", flush=True)
+                print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  "
+                      f"delta = {self.delta() / d0:+.4f} d0  ({time.time() - t0:.0f} s)", flush=True)
         out = self._outcome(v_rel, side, start_time, time.time() - t0)
         out["energy_over_impact"] = self._energy_shares(ke0)
         if snapshot:
-            _snapshots.png(snapshot, title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, broken off {out['broken_mass_fraction']:.3f}")
+            _pictures.png(snapshot, d0=D0, unit="mm",
+                          title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, "
+                                f"broken off {out['broken_mass_fraction']:.3f}")
         return out
 
     def _energy_shares(self, ke0):
@@ -145,12 +150,12 @@ class Collision:
     def _t_scale(self):
         """A primary pair's contact time pi sqrt(m/(2 kp)), the scale of the waits."""
         m = min(O.bodies[i].state.mass for m in self.members for i in m)
-        return 3.1416 * (0.5 * m / sample.KP) ** 0.5
+        return 3.1416 * (0.5 * m / KP) ** 0.5
 
     def _parted(self):
         """The two largest fragments are separate clusters, each holding at least half of one
         agglomerate's particles (one from each), moving apart."""
-        parts = make._clusters([i for m in self.members for i in m])[:2]
+        parts = make.clusters([i for m in self.members for i in m])[:2]
         if len(parts) < 2:
             return False
         own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
@@ -166,7 +171,8 @@ class Collision:
         import numpy as np
         pos = [np.array([list(O.bodies[i].state.pos) for i in m]) for m in self.members]
         rad = [np.array([O.bodies[i].shape.radius for i in m]) for m in self.members]
-        return float((np.linalg.norm(pos[0][:, None, :] - pos[1][None, :, :], axis=2) - rad[0][:, None] - rad[1][None, :]).min())
+        return float((np.linalg.norm(pos[0][:, None, :] - pos[1][None, :, :], axis=2)
+                      - rad[0][:, None] - rad[1][None, :]).min())
 
     @staticmethod
     def _receding(a, b):
@@ -181,7 +187,8 @@ class Collision:
         the contacts and the collision: the mean normal of a tilted, rough contact), its angle to the
         approach (the tilt), and the frictional impulse over the normal one."""
         before = self.n * (-side * 0.5 * v_rel)
-        total = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in self.members[1]), Vector3(0, 0, 0))
+        total = sum((O.bodies[i].state.mass * (O.bodies[i].state.vel - before) for i in self.members[1]),
+                    Vector3(0, 0, 0))
         dv0 = self.n * (-side * v_rel)
 
         def along(u):
@@ -196,7 +203,7 @@ class Collision:
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
-        parts = make._clusters(ids)
+        parts = make.clusters(ids)
         mass = {i: O.bodies[i].state.mass for i in ids}
         total = sum(mass.values())
         frag = []
@@ -206,7 +213,8 @@ class Collision:
                          "mixed": min(share) / sum(share), "v": make.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
         e_speed, deflection = 0.0, None
-        impulse = dict.fromkeys(("e_impulse", "impulse_angle_deg", "e_normal", "tilt_deg", "friction_over_normal_impulse"))
+        impulse = dict.fromkeys(("e_impulse", "impulse_angle_deg", "e_normal", "tilt_deg",
+                                 "friction_over_normal_impulse"))
         impulse["e_impulse"] = 0.0
         if stuck:
             e, broken = 0.0, 1.0 - frag[0]["mass"] / total
@@ -216,12 +224,13 @@ class Collision:
             e = side * dv.dot(self.n) / v_rel
             e_speed = dv.norm() / v_rel  # with what the surfaces' tilt turned sideways
             impulse.update(self._impulse_measures(dv, side, v_rel))
-            deflection = math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm())))) if dv.norm() > 0 else None
+            deflection = (math.degrees(math.acos(max(-1.0, min(1.0, side * dv.dot(self.n) / dv.norm()))))
+                          if dv.norm() > 0 else None)
             broken = 1.0 - (a["mass"] + b["mass"]) / total
         return {"v_rel": v_rel, "e": e, "e_speed": e_speed, "deflection_deg": deflection, **impulse,
                 "stuck": stuck, "broken_mass_fraction": broken,
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds,
-                "press_d0": (max(r[2] for r in self.rows) - self.touch_delta) / sample.D0 if self.first is not None else None,
+                "press_d0": (max(r[2] for r in self.rows) - self.touch_delta) / D0 if self.first is not None else None,
                 "largest_normal_force": max(r[5] for r in self.rows)}

@@ -62,7 +62,8 @@ def wall_predictions(params, rows, info, touch_pair, touch_wall):
     delta = [r[1] * MM - start for r in rows]
     out = {}
     for name, x in WALLS.items():
-        f = theory.normal_force_path(delta, x * params["k1"], x * params["kp"], x * params["kc"], params["phiF"], wall_a12(info))
+        f = theory.normal_force_path(delta, x * params["k1"], x * params["kp"], x * params["kc"], params["phiF"],
+                                     wall_a12(info))
         out[name] = [v / FORCE for v in f]
     return out
 
@@ -124,7 +125,8 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
     stick = 0.0 if e(lo) > 0 else math.inf if e(hi) == 0 else _threshold(lo, hi, lambda v: e(v) == 0)
     slowest = min(speeds) * SPEED
     lo_f, hi_f = fa * 1e-12, fa
-    least = _threshold(lo_f, hi_f, lambda f: e(slowest, f) == 0) if e(slowest, lo_f) > 0 and e(slowest, hi_f) == 0 else hi_f
+    least = (_threshold(lo_f, hi_f, lambda f: e(slowest, f) == 0)
+             if e(slowest, lo_f) > 0 and e(slowest, hi_f) == 0 else hi_f)
     return {"fa_N": fa, "kca_N_m": fa / reach, "tail_m": reach, "e_theory": [e(v * SPEED) for v in speeds],
             "sticks_below_m_s": stick, "fa_sticking_slowest_N": least, "slowest_m_s": slowest}
 
@@ -150,8 +152,8 @@ def meso_collisions(params, info, speeds, progress=True, gammaN=0.0):
         s = pair.build(radii[0], v * SPEED, material=mats[0], radius2=radii[1], material2=mats[1])
         out.append(pair.collide(s).e)
         if progress:
-            print(f"  meso pair at {v * SPEED:g} m/s{f' (gammaN {gammaN:.4g} kg/s)' if gammaN else ''}: e = {out[-1]:.4f}",
-                  flush=True)
+            print(f"  meso pair at {v * SPEED:g} m/s{f' (gammaN {gammaN:.4g} kg/s)' if gammaN else ''}: "
+                  f"e = {out[-1]:.4f}", flush=True)
     return out
 
 

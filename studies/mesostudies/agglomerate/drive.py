@@ -26,9 +26,9 @@ from yade import utils as _utils
 from yade import wrapper as _w
 
 from mesocontact import loop as _loop
-from mesostudies.tablet import sample
-from mesostudies.tablet.uniaxial import _before_newton
+from mesocontact.bulk.uniaxial import before_newton as _before_newton
 from . import make
+from .primaries import D0, KP
 
 BELOW_TOUCH = 0.2  # d0 below the first touch where an unloading turns
 MAX_PULL = 1.5     # d0 below the first touch at which the last stroke apart ends in any case
@@ -41,7 +41,8 @@ class Pair:
         self.members = [list(m) for m in members]
         self.radii = list(radii)
         c = [make.centre_of_mass(m)[0] for m in self.members]
-        self._hold([-1.0, 1.0] if c[0][0] < c[1][0] else [1.0, -1.0], grip, progress, every, check)  # the far side of each
+        # the far side of each
+        self._hold([-1.0, 1.0] if c[0][0] < c[1][0] else [1.0, -1.0], grip, progress, every, check)
 
     def _hold(self, side, grip, progress, every, check):
         """Grips each agglomerate's cap beyond ``grip`` R on its ``side`` (+-1 along x) and inserts
@@ -118,7 +119,7 @@ class Pair:
         """The protocol of the module's docstring; amplitudes in d0 beyond the first touch, speed
         of each cap [mm/us]. Returns the rows (iter, delta [mm], F [mg mm/us^2]); ``events`` holds
         (what, iter, delta, F) at each turn."""
-        d0 = sample.D0
+        d0 = D0
         t0 = time.time()
         self.set_gap(gap * d0)
         self._record()
@@ -126,7 +127,7 @@ class Pair:
         def note(what, d, f):
             self.events.append((what, O.iter, d, f))
             if self.progress:
-                print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (sample.KP * d0):+.4e}  "
+                print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (KP * d0):+.4e}  "
                       f"({O.iter} steps, {time.time() - t0:.0f} s)", flush=True)
         d, f = self.stroke(speed, lambda d, f: self.touching() > 0, max_steps)
         touch = d
@@ -169,7 +170,7 @@ class Wall(Pair):
         mat = [m for m in O.materials if m.label == label]
         if len(mat) != 1:
             raise RuntimeError(f"the scene holds {len(mat)} materials labelled {label!r}, not one: not make.ensure's")
-        half = Vector3(0.5 * sample.D0, 2.0 * radius, 2.0 * radius)
+        half = Vector3(0.5 * D0, 2.0 * radius, 2.0 * radius)
         self.wall = O.bodies.append(_utils.box(center=c + Vector3(2.0 * radius + half[0], 0, 0), extents=half,
                                                fixed=True, material=mat[0]))
         self._hold([-1.0], grip, progress, every, check)
@@ -180,7 +181,7 @@ class Wall(Pair):
     def set_gap(self, gap):
         """Moves the wall until its face lies ``gap`` [mm] from the agglomerate's nearest surface."""
         reach = max(O.bodies[i].state.pos[0] + O.bodies[i].shape.radius for i in self.members[0])
-        make._translate([self.wall], Vector3(reach + gap - self.face(), 0, 0))
+        make.translate([self.wall], Vector3(reach + gap - self.face(), 0, 0))
         return self.delta()
 
     def delta(self):
@@ -190,4 +191,4 @@ class Wall(Pair):
         return O.forces.f(self.wall)[0]
 
     def touching(self):
-        return sum(1 for I in O.bodies[self.wall].intrs() if I.isReal and I.geom.penetrationDepth > 0)
+        return sum(1 for inter in O.bodies[self.wall].intrs() if inter.isReal and inter.geom.penetrationDepth > 0)

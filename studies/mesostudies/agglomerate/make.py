@@ -1,17 +1,18 @@
 """The agglomerates: a block pressure-sintered as the tablet is, and two spheres carved from it
 (inside ``yade``).
 
-The block is the tablet's preparation (``tablet.sample.prepare`` with the campaign's protocol:
-packed without friction, sintered against six adhesive walls at d0 p_s/kp = 0.02, released to
-p_r/p_s = 1e-3) in a box of two cubes side by side along x. Each cube's centre is the centre of
-one agglomerate: the particles that lie wholly within ``radius`` of it (default: the largest
-sphere that keeps MARGIN = 0.5 d0 from the block's walls, whose flat faces order the layers next to
-them) are kept with their contacts and sintering history, everything else is erased, and the
-largest connected cluster of each sphere is what the agglomerate is (particles cut loose by the
-carving are removed and counted). The two are relaxed apart, with the background drag in the lab
-frame, until their kinetic energy is below 1e-12 of the sintered state's elastic energy scale
-(quiet for collisions at centimetres per second), and saved with the drag relative to each
-particle's contacts (as the tablet's tests have it), with their description:
+The block is sintered as the tablet is (the library's ``bulk.prepare`` with Appendix F's protocol
+and the preparation the tablet study chose, ``primaries.protocol``: packed without friction,
+sintered against six adhesive walls at d0 p_s/kp = 0.02, released to p_r/p_s = 1e-3) in a box of two
+cubes side by side along x. Each cube's centre is the centre of one agglomerate: the particles that
+lie wholly within ``radius`` of it (default: the largest sphere that keeps MARGIN = 0.5 d0 from the
+block's walls, whose flat faces order the layers next to them) are kept with their contacts and
+sintering history, everything else is erased, and the largest connected cluster of each sphere is
+what the agglomerate is (particles cut loose by the carving are removed and counted). The two are
+relaxed apart, with the background drag in the lab frame, until their kinetic energy is below 1e-12
+of the sintered state's elastic energy scale (quiet for collisions at centimetres per second), and
+saved with the drag relative to each particle's contacts (as the tablet's tests have it), with their
+description:
 
     from mesostudies.agglomerate import make
     info = make.ensure("results/agglomerate", quick=True)   # made once, then loaded
@@ -30,8 +31,10 @@ from yade import O
 from yade import Vector3
 from yade import wrapper as _w
 
-from mesostudies.tablet import sample
-from mesostudies.tablet.campaign import common
+from mesocontact.bulk import sample
+from mesocontact.bulk import sintering as _sintering
+from . import primaries
+from .primaries import D0, KP, SCALES
 
 ASPECT = (2, 1, 1)   # two cubes along x
 N_FULL = 5400        # about 600 primaries per agglomerate (the released block holds 1.4 per d0^3)
@@ -60,17 +63,17 @@ def _block(outdir, quick, seed, progress):
     os.makedirs(outdir, exist_ok=True)
     if progress:
         print(f"preparing the sintered block {p} ({n} particles, sides {ASPECT})", flush=True)
-    return sample.prepare(p, n=n, seed=seed, aspect=ASPECT, progress=progress, **common.PROTOCOL)
+    return _sintering.prepare(p, primaries.protocol(n, seed, ASPECT), progress)
 
 
-def _clusters(ids):
+def clusters(ids):
     """The connected clusters of ``ids`` through contacts in overlap, largest first."""
     ids = set(ids)
     links = {i: [] for i in ids}
     for i in ids:
-        for I in O.bodies[i].intrs():
-            j = I.id2 if I.id1 == i else I.id1
-            if j in ids and I.isReal and I.geom.penetrationDepth > 0:
+        for inter in O.bodies[i].intrs():
+            j = inter.id2 if inter.id1 == i else inter.id1
+            if j in ids and inter.isReal and inter.geom.penetrationDepth > 0:
                 links[i].append(j)
     seen, out = set(), []
     for i in sorted(ids):
@@ -119,10 +122,10 @@ def joining(first, second):
     whether its id2 is the body of ``second``)."""
     other = set(second)
     for i in first:
-        for I in O.bodies[i].intrs():
-            j = I.id2 if I.id1 == i else I.id1
-            if j in other and I.isReal and I.geom.penetrationDepth > 0:
-                yield I, I.id2 == j
+        for inter in O.bodies[i].intrs():
+            j = inter.id2 if inter.id1 == i else inter.id1
+            if j in other and inter.isReal and inter.geom.penetrationDepth > 0:
+                yield inter, inter.id2 == j
 
 
 def contacts_between(first, second):
@@ -133,7 +136,7 @@ def contacts_between(first, second):
 X_AXIS = (1.0, 0.0, 0.0)
 
 
-def _frame(axis):
+def axis_frame(axis):
     """An orthonormal frame (axis, t1, t2) as rows; x's is the identity, so that x's arithmetic is
     exactly the coordinates' own."""
     import numpy as np
@@ -152,7 +155,7 @@ def touch_shift(first, second, axis=X_AXIS):
     smallest, over pairs less than r_i + r_j apart sideways, of their distance along the axis minus
     the distance at which they would touch."""
     import numpy as np
-    frame = _frame(axis)
+    frame = axis_frame(axis)
     pos = [np.array([list(O.bodies[i].state.pos) for i in ids]) @ frame.T for ids in (first, second)]
     rad = [np.array([O.bodies[i].shape.radius for i in ids]) for ids in (first, second)]
     side = 1.0 if pos[1][:, 0].mean() > pos[0][:, 0].mean() else -1.0
@@ -167,7 +170,7 @@ def touch_shift(first, second, axis=X_AXIS):
     return best
 
 
-def _translate(ids, shift):
+def translate(ids, shift):
     for i in ids:
         O.bodies[i].state.pos += shift
     for e in O.engines:  # a jump the integrator did not make: the collider must sort again, or miss new pairs
@@ -177,19 +180,19 @@ def _translate(ids, shift):
 
 def move_to_gap(first, second, gap, axis=X_AXIS):
     """Moves ``second`` along ``axis`` so that it touches ``first`` after moving ``gap`` [mm] towards it."""
-    n = Vector3(*_frame(axis)[0])
+    n = Vector3(*axis_frame(axis)[0])
     c = [centre_of_mass(m)[0].dot(n) for m in (first, second)]
     side = 1.0 if c[1] > c[0] else -1.0
-    _translate(second, n * (side * (gap - touch_shift(first, second, axis))))
+    translate(second, n * (side * (gap - touch_shift(first, second, axis))))
 
 
 def place_along(first, second, axis, radii):
     """Moves ``second`` (a translation: its contacts' history stays exact) so that its centre of
     mass lies from ``first``'s along ``axis``, its outer sphere 1 d0 clear of the other's: the two
     then meet with other faces than along x."""
-    n = Vector3(*_frame(axis)[0])
+    n = Vector3(*axis_frame(axis)[0])
     c = [centre_of_mass(m)[0] for m in (first, second)]
-    _translate(second, c[0] + n * (radii[0] + radii[1] + sample.D0) - c[1])
+    translate(second, c[0] + n * (radii[0] + radii[1] + D0) - c[1])
 
 
 def directions(count, seed=1):
@@ -218,7 +221,7 @@ def describe(ids):
     own = set(ids)
     c, m = centre_of_mass(ids)
     radius = outer_radius(ids, c)
-    core = radius - sample.D0
+    core = radius - D0
     count = dict.fromkeys(ids, 0)
     solid, depth, n_contacts = 0.0, [], 0
     for i in ids:
@@ -226,20 +229,21 @@ def describe(ids):
         inside = (b.state.pos - c).norm() <= core
         if inside:
             solid += 4.0 / 3.0 * math.pi * b.shape.radius ** 3
-        for I in b.intrs():
-            j = I.id2 if I.id1 == i else I.id1
-            if j not in own or not I.isReal or I.geom.penetrationDepth <= 0:
+        for inter in b.intrs():
+            j = inter.id2 if inter.id1 == i else inter.id1
+            if j not in own or not inter.isReal or inter.geom.penetrationDepth <= 0:
                 continue
             count[i] += 1
             if inside:
                 other = O.bodies[j]
-                solid -= 0.5 * sample._lens(b.shape.radius, other.shape.radius, (b.state.pos - other.state.pos).norm())
+                solid -= 0.5 * sample.lens_volume(b.shape.radius, other.shape.radius,
+                                                  (b.state.pos - other.state.pos).norm())
             if i < j:
                 n_contacts += 1
-                dmp = I.phys.deltaMaxP if hasattr(I.phys, "deltaMaxP") else None
+                dmp = inter.phys.deltaMaxP if hasattr(inter.phys, "deltaMaxP") else None
                 if dmp:
-                    depth.append(I.phys.deltaMax / dmp)
-    return {"n": len(ids), "mass": m, "centre": list(c), "radius": radius, "radius_d0": radius / sample.D0,
+                    depth.append(inter.phys.deltaMax / dmp)
+    return {"n": len(ids), "mass": m, "centre": list(c), "radius": radius, "radius_d0": radius / D0,
             "solid_fraction_core": solid / (4.0 / 3.0 * math.pi * core ** 3),
             "coordination": 2.0 * n_contacts / len(ids), "rattlers": sum(1 for k in count.values() if k < 2),
             "mean_depth": sum(depth) / len(depth) if depth else None}
@@ -251,11 +255,11 @@ def _carve(radius, margin):
     lo, hi = sample.inner_box()
     sides = [hi[k] - lo[k] for k in range(3)]
     if radius is None:
-        radius = min(sides[0] / 4, sides[1] / 2, sides[2] / 2) - margin * sample.D0
+        radius = min(sides[0] / 4, sides[1] / 2, sides[2] / 2) - margin * D0
     centres = [Vector3(lo[0] + f * sides[0], lo[1] + sides[1] / 2, lo[2] + sides[2] / 2) for f in (0.25, 0.75)]
     inside = [[i for i in sample.sphere_ids()
                if (O.bodies[i].state.pos - c).norm() + O.bodies[i].shape.radius <= radius] for c in centres]
-    members = [_clusters(part)[0] for part in inside]
+    members = [clusters(part)[0] for part in inside]
     loose = sum(len(part) for part in inside) - sum(len(m) for m in members)
     keep = set(members[0]) | set(members[1])
     for b in list(O.bodies):
@@ -280,8 +284,8 @@ def ensure(outdir, quick=False, seed=1, radius=None, progress=True, tol_ke=1e-12
     members, r_carve, loose = _carve(radius, MARGIN)
     # Quiet enough for the slowest collision: the tablet's "static" (1e-4 of the sintering's
     # elastic energy) leaves the particles a few m/s of vibration; the lab-frame drag takes it out.
-    O.engines = sample.engines(reference="lab")
-    scale = sample.energy_scale(len(members[0]) + len(members[1]))
+    O.engines = sample.engines(SCALES, reference="lab")
+    scale = sample.energy_scale(len(members[0]) + len(members[1]), SCALES)
 
     def measure():
         ke = sample.kinetic_energy() / scale
@@ -290,12 +294,12 @@ def ensure(outdir, quick=False, seed=1, radius=None, progress=True, tol_ke=1e-12
     for e in O.engines:
         if isinstance(e, _w.MesoBackgroundDamping):
             e.reference = "contacts"  # the tests': a part moving as a body is not dragged
-    info = {"block": block, "carve_radius": r_carve, "carve_radius_d0": r_carve / sample.D0,
+    info = {"block": block, "carve_radius": r_carve, "carve_radius_d0": r_carve / D0,
             "removed_loose": loose, "relax_steps": steps, "kinetic_energy_ratio": ke,
             "members": members, "agglomerates": [describe(m) for m in members],
             "definitions": {"radius": "smallest sphere about the centre of mass holding every particle",
                             "delta": "R1 + R2 - |x1 - x2| of the centres of mass"},
-            "units": "mm, us, mg", "d0": sample.D0, "kp": sample.KP, "wall_clock_s": time.time() - t0}
+            "units": "mm, us, mg", "d0": D0, "kp": KP, "wall_clock_s": time.time() - t0}
     sample.save_atomic(p, info)
     if progress:
         for k, a in enumerate(info["agglomerates"]):

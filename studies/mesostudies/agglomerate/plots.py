@@ -17,7 +17,8 @@ def cycles(runs, law, path, d0, force_scale, touch):
         for k, name in reversed(list(enumerate(names))):  # the fitted run last, on top
             rows = runs[name]
             ax.plot([(r[1] - touch) / d0 for r in rows], [r[2] / force_scale for r in rows],
-                    lw=0.9 if k == 0 else 0.6, color=f"C{k}", label=f"agglomerates, {name}", alpha=1.0 if k == 0 else 0.7)
+                    lw=0.9 if k == 0 else 0.6, color=f"C{k}", label=f"agglomerates, {name}",
+                    alpha=1.0 if k == 0 else 0.7)
         if law is not None:
             rows = runs[names[0]]
             ax.plot([(r[1] - touch) / d0 for r in rows], [f / force_scale for f in law], "k--", lw=0.9,
@@ -62,7 +63,8 @@ def wall_cycles(c, path, d0, force_scale, title):
     plt.close(fig)
 
 
-def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=(), e_normal=None, stuck=None):
+def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, directions=(), e_normal=None,
+                stuck=None):
     """e(v): the x pair's agglomerates (e along x; open where mass broke off), every direction's e
     along its normal impulse (x included, small markers; a cross at 0 where they stuck), the
     meso-particle pair, the closed form, and the pair with its viscosity fitted to one collision."""
@@ -73,14 +75,16 @@ def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, d
         ax.plot([p[0] for p in pts], [p[1] for p in pts], ".", color="C4", alpha=0.7, ms=6,
                 label="agglomerates, each direction: e along the normal impulse" if k == 0 else None)
         sticks = [v for v, st in zip(speeds, d["stuck"]) if st]
-        ax.plot(sticks, [0.0] * len(sticks), "x", color="C4", ms=6, label="agglomerates stuck (any direction)" if k == 0 else None)
+        ax.plot(sticks, [0.0] * len(sticks), "x", color="C4", ms=6,
+                label="agglomerates stuck (any direction)" if k == 0 else None)
     ax.plot(speeds, e_theory, "k-", lw=1, label="closed form, fitted law")
     ax.plot(speeds, e_meso, "s", mfc="none", label="two meso-particles (YADE)")
     if e_viscous is not None:
         ax.plot(speeds, e_viscous, "^", mfc="none", color="C2", label="two meso-particles, gammaN from one collision")
     whole = [k for k, b in enumerate(broken) if b < 0.01]
     frag = [k for k, b in enumerate(broken) if b >= 0.01]
-    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3", label="agglomerates along x: e along x")
+    ax.plot([speeds[k] for k in whole], [e_agg[k] for k in whole], "o", color="C3",
+            label="agglomerates along x: e along x")
     if frag:
         ax.plot([speeds[k] for k in frag], [e_agg[k] for k in frag], "o", mfc="none", color="C3",
                 label="agglomerates along x, >= 1 % of the mass broken off")

@@ -8,7 +8,7 @@ import json
 import os
 import sys
 
-D0_MM = 0.01     # the primaries' mean diameter [mm] (mesostudies.tablet.sample.D0)
+D0_MM = 0.01     # the primaries' mean diameter [mm] (primaries.D0; this page is pure Python)
 KP = 5e6         # their kp [N/m]; forces are given over kp d0
 KP_D0 = KP * D0_MM * 1e-3   # kp d0 [N]
 STUDY_FORCE = 1e3           # the study's force unit, mg mm/us^2, in N
@@ -31,8 +31,10 @@ def _cycles(cycles, rate_check):
                   + " | " + ", ".join(f"{b:.2g}" for b in c.get("unload_below_touch_d0", [])) + " | "
                   + ", ".join(f"{x / scale:.4f}" for x in c["turn_forces"])
                   + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.4f}") for x in c["pull_offs"])
-                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}") for x in c.get("tension_plateaus", []))
-                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:+.4f}") for x in c.get("loading_at_touch", [])) + " |")
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:.5f}")
+                                      for x in c.get("tension_plateaus", []))
+                  + " | " + ", ".join(_f(x / scale if x is not None else None, "{:+.4f}")
+                                      for x in c.get("loading_at_touch", [])) + " |")
     for name, r in rate_check.items():
         md.append("")
         md.append(f"Rate check: {name} differs from the slowest run by at most {_f(r, '{:.1%}')} of the slowest run's "
@@ -58,10 +60,12 @@ def markdown(s):
           "## The agglomerates", "",
           f"Carved with radius {prep['carve_radius_d0']:.3f} d0 from the sintered block; {prep['removed_loose']} "
           "particles cut loose were removed.", "",
-          "| agglomerate | primaries | R [d0] | mass [kg] | core solid fraction | coordination | rattlers | mean deltaMax/deltaMax^p |",
+          "| agglomerate | primaries | R [d0] | mass [kg] | core solid fraction | coordination "
+          "| rattlers | mean deltaMax/deltaMax^p |",
           "|---|---|---|---|---|---|---|---|"]
     for k, a in enumerate(prep["agglomerates"]):
-        md.append(f"| {k} | {a['n']} | {a['radius_d0']:.3f} | {a['mass'] * 1e-6:.4g} | {a['solid_fraction_core']:.3f} | "
+        md.append(f"| {k} | {a['n']} | {a['radius_d0']:.3f} | {a['mass'] * 1e-6:.4g} | "
+                  f"{a['solid_fraction_core']:.3f} | "
                   f"{a['coordination']:.2f} | {a['rattlers']} | {_f(a['mean_depth'], '{:.2f}')} |")
     md += ["", "## The cycles and the rate check", ""] + _cycles(s["cycles"], s["rate_check"])
     md += ["", f"## The fit (run {s.get('fitted_run', '–')})", ""] + _fit_table(fit)
@@ -69,30 +73,37 @@ def markdown(s):
     if w:
         md += ["", f"Fitted to {w['run']} instead (all amplitudes, the faster run): k1 = {w['k1']:.4g} "
                    f"[{_f(w['ci95']['k1'][0], '{:.4g}')}, {_f(w['ci95']['k1'][1], '{:.4g}')}], kp = {w['kp']:.4g}, "
-                   f"phiF = {w['phiF']:.4g}, kc = {w['kc']:.3g} (undetermined: {', '.join(w['undetermined']) or 'none'}); "
+                   f"phiF = {w['phiF']:.4g}, kc = {w['kc']:.3g} "
+                   f"(undetermined: {', '.join(w['undetermined']) or 'none'}); "
                    f"residual rms {w['rms_relative']:.3f}, largest {w['max_relative']:.3f} of its force scale."]
     md += ["", "## Collisions", "",
            "e of the agglomerates (the two largest fragments' centres of mass, along the approach x, and along the "
            "impulse of the normal forces they exchanged), of two meso-particles of the fitted "
            "law (YADE) and of the closed form; the mass broken off; the contact time; the press (the largest "
-           "meso-overlap beyond the one at the first contact) and the largest normal force between them; where the impact's kinetic "
-           "energy went, over it (the centres of mass' motion, the particles' motion about them, the law's stored "
-           "energies' change, its dissipation).", "",
-           "| v [m/s] | e agglomerates | e along the normal impulse | e meso pair | e closed form | stuck | broken off | contact time [us] "
-           "| press [d0] | largest force F/(kp d0) | centres of mass | internal motion | stored | dissipated |",
+           "meso-overlap beyond the one at the first contact) and the largest normal force between them; "
+           "where the impact's kinetic energy went, over it (the centres of mass' motion, the particles' motion "
+           "about them, the law's stored energies' change, its dissipation).", "",
+           "| v [m/s] | e agglomerates | e along the normal impulse | e meso pair | e closed form | stuck | broken off "
+           "| contact time [us] | press [d0] | largest force F/(kp d0) | centres of mass | internal motion | stored "
+           "| dissipated |",
            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for k, v in enumerate(s["speeds"]):
         en = s["energy_over_impact"][k]
         stored = sum(en.get(n, 0.0) for n in STORED)
         lost = sum(en.get(n, 0.0) for n in DISSIPATED)
-        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('e_normal') or [None] * len(s['speeds']))[k], '{:.3f}')} | {s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
-                  f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | {_f(s['contact_time'][k], '{:.4f}')} | "
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | "
+                  f"{_f((s.get('e_normal') or [None] * len(s['speeds']))[k], '{:.3f}')} | "
+                  f"{s['e_meso'][k]:.3f} | {s['e_theory'][k]:.3f} | "
+                  f"{'yes' if s['stuck'][k] else 'no'} | {s['fragmented'][k]:.3f} | "
+                  f"{_f(s['contact_time'][k], '{:.4f}')} | "
                   f"{_f((s.get('press_d0') or [None] * len(s['speeds']))[k], '{:.3g}')} | "
-                  f"{_f(None if not s.get('largest_normal_force') or s['largest_normal_force'][k] is None else s['largest_normal_force'][k] / (KP_D0 / STUDY_FORCE), '{:.3g}')} | "
+                  f"""{_f(None if not s.get('largest_normal_force') or s['largest_normal_force'][k] is None
+                          else s['largest_normal_force'][k] / (KP_D0 / STUDY_FORCE), '{:.3g}')} | """
                   f"{en['centres_of_mass']:.3f} | {en['internal_kinetic']:.3f} | {stored:.3f} | {lost:.3f} |")
     vis = s.get("meso_viscous")
     if vis:
-        md += ["", f"The meso-particles with viscosity gammaN = {vis['gammaN']:.4g} kg/s, fitted to the agglomerates' e at "
+        md += ["", f"The meso-particles with viscosity gammaN = {vis['gammaN']:.4g} kg/s, "
+                   "fitted to the agglomerates' e at "
                    f"{vis['fitted_at_m_s']:g} m/s (e = {vis['e_at_fit']:.3f}):", "",
                "| v [m/s] | e agglomerates | e meso pair, gammaN fitted | difference |", "|---|---|---|---|"]
         for k, v in enumerate(s["speeds"]):
@@ -154,15 +165,17 @@ def _directions(s):
                 rebounds.append(en)
         spread = max(rebounds) - min(rebounds) if len(rebounds) > 1 else None
         md.append(f"| {v:g} | " + " | ".join(cells) + f" | {_f(spread)} |")
-    md += ["", "| v [m/s] | " + " | ".join(f"{'x' if r['index'] == 'x' else 'direction ' + str(r['index'])}: e along the "
-                                          "approach, deflection, friction/normal" for r in runs) + " |",
+    md += ["", "| v [m/s] | " + " | ".join(f"{'x' if r['index'] == 'x' else 'direction ' + str(r['index'])}: "
+                                           "e along the approach, deflection, friction/normal" for r in runs) + " |",
            "|---|" + "---|" * len(runs)]
     for k, v in enumerate(s["speeds"]):
         md.append(f"| {v:g} | " + " | ".join(
             f"stuck, {r['broken_mass_fraction'][k]:.3f} broken off" if r["stuck"][k]
-            else f"{r['e'][k]:.3f}, {_f(r['deflection_deg'][k], '{:.0f}')}°, {_f(r['friction_over_normal_impulse'][k], '{:.2f}')}"
+            else f"{r['e'][k]:.3f}, {_f(r['deflection_deg'][k], '{:.0f}')}°, "
+                 f"{_f(r['friction_over_normal_impulse'][k], '{:.2f}')}"
             for r in runs) + " |")
-    md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")" for d in dirs) + "."]
+    md += ["", "Directions: " + "; ".join(f"{d['index']}: (" + ", ".join(f"{x:.3f}" for x in d["axis"]) + ")"
+                                          for d in dirs) + "."]
     return md
 
 
@@ -179,28 +192,34 @@ def _adhesion(s):
           "| smallest fa on this tail that sticks the pair at the slowest speed [N] |",
           "|---|---|---|---|---|---|---|"]
     for a in ad:
-        md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | {a['tail_m'] / (D0_MM * 1e-3):.3f} | "
-                  f"{a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} | {_f(a.get('fa_sticking_slowest_N'), '{:.2g}')} |")  # inf: sticks at every speed tried
+        # inf: sticks at every speed tried
+        md.append(f"| {a['after_d0']:g} | {a['fa_N']:.3g} | {a['fa_N'] / KP_D0:.3g} | "
+                  f"{a['tail_m'] / (D0_MM * 1e-3):.3f} | {a['kca_N_m']:.4g} | {a['sticks_below_m_s']:.3g} | "
+                  f"{_f(a.get('fa_sticking_slowest_N'), '{:.2g}')} |")
     md += ["", "The fitted law's largest overlap in the pair's collision (closed form) is counted from its contact's "
                "start, which lies (touch - shift)/d0 below the cycles' first touch.", "",
            "| v [m/s] | e agglomerates | fitted law's largest overlap [d0] | "
            + " | ".join(f"e closed form, fa after {a['after_d0']:g} d0" for a in ad) + " |",
            "|---|---|---|" + "---|" * len(ad)]
     for k, v in enumerate(s["speeds"]):
-        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | {_f((s.get('overlap_theory_d0') or [None] * len(s['speeds']))[k], '{:.3g}')} | "
+        md.append(f"| {v:g} | {s['e_agglomerate'][k]:.3f} | "
+                  f"{_f((s.get('overlap_theory_d0') or [None] * len(s['speeds']))[k], '{:.3g}')} | "
                   + " | ".join(f"{a['e_theory'][k]:.3f}" for a in ad) + " |")
     return md
 
 
-WALLS = {"own": "the primaries' own material (their k, adhesion and friction; the law's sphere-wall a12 = 2 a_i, twice a primary pair's)",
+WALLS = {"own": "the primaries' own material (their k, adhesion and friction; "
+                "the law's sphere-wall a12 = 2 a_i, twice a primary pair's)",
          "smooth": "the tablet's smooth mould (the primaries' normal law without adhesion or friction)"}
 
 
 def _wall(w):
     md = ["", f"## One agglomerate against a flat wall: {w['material']}", "",
           f"Agglomerate 0 pressed by its far cap against a fixed wall of {WALLS.get(w['material'], w['material'])}, "
-          "force read on the wall; delta = R - (x_wall - x) of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
-    md += ["", f"The law fitted to {w['fitted_run']} (a12 = 2 R = {w['a12_m']:.4g} m, the law's sphere-wall value):", ""]
+          "force read on the wall; delta = R - (x_wall - x) "
+          "of its centre of mass.", ""] + _cycles(w["cycles"], w["rate_check"])
+    md += ["", f"The law fitted to {w['fitted_run']} "
+               f"(a12 = 2 R = {w['a12_m']:.4g} m, the law's sphere-wall value):", ""]
     md += _fit_table(w["fit"])
     md += ["", "The force at each loaded turn over the pair's at the same amplitude (slowest runs): "
            + ", ".join(f"{r:.2f} at {a} d0" for a, r in w.get("turn_force_over_pair", {}).items()) + "."]

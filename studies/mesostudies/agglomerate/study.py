@@ -1,14 +1,5 @@
 """The agglomerate study's jobs behind one command line (inside ``yade``; studies/scripts/agglomerate.py).
 
-    prepare   the sintered block and the two carved agglomerates (make.ensure)
-    cycles    their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)
-    wall      the first agglomerate's cycles against a flat wall, the same way (drive.Wall)
-    collide   head-on collisions at each speed (collide.Collision); --direction K: approach along
-              the K-th direction of make.directions (0: x, the pair as carved)
-    compare   the law fitted to the slowest cycles (and to the run with the most amplitudes), the meso-particle pair and the closed form at the
-              same speeds, the summary agglomerate-vs-meso.json, cycles.png and restitution.png
-    all       the four in turn
-
 Each job loads the saved agglomerates afresh; its results go to --out (default results/agglomerate;
 --quick: <out>/quick, the small agglomerates of the pipeline's test).
 """
@@ -20,11 +11,11 @@ import time
 from yade import O
 
 from mesocontact import outputs
-from mesostudies.tablet import sample
-from mesostudies.tablet.campaign.common import read_csv
+from mesocontact.jobs import Job, Registry
+from mesocontact.outputs import read_csv
 from . import collide, compare, drive, make, plots, report
+from .primaries import D0, KP
 
-JOBS = ("prepare", "cycles", "wall", "collide", "compare", "all")
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
 SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0), True: (0.1, 1.0, 10.0)}  # m/s
 CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
@@ -33,7 +24,8 @@ DIRECTION_SEED = 1
 
 
 def _parser():
-    p = argparse.ArgumentParser(prog="yade -n -x studies/scripts/agglomerate.py", description=__doc__,
+    p = argparse.ArgumentParser(prog="yade -n -x studies/scripts/agglomerate.py",
+                                description=__doc__ + "\njobs:\n" + JOBS.describe(),
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("job", choices=JOBS)
     p.add_argument("--out", default="results/agglomerate")
@@ -44,7 +36,8 @@ def _parser():
                    help=f"cycles: the cap speed's divisors (default 1,{SLOWER}; --quick: 1), one run each; "
                         "separate jobs may run them side by side")
     p.add_argument("--wall-material", choices=sorted(drive.WALL_MATERIALS), default="own",
-                   help="wall: the primaries' own material (default) or the tablet's smooth mould (no adhesion, no friction)")
+                   help="wall: the primaries' own material (default) or the tablet's smooth mould "
+                        "(no adhesion, no friction)")
     p.add_argument("--direction", type=int, default=0,
                    help="collide: the approach direction's index in make.directions (0: x, as carved; "
                         "k > 0: drawn on the sphere, seed DIRECTION_SEED)")
@@ -92,7 +85,8 @@ def cycles(a, wall=False):
         print(f"{'wall ' if wall else ''}cycles at {speed * 1e3:g} m/s per cap", flush=True)
         t0, it0 = time.time(), O.iter
         radii = [g["radius"] for g in info["agglomerates"]]
-        pair = drive.Wall(info["members"], radii[0], material=a.wall_material) if wall else drive.Pair(info["members"], radii)
+        pair = (drive.Wall(info["members"], radii[0], material=a.wall_material) if wall
+                else drive.Pair(info["members"], radii))
         rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed, final=factor == 1)  # slower runs: the rate check
         name = f"{_wall_prefix(a.wall_material) if wall else ''}cycles-v{speed * 1e3:g}"
         outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
@@ -102,7 +96,8 @@ def cycles(a, wall=False):
                      "steps": O.iter - it0, "wall_clock_s": time.time() - t0, "dt": O.dt,
                      "units": "delta mm, F mg mm/us^2 (1e3 N)"}
         if wall:
-            out[name]["against"] = f"a flat wall, material {a.wall_material!r} ({drive.WALL_MATERIALS[a.wall_material]}), agglomerate 0"
+            out[name]["against"] = (f"a flat wall, material {a.wall_material!r} "
+                                    f"({drive.WALL_MATERIALS[a.wall_material]}), agglomerate 0")
         _write(os.path.join(_dir(a), name + ".json"), out[name])
     return out
 
@@ -136,7 +131,8 @@ def collisions(a):
         print(f"collision at {v:g} m/s{f', direction {a.direction} {axis}' if a.direction else ''}", flush=True)
         r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision{tag}-v{v:g}.png"))
         outputs.write_atomic(os.path.join(_dir(a), f"collision{tag}-v{v:g}.csv"),
-                             "iter,time_us,delta_mm,v0_mm_us,v1_mm_us,F_normal\n" + "".join(",".join(repr(x) for x in row) + "\n" for row in c.rows))
+                             "iter,time_us,delta_mm,v0_mm_us,v1_mm_us,F_normal\n"
+                             + "".join(",".join(repr(x) for x in row) + "\n" for row in c.rows))
         print(f"  e = {r['e']:.4f}  stuck {r['stuck']}  broken off {r['broken_mass_fraction']:.3f}  "
               f"contact time {r['contact_time']}", flush=True)
         out.append(dict(r, v_rel_m_s=v, direction=list(axis)))
@@ -149,16 +145,14 @@ def main(argv):
     a = p.parse_args(argv)
     _check(a, p)
     t0 = time.time()
-    jobs = ("prepare", "cycles", "wall", "collide", "compare") if a.job == "all" else (a.job,)
-    for job in jobs:
-        {"prepare": prepare, "cycles": cycles, "wall": lambda a: cycles(a, wall=True), "collide": collisions, "compare": lambda a: compare_job(a)}[job](a)
+    JOBS.get(a.job).function(a)
     print(f"agglomerate {a.job}: done in {time.time() - t0:.0f} s", flush=True)
 
 
 def _cycles_summary(runs, measures):
     return {n: dict(measures[n], speed_per_cap_m_s=runs[n]["speed_per_cap_m_s"],
                     amplitudes_d0=[float(e[0].split()[2]) for e in runs[n]["events"] if e[0].startswith("loaded to")],
-                    unload_below_touch_d0=[(runs[n]["touch_delta_mm"] - e[2]) / sample.D0
+                    unload_below_touch_d0=[(runs[n]["touch_delta_mm"] - e[2]) / D0
                                            for e in runs[n]["events"] if e[0] == "unloaded"])
             for n in runs}
 
@@ -179,13 +173,14 @@ def _wall(d, info, params, touch_pair, material, pair_turns):
     measures = {n: compare.cycle_measures(rows[n], runs[n]["events"]) for n in names}
     summary = {"material": material, "fitted_run": fitted_run, "fit": fitted.to_json(), "a12_m": compare.wall_a12(info),
                "k1_over_pair": fitted.params["k1"] / params["k1"],
-               "law_start_beyond_touch_d0": (fitted.params["shift"] / compare.MM - touch) / sample.D0,
-               "pair_law_start_beyond_touch_d0": (params["shift"] / compare.MM - touch_pair) / sample.D0,
+               "law_start_beyond_touch_d0": (fitted.params["shift"] / compare.MM - touch) / D0,
+               "pair_law_start_beyond_touch_d0": (params["shift"] / compare.MM - touch_pair) / D0,
                "predictions": {k: dict(zip(("rms_relative", "max_relative"), compare.misfit(v, rows[fitted_run])))
                                for k, v in predicted.items()},
                "cycles": _cycles_summary(runs, measures), "rate_check": compare.rate_check(measures)}
     own = summary["cycles"][fitted_run]
-    summary["turn_force_over_pair"] = {f"{a:g}": f / pair_turns[a] for a, f in zip(own["amplitudes_d0"], own["turn_forces"])
+    summary["turn_force_over_pair"] = {f"{a:g}": f / pair_turns[a]
+                                       for a, f in zip(own["amplitudes_d0"], own["turn_forces"])
                                        if a in pair_turns}
     curves = {"runs": rows, "fit": compare.law_curve(fitted.params, rows[fitted_run], compare.wall_a12(info)),
               "predicted": predicted, "touch": touch}
@@ -203,8 +198,9 @@ def _directions(d, speeds):
             hits = {h["v_rel_m_s"]: h for h in json.load(f)}
         out.append({"index": k, "axis": next(iter(hits.values()))["direction"],
                     **{key: [hits[v].get(key) if v in hits else None for v in speeds]
-                       for key in ("e", "e_speed", "e_impulse", "e_normal", "deflection_deg", "tilt_deg", "impulse_angle_deg",
-                                   "friction_over_normal_impulse", "stuck", "broken_mass_fraction", "contact_time")}})
+                       for key in ("e", "e_speed", "e_impulse", "e_normal", "deflection_deg", "tilt_deg",
+                                   "impulse_angle_deg", "friction_over_normal_impulse", "stuck", "broken_mass_fraction",
+                                   "contact_time")}})
         k += 1
     return out
 
@@ -225,8 +221,8 @@ def compare_job(a):
     also = None
     if widest != fitted_run:
         f2 = compare.fit(rows[widest], info)
-        also = {"run": widest, **{k: f2.to_json()[k] for k in ("k1", "kp", "kc", "phiF", "shift", "ci95", "undetermined",
-                                                                  "rms_relative", "max_relative")}}
+        also = {"run": widest, **{k: f2.to_json()[k] for k in ("k1", "kp", "kc", "phiF", "shift", "ci95",
+                                                               "undetermined", "rms_relative", "max_relative")}}
     with open(os.path.join(d, collision_file(0))) as f:
         hits = json.load(f)
     speeds = [h["v_rel_m_s"] for h in hits]
@@ -245,8 +241,9 @@ def compare_job(a):
     cycles = _cycles_summary(runs, measures)
     adhesion = []
     for p, amp in zip(measures[fitted_run]["tension_plateaus"], cycles[fitted_run]["amplitudes_d0"]):
-        c = compare.adhesion_consequence(params, info, p, runs[fitted_run]["touch_delta_mm"], [v / 1e3 for v in speeds]) \
-            if p is not None and p < 0 else None
+        c = (compare.adhesion_consequence(params, info, p, runs[fitted_run]["touch_delta_mm"],
+                                          [v / 1e3 for v in speeds])
+             if p is not None and p < 0 else None)
         if c:
             adhesion.append(dict(c, after_d0=amp))
     pair_turns = dict(zip(cycles[fitted_run]["amplitudes_d0"], cycles[fitted_run]["turn_forces"]))
@@ -257,29 +254,58 @@ def compare_job(a):
                "preparation": {k: info[k] for k in ("carve_radius_d0", "removed_loose", "agglomerates", "definitions")},
                "fit": fitted.to_json(), "speeds": speeds, "e_agglomerate": [h["e"] for h in hits],
                "e_meso": e_meso, "e_theory": e_theory,
-               "overlap_theory_d0": compare.theory_overlap(params, info, [v / 1e3 for v in speeds]), "fragmented": [h["broken_mass_fraction"] for h in hits],
+               "overlap_theory_d0": compare.theory_overlap(params, info, [v / 1e3 for v in speeds]),
+               "fragmented": [h["broken_mass_fraction"] for h in hits],
                "stuck": [h["stuck"] for h in hits], "contact_time": [h["contact_time"] for h in hits],
                "e_speed": [h.get("e_speed") for h in hits], "e_impulse": [h.get("e_impulse") for h in hits],
-               "press_d0": [h.get("press_d0") for h in hits], "largest_normal_force": [h.get("largest_normal_force") for h in hits],
+               "press_d0": [h.get("press_d0") for h in hits],
+               "largest_normal_force": [h.get("largest_normal_force") for h in hits],
                "e_normal": [h.get("e_normal") for h in hits], "tilt_deg": [h.get("tilt_deg") for h in hits],
                "impulse_angle_deg": [h.get("impulse_angle_deg") for h in hits],
-               "friction_over_normal_impulse": [h.get("friction_over_normal_impulse") for h in hits], "deflection_deg": [h.get("deflection_deg") for h in hits],
+               "friction_over_normal_impulse": [h.get("friction_over_normal_impulse") for h in hits],
+               "deflection_deg": [h.get("deflection_deg") for h in hits],
                "energy_over_impact": [h["energy_over_impact"] for h in hits], "meso_viscous": viscous,
-               "directions": _directions(d, speeds), "adhesion": adhesion, "walls": {m: w[0] for m, w in walls.items() if w[0]},
-               "d0_mm": sample.D0}
+               "directions": _directions(d, speeds), "adhesion": adhesion,
+               "walls": {m: w[0] for m, w in walls.items() if w[0]},
+               "d0_mm": D0}
     _write(os.path.join(d, "agglomerate-vs-meso.json"), summary)
     outputs.write_atomic(os.path.join(d, "summary.md"), report.markdown(summary))
     a12 = compare.geometry(info)[0]
-    force_scale = sample.KP * sample.D0
+    force_scale = KP * D0
     plots.cycles({n: rows[n] for n in [fitted_run] + [m for m in names if m != fitted_run]},
                  compare.law_curve(params, rows[fitted_run], a12), os.path.join(d, "cycles.png"),
-                 sample.D0, force_scale, runs[fitted_run]["touch_delta_mm"])
+                 D0, force_scale, runs[fitted_run]["touch_delta_mm"])
     for m, (w, curves) in walls.items():
         if curves:
-            plots.wall_cycles(curves, os.path.join(d, _wall_prefix(m) + "cycles.png"), sample.D0, force_scale,
+            plots.wall_cycles(curves, os.path.join(d, _wall_prefix(m) + "cycles.png"), D0, force_scale,
                               f"one agglomerate against a flat wall, material '{m}'")
     plots.restitution(speeds, summary["e_agglomerate"], e_meso, e_theory, summary["fragmented"],
                       os.path.join(d, "restitution.png"), e_viscous=viscous["e_meso"] if viscous else None,
                       directions=summary["directions"], e_normal=summary["e_normal"], stuck=summary["stuck"])
     print(fitted.report(), flush=True)
     return summary
+
+
+def everything(a):
+    """The job 'all': the others in turn, in the registry's order."""
+    for job in JOBS:
+        if job != "all":
+            JOBS.get(job).function(a)
+
+
+# The study's jobs, in the order --help lists them and 'all' runs them; each runs with the parsed
+# options. This module is the package's top: it imports the modules the jobs run (make, drive,
+# collide, compare, plots, report), none of them imports it. A new job is a function (here or in a
+# module of its own) and one record here.
+JOBS = Registry([
+    Job("prepare", prepare, "the sintered block and the two carved agglomerates (make.ensure)."),
+    Job("cycles", cycles, "their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)."),
+    Job("wall", lambda a: cycles(a, wall=True),
+        "the first agglomerate's cycles against a flat wall, the same way (drive.Wall)."),
+    Job("collide", collisions, "head-on collisions at each speed (collide.Collision); --direction K: approach along "
+        "the K-th direction of make.directions (0: x, the pair as carved)."),
+    Job("compare", compare_job, "the law fitted to the slowest cycles (and to the run with the most amplitudes), the "
+        "meso-particle pair and the closed form at the same speeds: agglomerate-vs-meso.json, cycles.png, "
+        "restitution.png."),
+    Job("all", everything, "prepare, cycles, wall, collide and compare in turn."),
+])

@@ -85,7 +85,7 @@ def fig9(outdir, quick=False, phiF_tuned=0.5):
     eta, t0, rows = 4.0, time.time(), []
     bs = theory.beta_star(eta)
     chis = [0.1, 0.7, 1.5] if quick else [0.02, 0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.75, 0.9, 0.95, 1.05, 1.1, 1.3, 1.6,
-                                           2.0, 3.0, 5.0]
+                                          2.0, 3.0, 5.0]
     curves = [(f"β/β* = {name}", eta, f * bs, chis) for name, f in (("1/3", 1 / 3), ("1", 1), ("3", 3))]
     sim = _sweep("fig9", curves, t0, rows)
     ref = _mat(eta, bs / 3)
@@ -105,13 +105,14 @@ def fig9(outdir, quick=False, phiF_tuned=0.5):
     same = max(abs(e_tuned(c) - theory.restitution_fa0(c, eta, bs / 3)) for c in grid if c <= 1)
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for (label, _, beta, _), color, (cin, cout) in zip(curves, ("tab:red", "tab:green", "tab:blue"),
-                                                      (("r", "m"), ("g", "k"), ("b", "c"))):
+                                                       (("r", "m"), ("g", "k"), ("b", "c"))):
         ax.plot(grid, [theory.restitution_fa0(c, eta, beta) for c in grid], "-", color=color, lw=1,
                 label=f"Eqs. 32/33, {label} (β = {beta:.3g})")
         pts = sim[label]
         ax.plot([c for c, _ in pts if c <= 1], [e for c, e in pts if c <= 1], "o", mfc="none", color=cin)
         ax.plot([c for c, _ in pts if c > 1], [e for c, e in pts if c > 1], "s", mfc="none", color=cout)
-    ax.plot(grid, [e_tuned(c) for c in grid], "r--", lw=1.2, label=f"tuned: φf' = {phiF_tuned:g}, kp' = {kp_t:.4g} N/m (Eq. A.3)")
+    ax.plot(grid, [e_tuned(c) for c in grid], "r--", lw=1.2,
+            label=f"tuned: φf' = {phiF_tuned:g}, kp' = {kp_t:.4g} N/m (Eq. A.3)")
     ax.plot(*zip(*tuned_sim), "rv", mfc="none", label="YADE, tuned")
     ax.plot([], [], "ko", mfc="none", label="YADE (circles χ ≤ 1, squares χ > 1)")
     _finish_sweep(fig, ax, outdir, "fig9_adhesivity", rows, f"Fig. 9: adhesivity around β* = {bs:.4g} (η = 4)",
@@ -158,7 +159,7 @@ def fig10(outdir, quick=False, phiF_tuned=0.5, chis=(0.5, 1.0, 2.5)):
     fig_note(fig, f"η = 4, β = 1/9 (kc = {ref['kc']:.4g} N/m); " + PARAM_LINE)
     save_figure(fig, outdir, "fig10_tuned_force_law")
     write_csv(os.path.join(outdir, "fig10_tuned_force_law.csv"),
-               ["model", "chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
+              ["model", "chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 10", collisions=len(summary_rows), kp_tuned=kp_t,
                 worst_abs_e_error=max(abs(r[3] - r[4]) for r in summary_rows),
                 loops=[dict(model=m, chi=c, e_yade=e, e_theory=et, stuck=s) for m, c, _, e, et, s in summary_rows])
@@ -177,7 +178,7 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
         for g, color, name in ((0.0, "tab:blue", "γ0 = 0"), (gamma0, "tab:red", f"γ0 = {gamma0:g} kg/s")):
             mat = _mat(eta, beta, gammaN=g)
             r = collide_pair(mat, _speed(chi, mat), max_contact_times=10 if quick else 30, record=True,
-                         settle_contact_times=4 if quick else 8)
+                             settle_contact_times=4 if quick else 8)
             e2 = theory.en_squared(chi, eta, beta)
             dc = theory.sticking_overlap(chi, eta, beta) if e2 <= 0 else None
             cases.append(dict(kc=kc, beta=beta, gamma0=g, stuck=r.stuck, e_yade=r.e, e_theory=math.sqrt(max(e2, 0)),
@@ -190,7 +191,7 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
                      label=name + (": sticks" if r.stuck else f": e = {r.e:.4f}"))
             rows += [(kc, g) + t for t in r.trace[::50]]  # the CSV: every 50th step (the plot: every 5th)
             print(f"[fig11] kc = {kc:.4g}, gamma0 = {g:g}: " + (f"stuck at {r.final_overlap / dmp:.4f} dmp"
-                                                              if r.stuck else f"e = {r.e:.5f}"), flush=True)
+                                                                if r.stuck else f"e = {r.e:.5f}"), flush=True)
         rel = "<" if beta < theory.beta_star(eta) - 1e-9 else ">" if beta > theory.beta_star(eta) + 1e-9 else "="
         axf.set_title(f"({tag[0]}) kc = {kc:.4g} N/m, β {rel} β*", fontsize=9)
         axt.set_title(f"({tag[1]}) kc = {kc:.4g} N/m", fontsize=9)
@@ -205,7 +206,7 @@ def fig11(outdir, quick=False, gamma0=5e-3, kcs=(10.0, 100.0 / 3.0, 100.0), chi=
     fig.suptitle("Fig. 11: viscosity at χ = 1 for β below, at and above β*")
     save_figure(fig, outdir, "fig11_viscosity")
     write_csv(os.path.join(outdir, "fig11_viscosity.csv"),
-               ["kc_N_m", "gamma0_kg_s", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
+              ["kc_N_m", "gamma0_kg_s", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return dict(figure="long 11", collisions=len(cases), cases=cases,
                 note="no closed form with viscosity: the viscous runs are compared with the non-viscous closed form")
 
@@ -233,7 +234,8 @@ def fig12(outdir, quick=False, etas=(5.0, 50.0, 500.0)):
         ax.plot(grid, [theory.restitution_asymptote(c, eta) for c in grid], "--", color=color, lw=1.2,
                 label=f"(ηχ)^−1/2, {label} (Eq. C.2)")
         ax.plot(*zip(*sim[label]), "o", mfc="none", color=color, label=f"YADE, {label}")
-        holds[label] = _within(grid, lambda c: theory.restitution_fa0(c, eta, 0.0), lambda c: theory.restitution_asymptote(c, eta))
+        holds[label] = _within(grid, lambda c: theory.restitution_fa0(c, eta, 0.0),
+                               lambda c: theory.restitution_asymptote(c, eta))
     ax.plot([], [], "k-", lw=0.8, alpha=0.6, label="Eq. 32 (thin)")
     ax.set_yscale("log")
     ax.set_ylim(0.03, 1.5)
@@ -346,7 +348,9 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         d0 = (1 - K1 / k2) * d_max
         d_min = k2 * d0 / (k2 + kc)
         sticks = theory.en_squared(chi, eta, kc / K1) <= 0
-        marks = [("δ0", d0), ("δmin", d_min)] + ([("δc", theory.sticking_overlap(chi, eta, kc / K1) * theory.delta_max_p(K1, mat["kp"], PHI_F, s.a12))] if sticks else [])
+        marks = [("δ0", d0), ("δmin", d_min)] + (
+            [("δc", theory.sticking_overlap(chi, eta, kc / K1) * theory.delta_max_p(K1, mat["kp"], PHI_F, s.a12))]
+            if sticks else [])
         ms = [x[0] * 1e3 for x in samples]
         state = "sticks" if sticks else f"rebounds, e = {theory.restitution_fa0(chi, eta, beta):.3f}"
         first_below = {}
@@ -359,17 +363,20 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
         delta_c_yade = None
         if sticks:  # deltaC: the lower turning point after deltaMin, where the stuck pair first comes to rest
             after = [x for x in samples if x[0] * 1e3 >= first_below.get("δmin", 0.0)]
-            k = next((n for n in range(1, len(after) - 1) if after[n][6] <= after[n - 1][6] and after[n][6] < after[n + 1][6]), None)
+            k = next((n for n in range(1, len(after) - 1) if after[n][6] <= after[n - 1][6]
+                      and after[n][6] < after[n + 1][6]), None)
             if k is not None:
                 first_below["δc"] = after[k][0] * 1e3
                 delta_c_yade = after[k][6]
         for row, (label, values, color) in enumerate((("plastic “potential” (current branch)", potential, "tab:red"),
-                                                       ("available elastic (mesoElastic, along k2)", [x[2] for x in samples], "tab:blue"))):
+                                                      ("available elastic (mesoElastic, along k2)",
+                                                       [x[2] for x in samples], "tab:blue"))):
             ax = axes[row][col]
             ax.plot(ms, [x[1] / e0 for x in samples], "k-", lw=1, label="kinetic")
             ax.plot(ms, [y / e0 for y in values], "-", color=color, lw=1.2, label=label)
             ax.axhline(0, color="0.6", lw=0.5)
-            for n, (name, t) in enumerate(first_below.items()):  # above the panel; delta0 and deltaMin lie close together
+            # above the panel; delta0 and deltaMin lie close together
+            for n, (name, t) in enumerate(first_below.items()):
                 ax.axvline(t, color="0.5", lw=0.6, ls=":")
                 ax.text(t, 1.01, (name + " ") if n == 0 else (" " + name), fontsize=7, color="0.3",
                         ha="right" if n == 0 else "left", va="bottom", transform=ax.get_xaxis_transform())
@@ -386,14 +393,16 @@ def fig15(outdir, quick=False, chis=(0.34, 0.69)):
                           delta_c_yade=delta_c_yade,
                           plastic_potential_after_stick_over_E0=(potential[-1] / e0) if sticks else None))
         rows += [(chi,) + x[:7] + (x[8], p) for x, p in zip(samples, potential)]
-        print(f"[fig15] chi = {chi}: {len(samples)} samples, worst |sum - E0|/E0 = {worst:.2e}, lowest plastic potential {low:.3f} E0",
+        print(f"[fig15] chi = {chi}: {len(samples)} samples, worst |sum - E0|/E0 = {worst:.2e}, lowest plastic "
+              f"potential {low:.3f} E0",
               flush=True)
     fig_note(fig, "η = 4, β = 1; " + PARAM_LINE)
     fig.suptitle("Fig. 15: kinetic and potential energies of one collision (YADE)")
     save_figure(fig, outdir, "fig15_energies")
     write_csv(os.path.join(outdir, "fig15_energies.csv"),
-               ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J", "overlap_m",
-                "hystereticForce_N", "plastic_potential_J"], rows)
+              ["chi", "time_s", "kinetic_J", "mesoElastic_J", "mesoPlastic_J", "mesoAdhesive_J", "total_J",
+               "overlap_m",
+               "hystereticForce_N", "plastic_potential_J"], rows)
     return dict(figure="long 15", collisions=len(cases), cases=cases,
                 worst_abs_sum_error_over_E0=max(c["worst_abs_sum_error_over_E0"] for c in cases))
 

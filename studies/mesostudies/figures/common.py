@@ -21,7 +21,8 @@ def pair_reduced_mass():
     return params.sphere_mass(RADIUS, DENSITY) / 2
 
 
-PARAM_NOTE = f"k1 = {PAPER['k1']:g}, kp = {PAPER['kp']:g}, kc = {PAPER['kc']:g} N/m, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, γ0 = 0"
+PARAM_NOTE = (f"k1 = {PAPER['k1']:g}, kp = {PAPER['kp']:g}, kc = {PAPER['kc']:g} N/m, a = {RADIUS * 1e3:g} mm, "
+              f"ρ = {DENSITY:g} kg/m³, γ0 = 0")
 
 
 def fig_note(fig, text, fontsize=7.5):
@@ -64,4 +65,3 @@ def write_csv(path, header, rows):
 
 def print_progress(tag, i, n, t0):
     print(f"[{tag}] {i}/{n} collisions, {time.time() - t0:.1f} s", flush=True)
-

@@ -12,6 +12,7 @@ from .common import (
     save_figure, write_csv,
 )
 
+
 def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     """e versus zeta = v_i/v_p with jump-in adhesion, fa from alpha at v_i = 0.01 m/s."""
     zetas = zetas or [0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.1, 1.2, 1.5, 2, 3, 5]
@@ -47,7 +48,7 @@ def fig5(outdir, alphas=(0.042, 0.42), zetas=None, kca=100.0):
     fig_note(fig, PARAM_NOTE + f", φf = {PAPER['phiF']:g}, kca = {kca:g} N/m, f_a from α at v_i = 0.01 m/s")
     save_figure(fig, outdir, "fig5_restitution_adhesive")
     write_csv(os.path.join(outdir, "fig5_restitution_adhesive.csv"),
-               ["alpha", "fa_N", "zeta", "v_inf_m_s", "e_yade", "e_theory", "stuck"], rows)
+              ["alpha", "fa_N", "zeta", "v_inf_m_s", "e_yade", "e_theory", "stuck"], rows)
     return rows
 
 
@@ -91,15 +92,16 @@ def fig6_fig8(outdir, chis=None):
     lo, hi = theory.chi_c_b(eta, beta), theory.chi_c_c(eta, beta)
     fig, ax = plt.subplots(figsize=(6, 4.2))
     g = [lo + (hi - lo) * (1e-9 + (1 - 2e-9) * i / 400) for i in range(401)]  # inside the window
-    ax.plot([c for c in g if c <= 1], [theory.sticking_overlap(c, eta, beta) for c in g if c <= 1], "r-", label="Eq. 36")
+    ax.plot([c for c in g if c <= 1], [theory.sticking_overlap(c, eta, beta) for c in g if c <= 1], "r-",
+            label="Eq. 36")
     ax.plot([c for c in g if c > 1], [theory.sticking_overlap(c, eta, beta) for c in g if c > 1], "b-", label="Eq. 38")
     stuck = [(r[0], r[5]) for r in rows if r[4]]
     if stuck:
         ax.plot(*zip(*stuck), "ko", mfc="none", label="YADE")
     _finish_fa0(fig, ax, outdir, "fig8_sticking_overlap", "δ_c / δ_max^p", "Fig. 8: sticking overlap, η = 4, β = 1")
     write_csv(os.path.join(outdir, "fig6_restitution.csv"),
-               ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
-               rows)
+              ["chi", "v_inf_m_s", "e_yade", "e_theory", "stuck", "delta_c_over_dmp_yade", "delta_c_over_dmp_theory"],
+              rows)
     return rows
 
 
@@ -125,7 +127,8 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
         ax.set_title(f"({tag}) χ = {chi}: " + ("sticks" if r.stuck else f"e = {r.e:.3f}"), fontsize=9)
         ax.set_xlabel("δ [µm]")
         ax.set_ylabel("f [mN]")
-        ax.set_ylim(-PAPER["kc"] * dmax * 1.3e3, PAPER["kp"] * max(dmax - phiF * a12, 0) * 1.2e3 + PAPER["k1"] * dmax * 1.2e3)
+        ax.set_ylim(-PAPER["kc"] * dmax * 1.3e3,
+                    PAPER["kp"] * max(dmax - phiF * a12, 0) * 1.2e3 + PAPER["k1"] * dmax * 1.2e3)
         rows += [(chi, t[0], t[1], t[2], t[3]) for t in r.trace[::10]]  # every 10th step
         print(f"[fig7] chi = {chi}: {'stuck' if r.stuck else 'e = %.4f' % r.e}", flush=True)
     axes.flat[0].legend(fontsize=7)
@@ -133,5 +136,5 @@ def fig7(outdir, chis=(0.34, 0.69, 1.1, 1.37), phiF=0.05):
     fig_note(fig, PARAM_NOTE + f", φf = {phiF:g}, f_a = 0")
     save_figure(fig, outdir, "fig7_force_overlap")
     write_csv(os.path.join(outdir, "fig7_force_overlap.csv"),
-               ["chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
+              ["chi", "time_s", "overlap_m", "hysteretic_force_N", "total_force_N"], rows)
     return rows

@@ -44,7 +44,8 @@ def _plot(ax, curves, rows, colors, grid):
 
 
 HEADER = ["curve", "fa_N", "v_inf_m_s", "e_yade", "e_theory", "stuck"]
-PARAM_LINE = f"k1 = 100, kc = kca = 100 N/m, φf = {PAPER['phiF']:g}, a = {RADIUS * 1e3:g} mm, ρ = {DENSITY:g} kg/m³, jump-in"
+PARAM_LINE = (f"k1 = 100, kc = kca = 100 N/m, φf = {PAPER['phiF']:g}, a = {RADIUS * 1e3:g} mm, "
+              f"ρ = {DENSITY:g} kg/m³, jump-in")
 
 
 def short_fig5(outdir, quick=False):
@@ -114,4 +115,5 @@ def short_fig6(outdir, quick=False, fas=(0.0, 5e-9, 5e-7, 5e-5, 5e-3, 0.1)):
         summary.append(dict(fa=fa, v_f_a=_low_sticking_edge(SHORT, fa), e_at_3=_e_theory(3.0, SHORT, fa),
                             sticks_at_every_plotted_speed=all(_e_theory(v, SHORT, fa) == 0 for v in grid),
                             largest_relative_departure_from_fa0=on_fa0, yade_stuck_speeds=len(stuck_yade)))
-    return dict(figure="short 6", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows), curves=summary)
+    return dict(figure="short 6", collisions=len(rows), worst_abs_e_error=max(abs(r[3] - r[4]) for r in rows),
+                curves=summary)

@@ -80,7 +80,8 @@ def run(outdir, quick=False, protocol=None, progress=True):
     force = curve(c[:, 0], c[:, 1], c[:, 2], c[:, 3], c[:, 4], c[:, 5], L0, sample.D0, dx) / (sample.KP * sample.D0)
     info = dict(summary(dx, force), contacts=len(c), L0_d0=L0 / sample.D0, quick=quick,
                 mean_overlap_d0=float(c[:, 0].mean() / sample.D0), protocol=dict(PROTOCOL, **(protocol or {})),
-                formula="F = sum max(k2 (delta - eps l nx^2 - delta0), -kc (delta - eps l nx^2)) l nx^2 / L0, eps = Dx d0 / L0")
+                formula="F = sum max(k2 (delta - eps l nx^2 - delta0), -kc (delta - eps l nx^2)) l nx^2 / "
+                        "L0, eps = Dx d0 / L0")
     with outputs.Bundle(os.path.join(root(outdir, quick), "affine")) as b:
         b.write_text("affine.csv", "Dx,F_over_kp_d0\n" + "".join(f"{x!r},{f!r}\n" for x, f in zip(dx, force)))
         b.write_json("affine.json", info)

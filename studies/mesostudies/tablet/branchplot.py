@@ -2,7 +2,7 @@
 ``<run>-branches.csv`` a cyclic run writes (campaign.cyclic): plain Python, no YADE.
 
     python3 studies/scripts/tablet_branches.py campaigns/tablet/chosen/tension-Dx0.025-P480-branches.csv out.png --period 59272
-"""
+"""  # noqa: E501 (a command line)
 import csv
 
 from mesocontact.scene_names import BRANCHES

@@ -36,7 +36,8 @@ from .profile import persistent_from
 from .statements import load_json, read_csv
 
 E1_SAMPLES = (("chosen", 0.02), ("mid", 0.05), ("deep", 0.1))
-VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep", "0.1-seed2": None}  # variants/<sample> -> its E1 folder (None: no E1 run)
+# variants/<sample> -> its E1 folder (None: no E1 run)
+VARIANT_SAMPLES = {"tested": "chosen", "deep": "deep", "0.1-seed2": None}
 K1_OVER_KP, KC_OVER_KP = 0.5, 0.2  # the Appendix F particles' k1/kp and kc/kp (mesostudies.tablet.sample.MATERIALS)
 
 
@@ -44,7 +45,10 @@ def pull_ratio(kc_new, kc_old=KC_OVER_KP):
     """How much more a contact pulls with kc_new than with kc_old (both over kp): its largest pull
     kc k2 delta0 / (k2 + kc) along its k2 line, k2 between k1 (a contact loaded barely past elastic)
     and kp (one at the plastic limit). Returns (ratio at k2 = k1, ratio at k2 = kp)."""
-    return tuple(theory.largest_pull(k2, kc_new, 1.0) / theory.largest_pull(k2, kc_old, 1.0) for k2 in (K1_OVER_KP, 1.0))
+    return tuple(theory.largest_pull(k2, kc_new, 1.0) / theory.largest_pull(k2, kc_old, 1.0)
+                 for k2 in (K1_OVER_KP, 1.0))
+
+
 PAPER_L0 = 0.115  # the paper's sample length [mm]
 D0_MM = 0.01  # the primaries' mean diameter [mm] (mesostudies.tablet.sample.D0)
 
@@ -114,11 +118,13 @@ def e2(tree):
         f02 = _force_at(pull, 0.2)
         aff = load_json(os.path.join(folder, "affine"), "affine.json")
         gap = r["first_gap_Dx_by_area"]
-        rows.append({"sinter": r["sinter"], "seed": r["seed"], "L0_vs_paper": r["L0"] / PAPER_L0 - 1 if r["L0"] else None,
+        rows.append({"sinter": r["sinter"], "seed": r["seed"],
+                     "L0_vs_paper": r["L0"] / PAPER_L0 - 1 if r["L0"] else None,
                      "peak_tension": r["peak_tension"], "peak_Dx": r["peak_Dx"],
                      # factors.json holds the peak's magnitude; the CSV's tension is negative
                      "F02_over_peak": -f02 / r["peak_tension"] if f02 is not None and r["peak_tension"] else None,
-                     "first_gap_Dx": gap.get("1") if isinstance(gap, dict) else gap, "last_chain_Dx": r["last_chain_Dx"],
+                     "first_gap_Dx": gap.get("1") if isinstance(gap, dict) else gap,
+                     "last_chain_Dx": r["last_chain_Dx"],
                      "crack_from_wall_d0": _nearer_wall(r["weakest_at_marks"].get("0.81")),
                      "affine_peak_Dx": aff["peak_Dx"] if aff else None,
                      "affine_F02_over_peak": aff["F_at_0.2_over_peak"] if aff else None, "folder": name})
@@ -145,15 +151,23 @@ def e3(tree):
         f02_free = _force_at(pull, 0.2 * free)  # the same strain of the free part as Dx = 0.2 through walls
         rows.append({"sample": sample, "sinter": proto.get("sinter", 0.02), "seed": proto.get("seed", 1),
                      "peak_Dx_free": info["peak_Dx"] / free,
-                     "F02_free_over_peak": f02_free / info["peak_F"] if f02_free is not None and info["peak_F"] else None,
-                     "loading": ((f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
-                                 f"{grips['left'] + grips['right'] + grips['free']} particles; free {free:.2f} of L0)")
-                     if grips else "walls") + (f"; sliding, rolling, torsion {info['limits']['limits']} (E7)"
-                                                if info.get("limits") else ""), "peak_F": info["peak_F"], "peak_Dx": info["peak_Dx"],
+                     "F02_free_over_peak": (f02_free / info["peak_F"] if f02_free is not None and info["peak_F"]
+                                            else None),
+                     "loading": (((f"grips {grips['thickness_d0']:g} d0 ({grips['left']} + {grips['right']} of "
+                                   f"{grips['left'] + grips['right'] + grips['free']} particles; "
+                                   f"free {free:.2f} of L0)")
+                                  if grips else "walls")
+                                 + (f"; sliding, rolling, torsion {info['limits']['limits']} (E7)"
+                                    if info.get("limits") else "")),
+                     "peak_F": info["peak_F"],
+                     "peak_Dx": info["peak_Dx"],
                      "F02_over_peak": f02 / info["peak_F"] if f02 is not None and info["peak_F"] else None,
                      "free_fraction": free, "strain_2x_from_Dx": persistent_from(info["records"], 2.0 / free),
-                     "strain_at_peak": at_peak["max_strain_over_affine"] * free if at_peak["max_strain_over_affine"] else None, "strain_at_peak_where_d0": at_peak["at_d0"],
-                     "strain_at_02": at_02["max_strain_over_affine"] * free if at_02["max_strain_over_affine"] else None,
+                     "strain_at_peak": (at_peak["max_strain_over_affine"] * free if at_peak["max_strain_over_affine"]
+                                        else None),
+                     "strain_at_peak_where_d0": at_peak["at_d0"],
+                     "strain_at_02": (at_02["max_strain_over_affine"] * free if at_02["max_strain_over_affine"]
+                                      else None),
                      "strain_at_02_where_d0": at_02["at_d0"], "record_02_Dx": at_02["Dx"],
                      "record_Dx": at_peak["Dx"], "measured": at_peak["measured"], "affine": at_peak["affine"],
                      "max_tensile_measured": max(r["measured"]["tensile"] for r in info["records"]),
@@ -196,8 +210,8 @@ def markdown(one, two, label, three=(), five_six=()):
           "Generated by `python3 -m mesostudies.tablet.experiments` from the committed runs; forces F/(kp d0), "
           "tension negative; Dx in d0, > 0 in tension.", "",
           "## E1: cyclic tension, tested sample (d0 p_s/kp 0.02), intermediate (0.05) and deep-sintered (0.1)", "",
-          "| sample | d0 p_s/kp | Dx | period [t_w] | first peak | at Dx | F at the first turn / first peak | cycles 2-4 peaks "
-          "| spread of 2-4 / their mean | spread of 2-4 / first peak | cycle 2 / first |",
+          "| sample | d0 p_s/kp | Dx | period [t_w] | first peak | at Dx | F at the first turn / first peak | cycles "
+          "2-4 peaks | spread of 2-4 / their mean | spread of 2-4 / first peak | cycle 2 / first |",
           "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in one:
         md.append(f"| {r['sample']} | {r['sinter']:g} | {r['amplitude']:g} | {r['period']:g} | {r['first_peak']:.4f} | "
@@ -206,16 +220,17 @@ def markdown(one, two, label, three=(), five_six=()):
                   + f" | {_f(r['later_spread'], '{:.1%}')} | {_f(r['later_spread_of_first'], '{:.1%}')} | "
                   f"{_f(r['second_over_first'], '{:.2f}')} |")
     md += ["", "## E2: the sintering-stress sweep (the chosen preparation; one row per realization)", "",
-           "| d0 p_s/kp | seed | L0 vs paper | peak tension (magnitude) | peak Dx | F(0.2)/F_peak | first gap Dx | last chain Dx "
-           "| crack plane at Dx 0.81 from the nearer wall [d0] | affine peak Dx | affine F(0.2)/F_peak |",
+           "| d0 p_s/kp | seed | L0 vs paper | peak tension (magnitude) | peak Dx | F(0.2)/F_peak | first gap Dx | "
+           "last chain Dx | crack plane at Dx 0.81 from the nearer wall [d0] | affine peak Dx | affine F(0.2)/F_peak |",
            "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in two:
         md.append(f"| {r['sinter']:g} | {r['seed']} | {_f(r['L0_vs_paper'], '{:+.2%}')} | {r['peak_tension']:.4f} | "
                   f"{r['peak_Dx']:.3f} | {_f(r['F02_over_peak'], '{:.2f}')} | {_f(r['first_gap_Dx'], '{:.2f}')} | "
-                  f"{_f(r['last_chain_Dx'], '{:.2f}')} | {_f(r['crack_from_wall_d0'], '{:.2f}')} | {_f(r['affine_peak_Dx'], '{:.3f}')} | "
-                  f"{_f(r['affine_F02_over_peak'], '{:.2f}')} |")
+                  f"{_f(r['last_chain_Dx'], '{:.2f}')} | {_f(r['crack_from_wall_d0'], '{:.2f}')} | "
+                  f"{_f(r['affine_peak_Dx'], '{:.3f}')} | {_f(r['affine_F02_over_peak'], '{:.2f}')} |")
     if three:
-        md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`), and E4's pulls through grips", "",
+        md += ["", "## E3: non-affinity up to the peak (the pull's first part; `profile/`), and E4's "
+                   "pulls through grips", "",
                "Through grips of thickness t only L0 - 2 t d0 is free to stretch: the local strains are given against "
                "the free part's even stretch (the recorded ratio times (L0 - 2 t d0)/L0); the affine contact counts "
                "remain those of a stretch Dx d0/L0 of every contact outside the grips, which understates the free "
@@ -223,18 +238,20 @@ def markdown(one, two, label, three=(), five_six=()):
                "fraction, and the force at Dx = 0.2 times the free fraction over the peak (the walls' Dx of the same "
                "strain of the free part); after the peak, its ratio to the same sample's peak through the walls and to "
                "the tested sample's (seed 1, walls).", "",
-               "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / affine at the peak "
-               "(where, from the left face [d0]) | the same at Dx = 0.2 (where) | stays >= 2x affine from Dx "
-               "| on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
+               "| sample | d0 p_s/kp | seed | loaded by | peak | peak Dx | F(0.2)/F_peak | largest local strain / "
+               "affine at the peak (where, from the left face [d0]) | the same at Dx = 0.2 (where) | stays >= 2x "
+               "affine from Dx | on -kc delta at the peak: measured / affine | open at the peak: measured / affine "
                "| most on -kc delta: measured / affine |",
                "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in three:
             grip = r["loading"] != "walls"
             ratio = (f" ({r['peak_over_walls']:.2f} x walls, {r['peak_over_tested']:.2f} x tested)"
                      if r.get("peak_over_walls") else "")
-            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f}{ratio} | {r['peak_Dx']:.3f}"
+            md.append(f"| {r['sample']} | {r['sinter']:g} | {r['seed']} | {r['loading']} | {r['peak_F']:.4f}{ratio} "
+                      f"| {r['peak_Dx']:.3f}"
                       + (f" ({r['peak_Dx_free']:.3f})" if grip else "") + " | "
-                      f"{_f(r['F02_over_peak'], '{:.2f}')}" + (f" ({_f(r['F02_free_over_peak'], '{:.2f}')})" if grip else "")
+                      f"{_f(r['F02_over_peak'], '{:.2f}')}"
+                      + (f" ({_f(r['F02_free_over_peak'], '{:.2f}')})" if grip else "")
                       + f" | {_f(r['strain_at_peak'], '{:.1f}')} "
                       f"({_f(r['strain_at_peak_where_d0'], '{:.1f}')}) | {_f(r['strain_at_02'], '{:.1f}')} "
                       f"({_f(r['strain_at_02_where_d0'], '{:.1f}')}) | {_f(r['strain_2x_from_Dx'], '{:.3f}')} | "
@@ -242,9 +259,10 @@ def markdown(one, two, label, three=(), five_six=()):
                       f"{r['measured']['open']:.1%} / {r['affine']['open']:.1%} | "
                       f"{r['max_tensile_measured']:.1%} / {r['max_tensile_affine']:.1%} |")
     if five_six:
-        md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1, grips2: 1 and 2 d0), kc/kp 0.5 "
-               "(kc0.5) and cycles back to the start's force (force-return); in brackets the E1 run of the same sample, "
-               "amplitude and period; for grips, after Dx the walls' Dx that strains the free part as much", "",
+        md += ["", "## E4, E5 and E6: the same states loaded through grips of glued particles (grips1, grips2: 1 "
+                   "and 2 d0), kc/kp 0.5 "
+               "(kc0.5) and cycles back to the start's force (force-return); in brackets the E1 run of the same "
+               "sample, amplitude and period; for grips, after Dx the walls' Dx that strains the free part as much", "",
                "| sample | variant | Dx | period [t_w] | first peak | over E1's | a contact's largest pull over E1's "
                "(k2 = k1 to kp) | at Dx | F at the first turn / first peak "
                "| cycle 2 / first | spread of 2-4 / their mean | returns ended at Dx |",
@@ -253,7 +271,8 @@ def markdown(one, two, label, three=(), five_six=()):
             b = r["E1"] or {}
             amp = f"{r['amplitude']:g}" + (f" (walls' {r['free_amplitude']:.3f})" if r.get("free_amplitude") else "")
             md.append(f"| {r['sample']} | {r['variant']} | {amp} | {r['period']:g} | "
-                      f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | {_f(r['peak_over_E1'], '{:.2f}')} | "
+                      f"{r['first_peak']:.4f} ({_f(b.get('first_peak'), '{:.4f}')}) | "
+                      f"{_f(r['peak_over_E1'], '{:.2f}')} | "
                       + ("–" if r["contact_pull_ratio"] is None else
                          f"{r['contact_pull_ratio'][0]:.2f} – {r['contact_pull_ratio'][1]:.2f}") + " | "
                       f"{r['first_peak_Dx']:.3f} ({_f(b.get('first_peak_Dx'), '{:.3f}')}) | "

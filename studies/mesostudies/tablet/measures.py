@@ -83,6 +83,7 @@ def cycle_measures(rows, steps_per_cycle, mode, n_cycles=None):
         amp = max(abs(r[1]) for r in c)
         el = 0.5 * (max(r[2] for r in c) - min(r[2] for r in c)) * amp
         lp = loop_area(c)
-        out.append({"peak": pk, "amplitude": amp, "loop": lp, "elastic": el, "loop_over_elastic": lp / el if el else None,
+        out.append({"peak": pk, "amplitude": amp, "loop": lp, "elastic": el,
+                    "loop_over_elastic": lp / el if el else None,
                     "set": permanent_set(c, mode, rows[0][2])})
     return out

@@ -74,8 +74,8 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
     from mesocontact import outputs
     from mesocontact import scene as _scene
     from . import affine, sample
-    from .campaign.common import PROTOCOL, PULL_SPEED, _csv_text, prepare, root
-    from .campaign.runs import _test
+    from .campaign.common import PROTOCOL, PULL_SPEED, csv_text, prepare, root
+    from .campaign.runs import new_test
 
     from . import uniaxial
     prepare(outdir, quick, progress, **(protocol or {}))
@@ -83,7 +83,7 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
     members = uniaxial.grip_members(grips) if grips is not None else {}
     rigid = [set(m) for m in members.values()]
     contacts, _ = affine.contacts_of_scene(rigid)  # before the test's first step, as affine.run reads them
-    test, _ = _test(progress, grips, members or None)
+    test, _ = new_test(progress, grips, members or None)
     ids = sample.sphere_ids()
     lo, hi = sample.inner_box()
     n_slabs = slabs or max(2, int(round((hi[0] - lo[0]) / sample.D0)))
@@ -114,13 +114,15 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
         factor, where = localization(strains, eps) if eps > 0 else (None, None)
         records.append({"iter": row[0], "Dx": row[1], "F": row[2], "measured": measured,
                         "affine": affine_branches(*(contacts[:, k] for k in range(6)), eps),
-                        "max_strain_over_affine": factor, "at_d0": (0.5 * (x0[where] + x0[where + 1]) - lo[0]) / sample.D0
+                        "max_strain_over_affine": factor,
+                        "at_d0": (0.5 * (x0[where] + x0[where + 1]) - lo[0]) / sample.D0
                         if where is not None else None})
         slab_rows.append((row[0], row[1], *(float(s / eps) if eps > 0 else 1.0 for s in strains)))
 
     rows = test.pull(PULL_SPEED, until=until, every=100, on_record=hook)
     peak = min(rows, key=lambda r: r[2])
-    first = {f"{k:g}": next((r["Dx"] for r in records if r["max_strain_over_affine"] and r["max_strain_over_affine"] >= k), None)
+    first = {f"{k:g}": next((r["Dx"] for r in records if r["max_strain_over_affine"]
+                             and r["max_strain_over_affine"] >= k), None)
              for k in (1.5, 2.0, 4.0)}
     info = {"until": until, "L0": test.L0, "slabs": n_slabs, "slab_centres_d0": [(x - lo[0]) / sample.D0 for x in x0],
             "particles_per_slab": [len(m) for m in members], "contacts_at_start": len(pairs),
@@ -129,14 +131,15 @@ def run(outdir, quick=False, protocol=None, until=0.3, slabs=None, every_records
             "grips": test.grips, "limits": variant,
             "definitions": {"local strain": "difference of neighbouring slabs' mean x displacement over their centres' "
                                             "distance, over the affine strain Dx d0 / L0",
-                            "measured branches": "the particle contacts of the start: on -kc delta (tensile), in overlap "
-                                                 "otherwise (line: k1, kp or k2, compressive or tensile), without "
-                                                 "overlap or gone (open)",
+                            "measured branches": "the particle contacts of the start: on -kc delta (tensile), in "
+                                                 "overlap otherwise (line: k1, kp or k2, compressive or tensile), "
+                                                 "without overlap or gone (open)",
                             "affine branches": "the same contacts stretched affinely (affine.py)"}}
     name = "profile" + (f"-grips{grips:g}" if grips is not None else "") + (f"-{limits}" if limits is not None else "")
     with outputs.Bundle(os.path.join(root(outdir, quick), name)) as b:
-        b.write_text("profile.csv", _csv_text(rows))
-        b.write_text("profile-slabs.csv", _csv_text(slab_rows, "iter,Dx," + ",".join(f"gap{k}" for k in range(n_slabs - 1))))
+        b.write_text("profile.csv", csv_text(rows))
+        b.write_text("profile-slabs.csv",
+                     csv_text(slab_rows, "iter,Dx," + ",".join(f"gap{k}" for k in range(n_slabs - 1))))
         b.write_json("profile.json", info)
         plot(info, slab_rows, b.path("profile.png"))
     if progress:

@@ -137,7 +137,8 @@ def measure(path, flat=None):
 def main(argv):
     p = argparse.ArgumentParser(prog="python3 -m mesostudies.tablet.roughness")
     p.add_argument("snapshot", help="a legacy VTK sphere snapshot of the torn tablet")
-    p.add_argument("--flat", help="a snapshot of the whole tablet (Dx = 0): also the roughness of a flat cut through it")
+    p.add_argument("--flat",
+                   help="a snapshot of the whole tablet (Dx = 0): also the roughness of a flat cut through it")
     p.add_argument("--json", help="write the result here")
     a = p.parse_args(argv)
     try:
@@ -146,11 +147,13 @@ def main(argv):
         p.error(str(e))
     print(f"{out['halves']} spheres in the halves, {out['elsewhere']} elsewhere, {out['columns']} columns of d0^2; "
           f"face roughness (d0): left rms {out['left']['rms']:.2f}, 5-95 % {out['left']['range_5_95']:.2f}; "
-          f"right rms {out['right']['rms']:.2f}, 5-95 % {out['right']['range_5_95']:.2f}; median gap {out['gap_d0']:.2f}")
+          f"right rms {out['right']['rms']:.2f}, 5-95 % {out['right']['range_5_95']:.2f}; median gap "
+          f"{out['gap_d0']:.2f}")
     if a.flat:
         c = out["flat_cut"]
         print(f"a flat cut at the median x of {c['snapshot']}: left rms {c['left']['rms']:.2f}, 5-95 % "
-              f"{c['left']['range_5_95']:.2f}; right rms {c['right']['rms']:.2f}, 5-95 % {c['right']['range_5_95']:.2f}")
+              f"{c['left']['range_5_95']:.2f}; right rms {c['right']['rms']:.2f}, 5-95 % "
+              f"{c['right']['range_5_95']:.2f}")
     if a.json:
         with open(a.json, "w") as f:
             json.dump(out, f, indent=1)

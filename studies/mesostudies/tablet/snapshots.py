@@ -1,245 +1,29 @@
-"""Snapshots of the tablet without a GUI, and where it comes apart (inside ``yade``).
-
-- ``png``: the spheres seen along y (the viewer at -y), ray-cast and shaded as spheres, coloured
-  by their distance from the viewer red -> green -> blue as in the paper's Figs. 17 and 19;
-- ``visible_gap``: the largest crack seen from the front face, the paper's "first visible gap";
-- ``vtk``: the spheres (radius, depth, velocity) as legacy VTK polydata for ParaView;
-- ``see_through_holes``: the area of the holes one sees through the sample along y (empty pixels
-  of the projection not connected to its outside), the "visible gap";
-- ``walls_connected``: whether the mechanical contacts still link the two loading walls.
-"""
-import numpy as np
-
-try:
-    from yade import O
-    from yade import export as _export
-except ImportError as _exc:  # pragma: no cover - outside yade
-    raise ImportError("mesostudies.tablet.snapshots needs YADE: run it inside `yade`") from _exc
+"""Snapshots of the tablet without a GUI, and where it comes apart (inside ``yade``): the
+library's pictures (``mesocontact.bulk.pictures``) at the tablet's d0, axes in mm."""
+from mesocontact.bulk import pictures as _lib
+from mesocontact.bulk.pictures import depth_buffer, depth_colours, montage, walls_connected  # noqa: F401
 
 from . import sample
 
 
-def _spheres():
-    ids = sample.sphere_ids()
-    pos = np.array([list(O.bodies[i].state.pos) for i in ids])
-    rad = np.array([O.bodies[i].shape.radius for i in ids])
-    return ids, pos, rad
-
-
-def depth_colours(depth):
-    """red (near) -> green -> blue (far) for depth normalised to [0, 1]."""
-    d = np.clip(depth, 0.0, 1.0)
-    r = np.clip(1.0 - 2.0 * d, 0.0, 1.0)
-    g = 1.0 - np.abs(2.0 * d - 1.0)
-    b = np.clip(2.0 * d - 1.0, 0.0, 1.0)
-    return np.stack([r, g, b], axis=-1)
-
-
 def window(margin=1.0, stretch=0.0):
-    """(x0, x1, z0, z1) around the spheres and walls present, ``margin`` d0 wide, and ``stretch``
-    d0 wider on each side in x (room for a pull): one window for every panel of a series."""
-    _, pos, rad = _spheres()
-    x0, x1 = (pos[:, 0] - rad).min(), (pos[:, 0] + rad).max()
-    for i in sample.wall_ids().values():
-        b = O.bodies[i]
-        x0, x1 = min(x0, b.state.pos[0] - b.shape.extents[0]), max(x1, b.state.pos[0] + b.shape.extents[0])
-    m = margin * sample.D0
-    return (x0 - m - stretch * sample.D0, x1 + m + stretch * sample.D0,
-            (pos[:, 2] - rad).min() - m, (pos[:, 2] + rad).max() + m)
-
-
-def depth_buffer(win, pixel):
-    """Ray-casts the spheres seen from -y along +y on a grid of ``pixel`` over ``win``: returns
-    (surface y of the first sphere hit, inf where none; its index; the surface normal), each an
-    array indexed [z, x]."""
-    _, pos, rad = _spheres()
-    x0, x1, z0, z1 = win
-    nx, nz = int((x1 - x0) / pixel) + 1, int((z1 - z0) / pixel) + 1
-    xs, zs = x0 + (np.arange(nx) + 0.5) * pixel, z0 + (np.arange(nz) + 0.5) * pixel
-    ybuf = np.full((nz, nx), np.inf)
-    owner = np.full((nz, nx), -1)
-    normal = np.zeros((nz, nx, 3))
-    for k, ((x, y, z), r) in enumerate(zip(pos, rad)):
-        i0, i1 = max(0, int((x - r - x0) / pixel)), min(nx, int((x + r - x0) / pixel) + 1)
-        j0, j1 = max(0, int((z - r - z0) / pixel)), min(nz, int((z + r - z0) / pixel) + 1)
-        if i0 >= i1 or j0 >= j1:
-            continue
-        dx = xs[None, i0:i1] - x
-        dz = zs[j0:j1, None] - z
-        h2 = r * r - dx * dx - dz * dz
-        hit = h2 > 0
-        h = np.sqrt(np.where(hit, h2, 0.0))
-        ys = y - h
-        sub = ybuf[j0:j1, i0:i1]
-        better = hit & (ys < sub)
-        sub[better] = ys[better]
-        owner[j0:j1, i0:i1][better] = k
-        nrm = normal[j0:j1, i0:i1]
-        nrm[better] = np.stack([np.broadcast_to(dx, h.shape), -h, np.broadcast_to(dz, h.shape)], axis=-1)[better] / r
-    return ybuf, owner, normal
+    return _lib.window(margin, stretch, d0=sample.D0)
 
 
 def png(path, title="", win=None, pixel=None):
-    """Renders the spheres seen from -y (the paper's view) into ``path``: each sphere shaded as a
-    sphere (light from the viewer's upper left) and coloured by its centre's distance from the
-    viewer, red -> green -> blue over the sample's depth (its bulk: 1st to 99th percentile); the
-    walls in grey. ``win`` (see
-    window()) fixes the frame, so that a series of panels shares one scale."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    pixel = pixel or sample.D0 / 16
-    win = win or window()
-    _, pos, rad = _spheres()
-    ybuf, owner, normal = depth_buffer(win, pixel)
-    y = pos[:, 1]
-    # the colour spans the bulk's depth (1st to 99th percentile): a few spheres squeezed out of a
-    # compressed sample must not stretch it until the bulk is one colour (Fig. 19's late panels)
-    lo, hi = np.percentile(y, [1, 99])
-    depth = np.clip((y - lo) / max(hi - lo, 1e-300), 0.0, 1.0)
-    light = np.array([-0.45, -1.0, 0.55])
-    light /= np.linalg.norm(light)
-    shade = 0.3 + 0.7 * np.clip(normal @ light, 0.0, 1.0)  # both point towards the viewer's side
-    img = np.ones(ybuf.shape + (3,))
-    x0, x1, z0, z1 = win
-    xs = x0 + (np.arange(img.shape[1]) + 0.5) * pixel
-    zs = z0 + (np.arange(img.shape[0]) + 0.5) * pixel
-    for i in sample.wall_ids().values():  # the walls: grey, behind nothing
-        b = O.bodies[i]
-        c, e = b.state.pos, b.shape.extents
-        inx = (xs >= c[0] - e[0]) & (xs <= c[0] + e[0])
-        inz = (zs >= c[2] - e[2]) & (zs <= c[2] + e[2])
-        img[np.ix_(inz, inx)] = 0.72
-    seen = owner >= 0
-    img[seen] = depth_colours(depth[owner[seen]]) * shade[seen][:, None]
-    fig, ax = plt.subplots(figsize=(6.4, 6.4 * img.shape[0] / img.shape[1] + 0.6))
-    ax.imshow(img, origin="lower", extent=(x0, x1, z0, z1), interpolation="bilinear")
-    ax.set_xlabel("x [mm]")
-    ax.set_ylabel("z [mm]")
-    ax.set_title(title, fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    """The spheres seen from -y, coloured by depth (bulk.pictures.png), axes in mm."""
+    return _lib.png(path, title, win, pixel, d0=sample.D0, unit="mm")
 
 
 def visible_gap(depth_behind=3.0, band=0.6, pixel=None):
-    """Area [d0^2] of the largest crack seen from the front face (-y): the largest 4-connected
-    region of pixels where the first sphere seen lies ``depth_behind`` d0 or more behind the
-    front face (or none is seen), within the central ``band`` of the sample's height in z and
-    between the inner faces of the x walls (one d0 in from each). The front face is the median
-    surface depth seen in that window. A sample seen whole gives 0; the paper's "first
-    visible gap" is the first Dx where this reaches one d0^2."""
-    pixel = pixel or sample.D0 / 10
-    _, pos, rad = _spheres()
-    lo, hi = sample.inner_box()
-    zc, zh = pos[:, 2].mean(), 0.5 * band * ((pos[:, 2] + rad).max() - (pos[:, 2] - rad).min())
-    x0 = (lo[0] if lo[0] is not None else (pos[:, 0] - rad).min()) + sample.D0
-    x1 = (hi[0] if hi[0] is not None else (pos[:, 0] + rad).max()) - sample.D0
-    if x1 <= x0:
-        return 0.0
-    ybuf, _, _ = depth_buffer((x0, x1, zc - zh, zc + zh), pixel)
-    front = np.median(ybuf[np.isfinite(ybuf)]) if np.isfinite(ybuf).any() else 0.0
-    deep = ybuf >= front + depth_behind * sample.D0
-    return _largest_region(deep) * pixel * pixel / sample.D0 ** 2
-
-
-def _largest_region(mask):
-    """Pixel count of the largest 4-connected True region of a boolean array."""
-    seen = np.zeros_like(mask)
-    best = 0
-    nz, nx = mask.shape
-    for j0, i0 in zip(*np.nonzero(mask)):
-        if seen[j0, i0]:
-            continue
-        seen[j0, i0] = True
-        todo, count = [(j0, i0)], 0
-        while todo:
-            j, i = todo.pop()
-            count += 1
-            for jj, ii in ((j + 1, i), (j - 1, i), (j, i + 1), (j, i - 1)):
-                if 0 <= jj < nz and 0 <= ii < nx and mask[jj, ii] and not seen[jj, ii]:
-                    seen[jj, ii] = True
-                    todo.append((jj, ii))
-        best = max(best, count)
-    return best
+    """Area [d0^2] of the largest crack seen from the front face (bulk.pictures.visible_gap)."""
+    return _lib.visible_gap(depth_behind, band, pixel, d0=sample.D0)
 
 
 def vtk(base, label):
-    """Writes ``base-spheres-<label>.vtk`` (label: a non-negative integer)."""
-    exporter = _export.VTKExporter(base)
-    y0 = min(O.bodies[i].state.pos[1] for i in sample.sphere_ids())
-    exporter.exportSpheres(what=dict(depth=f"b.state.pos[1] - {y0!r}", velocity="b.state.vel"), numLabel=int(label),
-                           comment=f"meso-particle tablet, iter {O.iter}")
+    return _lib.vtk(base, label, comment="meso-particle tablet")
 
 
 def see_through_holes(pixel=None):
-    """Area [d0^2] of the holes in the projection of the spheres along y: empty pixels that are
-    not connected (4-neighbours) to the border of the picture. 0 while the sample is opaque."""
-    pixel = pixel or sample.D0 / 10
-    _, pos, rad = _spheres()
-    x0, z0 = pos[:, 0].min() - rad.max() - 2 * pixel, pos[:, 2].min() - rad.max() - 2 * pixel
-    nx = int((pos[:, 0].max() + rad.max() + 2 * pixel - x0) / pixel) + 1
-    nz = int((pos[:, 2].max() + rad.max() + 2 * pixel - z0) / pixel) + 1
-    full = np.zeros((nx, nz), dtype=bool)
-    xs, zs = x0 + (np.arange(nx) + 0.5) * pixel, z0 + (np.arange(nz) + 0.5) * pixel
-    for (x, _, z), r in zip(pos, rad):
-        i0, i1 = int((x - r - x0) / pixel), int((x + r - x0) / pixel) + 1
-        j0, j1 = int((z - r - z0) / pixel), int((z + r - z0) / pixel) + 1
-        dx = xs[i0:i1, None] - x
-        dz = zs[None, j0:j1] - z
-        full[i0:i1, j0:j1] |= dx * dx + dz * dz <= r * r
-    outside = np.zeros_like(full)
-    outside[0, :] = outside[-1, :] = True
-    outside[:, 0] = outside[:, -1] = True
-    outside &= ~full
-    while True:  # flood fill of the empty pixels from the border
-        grown = outside.copy()
-        grown[1:, :] |= outside[:-1, :]
-        grown[:-1, :] |= outside[1:, :]
-        grown[:, 1:] |= outside[:, :-1]
-        grown[:, :-1] |= outside[:, 1:]
-        grown &= ~full
-        if (grown == outside).all():
-            break
-        outside = grown
-    holes = ~full & ~outside
-    return holes.sum() * pixel * pixel / (sample.D0 ** 2)
-
-
-def walls_connected(left, right):
-    """True while a chain of mechanical contacts (overlap > 0) joins body ``left`` to ``right``."""
-    nbrs = {}
-    for I in O.interactions:
-        if I.isReal and I.geom.penetrationDepth > 0:
-            nbrs.setdefault(I.id1, []).append(I.id2)
-            nbrs.setdefault(I.id2, []).append(I.id1)
-    seen, todo = {left}, [left]
-    while todo:
-        for j in nbrs.get(todo.pop(), ()):
-            if j == right:
-                return True
-            if j not in seen:
-                seen.add(j)
-                todo.append(j)
-    return False
-
-
-def montage(pngs, path, ncols=4, titles=None):
-    """The panels ``pngs`` side by side in one picture (a series shares its frame and scale),
-    lettered (a), (b), ... as the paper's snapshot figures, each with its title if given."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.image as mpimg
-    import matplotlib.pyplot as plt
-    imgs = [mpimg.imread(p) for p in pngs]
-    nrows = (len(imgs) + ncols - 1) // ncols
-    h, w = imgs[0].shape[:2]
-    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 3.2 * nrows * h / w), squeeze=False)
-    for ax in axes.flat:
-        ax.axis("off")
-    for k, (ax, img) in enumerate(zip(axes.flat, imgs)):
-        ax.imshow(img)
-        ax.set_title(f"({chr(97 + k)})" + (f" {titles[k]}" if titles else ""), fontsize=9, loc="left")
-    fig.tight_layout(pad=0.2)
-    fig.savefig(path, dpi=130, bbox_inches="tight", pad_inches=0.08)  # the first row's letters inside the picture
-    plt.close(fig)
+    """Area [d0^2] of the holes one sees through the sample along y (bulk.pictures)."""
+    return _lib.see_through_holes(pixel, d0=sample.D0)

@@ -47,7 +47,8 @@ def _locked(outdir):
 def _config(quick, material, kc_over_kp, n, packing="full", glue="loading", rel_std=0.05, seed=1, sinter=None):
     n = n or (QUICK_N if quick else 1728)
     kc = sample.particle_material(material)["kc"] / sample.KP if kc_over_kp is None else float(kc_over_kp)
-    return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue, "rel_std": float(rel_std),
+    return {"n": int(n), "material": material, "kc_over_kp": kc, "packing": packing, "glue": glue,
+            "rel_std": float(rel_std),
             "seed": int(seed), "sinter": float(sample.SINTER if sinter is None else sinter)}
 
 
@@ -61,16 +62,19 @@ def _load(p, config):
             info = json.load(f)
         built = info["built"]
         have = {"n": int(built["n"]), "material": built["material"], "kc_over_kp": float(built["kc_over_kp"]),
-                "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),  # older files: the first protocol
+                # older files: the first protocol
+                "packing": built.get("packing", "full"), "glue": built.get("glue", "loading"),
                 "rel_std": float(built.get("rel_std", 0.05)), "seed": int(built.get("seed", 1)),
                 "sinter": float(built.get("sinter", sample.SINTER))}
     except (OSError, ValueError, KeyError, TypeError, AttributeError) as e:  # a number as text, a list, ...
         raise _Unreadable(f"{p}.json: {type(e).__name__}: {e}")
-    if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std", "sinter") else have[k] != config[k] for k in config):
+    if any(abs(have[k] - config[k]) > 1e-12 if k in ("kc_over_kp", "rel_std", "sinter") else have[k] != config[k]
+           for k in config):
         raise ValueError(f"{p} holds a tablet with {have}, not the {config} asked for: use another output directory")
     try:
         O.load(p)
-    except (RuntimeError, MemoryError, ValueError, TypeError) as e:  # MemoryError: an earlier version of the plugin's classes; ValueError: a value the classes refuse
+    # MemoryError: an earlier version of the plugin's classes; ValueError: a value the classes refuse
+    except (RuntimeError, MemoryError, ValueError, TypeError) as e:
         raise _Unreadable(f"{p}: {type(e).__name__}: {e}")
     n = len(sample.sphere_ids())
     if n != config["n"] or not {"left", "right"} <= set(sample.wall_ids()):
@@ -114,8 +118,8 @@ def ensure(stage, outdir, quick=False, material="appendixF", kc_over_kp=None, n=
             if progress:
                 print(f"preparing the released tablet {p} ({config})", flush=True)
             return sample.prepare(p, n=config["n"], material=material, kc_over_kp=config["kc_over_kp"],
-                                   progress=progress, packing=packing, glue=glue, rel_std=rel_std, seed=seed,
-                                   sinter=config["sinter"])
+                                  progress=progress, packing=packing, glue=glue, rel_std=rel_std, seed=seed,
+                                  sinter=config["sinter"])
     info = ensure("released", outdir, quick, material, kc_over_kp, n, progress, packing, glue, rel_std, seed, sinter)
     with _locked(outdir):
         made = _try_load(p, config, progress)  # made meanwhile by another job

@@ -39,7 +39,7 @@ def read_csv(path):
         return [tuple(float(x) for x in ln.split(",")) for ln in f.read().split("\n")[1:] if ln]
 
 
-def _runs(d):
+def runs_of(d):
     """The cyclic runs of the campaign: {(mode, amplitude, period): (json, measures per cycle)}."""
     out = {}
     for js in sorted(glob.glob(os.path.join(d, "*-Dx*-P*.json"))):
@@ -60,7 +60,7 @@ def _slowest(runs, mode, amp):
     return runs[keys[0]] if keys else None
 
 
-def _pct(x, f=".2g"):
+def pct(x, f=".2g"):
     return "–" if x is None else f"{100 * x:{f}} %"
 
 
@@ -80,22 +80,21 @@ def realizations(d, st):
     if not st:
         return []
     b = st["built"]
-    return sorted((r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", SINTER), r["drag"]) ==
-                   (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05), b.get("sinter", SINTER),
-                    "contacts")), key=lambda r: r["seed"])
+    return sorted((r for r in rows if (r["packing"], r["glue"], r["rel_std"], r.get("sinter", SINTER), r["drag"])
+                   == (b.get("packing", "full"), b.get("glue", "loading"), b.get("rel_std", 0.05),
+                       b.get("sinter", SINTER), "contacts")), key=lambda r: r["seed"])
 
 
 def statements(d):
     """The list of statements of Appendix F with number, definition and verdict (see the module)."""
     st = load_json(d, "unconfined.yade.gz.json") or load_json(d, "released.yade.gz.json")
-    runs = _runs(d)
+    runs = runs_of(d)
     pull = load_json(d, "fig17.json")
     out = []
 
     def add(quote, number, definition, verdict, note="", why=""):
         out.append({"n": len(out) + 1, "paper": quote, "project": number, "definition": definition,
                     "verdict": verdict, "note": note, "why": why})
-
 
     amps = {m: sorted({k[1] for k in runs if k[0] == m}) for m in ("tension", "compression")}
     L0s = sorted({j["L0"] for j, _ in runs.values()})
@@ -109,25 +108,25 @@ def statements(d):
         verdict = "✓" if abs(err) <= TOL_L0 else ("◐" if abs(err) <= 0.05 else "✗")
         if sd is not None:  # the paper's single value against the realizations
             verdict = "✓" if abs(mean) <= sd and abs(err) <= 0.05 else ("◐" if abs(mean) <= 2 * sd else "✗")
-        add("an agglomerate (cubic) of size L0 = 0.115", f"L0 = {L0:.5f} ({_pct(err)} from 0.115)"
-            + (f"; over {len(errs)} realizations mean {_pct(mean)} from 0.115, sd {_pct(sd)}: the paper's value "
+        add("an agglomerate (cubic) of size L0 = 0.115", f"L0 = {L0:.5f} ({pct(err)} from 0.115)"
+            + (f"; over {len(errs)} realizations mean {pct(mean)} from 0.115, sd {pct(sd)}: the paper's value "
                f"{abs(mean) / sd:.1f} sd from their mean, this seed {abs(err - mean) / sd:.1f} sd" if sd else ""),
             "x length between the loading walls at the start of every test; the tested sample is seed 1, the first "
             "realization, fixed before any run",
             verdict, "the paper's value within one sd of the realizations' mean: ✓ (without realizations: within "
-            f"{_pct(TOL_L0)}); within two: ◐")
+            f"{pct(TOL_L0)}); within two: ◐")
     else:
         add("an agglomerate (cubic) of size L0 = 0.115", "–", "x length at the test start", "–")
     if st:
         b = st["built"]
         add("N = 1728 primary particles of diameter d0 = 0.01 (with some variation in size)",
             f"N = {b['n']}, radii {b['radii'][0] / 0.005:.3f}–{b['radii'][1] / 0.005:.3f} d0/2",
-            f"particles built; Gaussian radii, relative std {_pct(b.get('rel_std', 0.05))}, cut at 2 sigma",
+            f"particles built; Gaussian radii, relative std {pct(b.get('rel_std', 0.05))}, cut at 2 sigma",
             "✓" if b["n"] == 1728 else "✗")
         s = st["sintered"]
         ws = max(abs(v / s["goal"] - 1) for v in s["wall_stress"].values()) if "goal" in s else None
         add("compressed (pressure-sintered) with a dimensionless wall stress d0 p_s/kp = 0.02",
-            f"every wall within {_pct(ws)} of p_s" if ws is not None else "–",
+            f"every wall within {pct(ws)} of p_s" if ws is not None else "–",
             "wall stresses when sintering ends", "✓" if ws is not None and ws < 0.01 else "–")
         add("to form a stable, rather dense agglomerate",
             f"solid fraction {s['solid_fraction']:.3f}, C {s['coordination']:.2f}, {s['rattlers']} rattlers, "
@@ -137,7 +136,7 @@ def statements(d):
         r = st["released"]
         wr = max(abs(v / r["goal"] - 1) for v in r["wall_stress"].values()) if "goal" in r else None
         add("the stress is first released to 2e-5, i.e. p_r/p_s = 1e-3, for all walls",
-            (f"every wall within {_pct(wr)} of p_r; " if wr is not None else "")
+            (f"every wall within {pct(wr)} of p_r; " if wr is not None else "")
             + f"solid fraction {r['solid_fraction']:.3f}, C {r['coordination']:.2f}, {r['rattlers']} rattlers",
             "wall stresses of the released state", "✓" if wr is not None and wr < 0.01 else "–")
         add("kc/kp = 0.2, mu_r = mu_o = 0.2, gamma_r/gamma = gamma_o/gamma = 0.1 (else Table 2 of Luding 2008)",
@@ -162,10 +161,11 @@ def statements(d):
         ret = {a: _retrace(t[a][1]) for a in amps["tension"]}
         met = [ret[a][0] <= 0.05 and ret[a][1] <= 0.05 for a in small]
         add("repeated cyclic loading remains on the same branch with positive slope (elastic)",
-            ", ".join(f"{a:g}: {_pct(ret[a][0])} / {_pct(ret[a][1])}" for a in small),
+            ", ".join(f"{a:g}: {pct(ret[a][0])} / {pct(ret[a][1])}" for a in small),
             "cycles 2–4 retrace one branch: the range of their peaks over the first peak / over their own mean, "
-            "amplitudes below 0.2 (slowest run); one branch: both <= 5 % (changed from the loop area, which also counts "
-            "the hysteresis of a branch that is retraced: Fig. 16's caption calls the repeated branches reversible)",
+            "amplitudes below 0.2 (slowest run); one branch: both <= 5 % (changed from the loop area, which also "
+            "counts the hysteresis of a branch that is retraced: Fig. 16's caption calls the repeated "
+            "branches reversible)",
             "✓" if all(met) else ("◐" if any(met) or all(ret[a][0] <= 0.05 for a in small) else "✗"),
             why=_drift(runs, [a for a in small if not (ret[a][0] <= 0.05 and ret[a][1] <= 0.05)]) + _first_pull(d))
         far = {a: _far_force(t[a][0], d) for a in amps["tension"]}
@@ -182,9 +182,9 @@ def statements(d):
         add("for the largest amplitude (0.2) the behaviour is not perfectly elastic, first plastic effects",
             "drift of cycles 2–4 at 0.2 over the smaller amplitudes' largest: "
             + ", ".join(f"{r:.2f} x at {p:g} t_w" for p, r in ratios.items()),
-            "the retrace measure of the repeated cycles above (range of cycles 2–4 peaks over their mean), 0.2 against the smaller "
-            "amplitudes, each period; the red curve less reversible: > 1.5 x at both periods (◐ when the periods "
-            "disagree: rate-dependent)",
+            "the retrace measure of the repeated cycles above (range of cycles 2–4 peaks over their mean), 0.2 against "
+            "the smaller amplitudes, each period; the red curve less reversible: > 1.5 x at both periods (◐ when the "
+            "periods disagree: rate-dependent)",
             "✓" if all(r > 1.5 for r in both) else ("✗" if all(r <= 1.5 for r in both) else "◐"),
             why=_drift(runs, [0.2, 0.1]))
     # -- the pull and Dx = 0.2
@@ -196,8 +196,8 @@ def statements(d):
             kept = w["count"] / before
             add("at 0.2 d0 the sample has mostly, but not completely lost mechanical contact",
                 f"across the crack plane ({w['from_left_d0']:.1f} / {w['from_right_d0']:.1f} d0 from the walls) "
-                f"{w['count']} of {before} contacts ({_pct(kept)}); in total {at.get('total', '–')} of "
-                f"{p0.get('total', '–')}; tension {_pct(at['F'] / pull['max_tension'])} of the peak",
+                f"{w['count']} of {before} contacts ({pct(kept)}); in total {at.get('total', '–')} of "
+                f"{p0.get('total', '–')}; tension {pct(at['F'] / pull['max_tension'])} of the peak",
                 "contacts in overlap crossing the crack plane (the weakest plane at Dx = 0.2) at Dx = 0.2, against the "
                 "same plane at Dx = 0, and all contacts; read with the force-displacement figure it stands beside: "
                 "mostly lost, the tension below 50 % of the peak; not completely, > 0 (the count is given beside)",
@@ -216,8 +216,9 @@ def statements(d):
         ok = {k: max(v) <= 0.05 for k, v in got.items()}
         add("the reversible, elastic un-/re-loading stretches to four times phi_f d0 and even higher",
             "cycles 2–4 peaks' range over the first peak / over their mean: "
-            + ", ".join(f"Dx {k[1]:g} at {k[2]:g} t_w: {_pct(v[0])} / {_pct(v[1], '.3g')}" for k, v in got.items()),
-            f"cycles 2–4 retrace one branch (both <= 5 %, as for the repeated cycles above) at Dx = 0.2 = {0.2 / PHI_F:g} phi_f d0 and "
+            + ", ".join(f"Dx {k[1]:g} at {k[2]:g} t_w: {pct(v[0])} / {pct(v[1], '.3g')}" for k, v in got.items()),
+            f"cycles 2–4 retrace one branch (both <= 5 %, as for the repeated cycles above) at "
+            f"Dx = 0.2 = {0.2 / PHI_F:g} phi_f d0 and "
             "beyond, each period (changed from the loop area, as there)",
             "✓" if all(ok.values()) else ("◐" if any(ok.values()) or any(v[0] <= 0.05 for v in got.values()) else "✗"),
             why=_drift(runs, [0.2, 0.3]))
@@ -230,10 +231,11 @@ def statements(d):
             first = max(first, abs(p2[0] / p1[0] - 1))  # the slower run against the faster, as sensitivity.json
             later = max([later] + [abs(y / x - 1) for x, y in zip(p1[1:], p2[1:])])
         add("thick lines, four times slower: not an effect of viscosity (tension)",
-            f"largest change between the two slowest periods: of a first peak {_pct(first)}, of a later cycle's peak "
-            f"{_pct(later)}",
+            f"largest change between the two slowest periods: of a first peak {pct(first)}, of a later cycle's peak "
+            f"{pct(later)}",
             "each cycle's peak, the 4 x slower run's against the faster's; quasi-static: <= 5 % (the paper: "
-            "'qualitatively'; ◐ when only the first peaks are)", "✓" if max(first, later) <= 0.05 else ("◐" if first <= 0.05 else "✗"),
+            "'qualitatively'; ◐ when only the first peaks are)",
+            "✓" if max(first, later) <= 0.05 else ("◐" if first <= 0.05 else "✗"),
             why=_rate(d))
     if pull:
         marks = [round(s["mark"], 2) for s in pull.get("snapshots", [])]
@@ -245,10 +247,12 @@ def statements(d):
             ranges = (lr["range_5_95"], rr["range_5_95"])
             flat_range = max(flat["left"]["range_5_95"], flat["right"]["range_5_95"]) if flat else None
             add("the contact surface has developed a roughness of the size of several primary particles",
-                f"fracture faces ({rough['snapshot']}): heights' 5–95 % range {ranges[0]:.1f} and {ranges[1]:.1f} d0 (rms "
-                f"{lr['rms']:.2f}, {rr['rms']:.2f})" + (f"; a flat cut through the sample: {flat_range:.1f} d0" if flat else ""),
+                f"fracture faces ({rough['snapshot']}): heights' 5–95 % range {ranges[0]:.1f} and {ranges[1]:.1f} "
+                f"d0 (rms {lr['rms']:.2f}, {rr['rms']:.2f})" + (f"; a flat cut through the sample: {flat_range:.1f} d0"
+                                                                if flat else ""),
                 "each torn half's outermost sphere surface over d0 x d0 columns across the pull "
-                "(mesostudies.tablet.roughness); several particles: range >= 2 d0 on both faces and >= 2 x a flat cut's",
+                "(mesostudies.tablet.roughness); several particles: range >= 2 d0 on both faces and >= 2 x a flat "
+                "cut's",
                 "✓" if min(ranges) >= 2 and flat and min(ranges) >= 2 * flat_range else
                 ("◐" if min(ranges) >= 1 else "✗"))
         else:
@@ -262,16 +266,17 @@ def statements(d):
         add("the contact is lost only at Dx ~ 8 d0, when the last of the thin threads breaks; completely only at the "
             "extreme, final deformation (the paper: 'Fig. 19(g)', read as Fig. 17(g))", f"Dx = {lc:.2f}" if lc else "–",
             f"no chain of contacts in overlap from wall to wall; ~ 8 d0: within a factor {APPROX:g} "
-            f"({8 / APPROX:.2f}–{8 * APPROX:g}; one measurement for the paper's two sentences); ◐ where this seed misses it "
-            "but the paper's 8 lies within one sd of the realizations' mean",
+            f"({8 / APPROX:.2f}–{8 * APPROX:g}; one measurement for the paper's two sentences); ◐ where this seed "
+            "misses it but the paper's 8 lies within one sd of the realizations' mean",
             "✓" if lc and 8 / APPROX <= lc <= 8 * APPROX else ("◐" if spread is not None and spread <= 1 else "✗"),
             why=chance)
         branch = _tension_extent(d)
         add("the elastic, irreversible tension branch is strongly developed only for Dx ~ d0/5",
-            (f"peak tension {-pull['max_tension']:.3g} at Dx = {pull['max_tension_Dx']:.3f}; below half the peak for good "
-             f"from Dx = {branch[0]:.3f}, below a third from {branch[1]:.3f}") if branch else "–",
+            (f"peak tension {-pull['max_tension']:.3g} at Dx = {pull['max_tension_Dx']:.3f}; below half the peak "
+             f"for good from Dx = {branch[0]:.3f}, below a third from {branch[1]:.3f}") if branch else "–",
             "the extent of the significant tension against the 8 d0 of the last thread: where the pull's tension stays "
-            f"below half (a third) of its peak; ~ d0/5: within a factor {APPROX:g} ({0.2 / APPROX:.3f}–{0.2 * APPROX:g}; "
+            f"below half (a third) of its peak; ~ d0/5: within a factor {APPROX:g} "
+            f"({0.2 / APPROX:.3f}–{0.2 * APPROX:g}; "
             "changed from the peak's Dx: read so, the sentence would contradict the paper's own 'mostly lost contact' "
             "at 0.2); ◐ when one of the two is",
             ("✓" if all(0.2 / APPROX <= x <= 0.2 * APPROX for x in branch) else
@@ -286,16 +291,16 @@ def statements(d):
         smallest = (0.05, 0.1)
         elastic = {a: rv1[a] <= 0.05 and sets[a] <= 0.05 for a in smallest}
         add("the smallest amplitudes remain elastic throughout",
-            "; ".join(f"{a:g}: largest loop {_pct(rv1[a])} (cycle 1), set {_pct(sets[a])}" for a in smallest),
+            "; ".join(f"{a:g}: largest loop {pct(rv1[a])} (cycle 1), set {pct(sets[a])}" for a in smallest),
             "every cycle's loop against its elastic energy and the permanent set after the last cycle, at the two "
             "smallest amplitudes; elastic: loop <= 5 %, set <= 5 % of the amplitude; ◐ when the smallest is within 2 "
             "points of both",
             "✓" if all(elastic.values()) else ("◐" if rv1[0.05] <= 0.07 and sets[0.05] <= 0.07 else "✗"),
-            why=(f"The first cycle dissipates {_pct(rv1[0.05])} of its elastic energy at 0.05 and the sample keeps a set of "
-                 f"{_pct(sets[0.05])} of the amplitude there, {_pct(sets[0.1])} at 0.1: it sets from the smallest "
-                 "amplitude on, evenly with the amplitude (next statement)."))
+            why=(f"The first cycle dissipates {pct(rv1[0.05])} of its elastic energy at 0.05 and the sample keeps a "
+                 f"set of {pct(sets[0.05])} of the amplitude there, {pct(sets[0.1])} at 0.1: it sets from the "
+                 "smallest amplitude on, evenly with the amplitude (next statement)."))
         add("plastic deformation kicks in for Dx > 0.1 (the red curve)",
-            "set " + ", ".join(f"{a:g}: {_pct(sets[a])}" for a in sorted(sets)),
+            "set " + ", ".join(f"{a:g}: {pct(sets[a])}" for a in sorted(sets)),
             "permanent set after the last cycle against the amplitude; kicks in: the set at 0.2 over 1.5 x that at 0.1",
             "✓" if sets[0.2] > 1.5 * sets[0.1] else "✗",
             why=("In absolute terms the set grows gradually, " + ", ".join(f"{sets[a] * a:.2g}" for a in sorted(sets))
@@ -304,19 +309,20 @@ def statements(d):
         drift = abs(c[0.2][1][-1]["set"] - c[0.2][1][1]["set"])  # a fraction of the amplitude
         rc = _retrace(c[0.2][1])
         add("unloading and re-loading on the same branch: a new elastic branch (Dx = 0.2)",
-            f"cycles 2–4 peaks' range {_pct(rc[0])} of the first peak / {_pct(rc[1])} of their mean; loop of cycles 2–4 "
-            f"{_pct(rv[0.2])}; set changes by {drift * 0.2:.2g} d0 ({_pct(drift)} of the amplitude) from cycle 2 to 4",
-            "cycles 2–4 retrace one branch (both ranges <= 5 %, as for the repeated cycles above) with the set constant within 1 % of the "
-            "amplitude; the loop area beside it (◐ when one of the two holds)",
+            f"cycles 2–4 peaks' range {pct(rc[0])} of the first peak / {pct(rc[1])} of their mean; loop of "
+            f"cycles 2–4 {pct(rv[0.2])}; set changes by {drift * 0.2:.2g} d0 ({pct(drift)} of the "
+            f"amplitude) from cycle 2 to 4",
+            "cycles 2–4 retrace one branch (both ranges <= 5 %, as for the repeated cycles above) with the set "
+            "constant within 1 % of the amplitude; the loop area beside it (◐ when one of the two holds)",
             "✓" if max(rc) <= 0.05 and drift <= 0.01 else ("◐" if max(rc) <= 0.05 or drift <= 0.01 else "✗"),
-            why=(f"The branch is retraced (peaks within {_pct(max(rc))}) but moves: the set drifts by {_pct(drift)} of the "
-                 "amplitude over cycles 2–4 and each peak is lower than the last." if drift > 0.01 else ""))
+            why=(f"The branch is retraced (peaks within {pct(max(rc))}) but moves: the set drifts by {pct(drift)} "
+                 "of the amplitude over cycles 2–4 and each peak is lower than the last." if drift > 0.01 else ""))
         pk = [x["peak"] for x in c[0.3][1]]
         st3 = [x["set"] for x in c[0.3][1]]
         lp3 = [x["loop_over_elastic"] for x in c[0.3][1]]
         add("at 0.3 (yellow): continuous damage by irreversible re-arrangement during each cycle",
-            f"peaks {', '.join(f'{x:.3g}' for x in pk)}; sets {', '.join(_pct(x) for x in st3)}; "
-            f"loops {', '.join(_pct(x) for x in lp3)}",
+            f"peaks {', '.join(f'{x:.3g}' for x in pk)}; sets {', '.join(pct(x) for x in st3)}; "
+            f"loops {', '.join(pct(x) for x in lp3)}",
             "peak, set and loop of each cycle at 0.3; continuing damage: loop of cycles 2–4 above 5 % and above "
             "the 0.2 loop", "✓" if min(lp3[1:]) > 0.05 and min(lp3[1:]) > rv[0.2] else "✗")
         worst = 0.0
@@ -326,11 +332,12 @@ def statements(d):
                 p1, p2 = ([x["peak"] for x in runs[k][1]] for k in ks)
                 worst = max(worst, max(abs(y / x - 1) for x, y in zip(p1, p2)))  # slower against faster
         add("thick lines four times slower: small quantitative difference, qualitative agreement (compression)",
-            f"largest change of a cycle's peak: {_pct(worst, '.3g')}",
+            f"largest change of a cycle's peak: {pct(worst, '.3g')}",
             "every cycle's peak, the 4 x slower run's against the faster's (as summary.md); <= 5 %",
             "✓" if worst <= 0.05 else "✗")
     f19 = load_json(d, "fig19.json") or {}
-    big = f19.get("until") or max(f19.get("amplitudes") or [0])  # a monotonic compression, or cycles (earlier campaigns)
+    # a monotonic compression, or cycles (earlier campaigns)
+    big = f19.get("until") or max(f19.get("amplitudes") or [0])
     sn = f19.get("snapshots") or []
     add("Fig. 19: the continuous plastic deformation of the sample at large strains",
         (f"compression to Dx = {big:g}" + (f"; width in y {sn[0]['width_y_d0']:.1f} to {sn[-1]['width_y_d0']:.1f} d0, "
@@ -356,7 +363,8 @@ def _drift(runs, amps):
     for a in amps:
         for k in sorted(k for k in runs if k[:2] == ("tension", a)):
             later = [c["peak"] for c in runs[k][1][1:]]
-            parts.append(f"at {a:g}, {k[2]:g} t_w: {', '.join(f'{x:.4f}' for x in later)} ({_pct(_retrace(runs[k][1])[1], '.3g')})")
+            parts.append(f"at {a:g}, {k[2]:g} t_w: {', '.join(f'{x:.4f}' for x in later)} "
+                         f"({pct(_retrace(runs[k][1])[1], '.3g')})")
     return ("Cycles 2–4 peaks (range over their mean): " + "; ".join(parts) + ". ") if parts else ""
 
 
@@ -403,17 +411,19 @@ def _first_pull(d):
     six = {r["amplitude"]: r for r in ex.get("E5_E6", []) if r["sample"] == "tested" and r["variant"] == "force-return"}
     if not one:
         return ""
-    txt = ("Cycles 2–4 retrace one branch; what they lack is what the first pull lost: where the first cycle turns back "
-           "the tested sample keeps " + ", ".join(f"{one[(a, 480.0)]['turnaround_over_first']:.2f} at {a:g}"
-                                                  for a in (0.025, 0.05, 0.1, 0.2) if (a, 480.0) in one)
+    txt = ("Cycles 2–4 retrace one branch; what they lack is what the first pull lost: where the first cycle "
+           "turns back the tested sample keeps "
+           + ", ".join(f"{one[(a, 480.0)]['turnaround_over_first']:.2f} at {a:g}"
+                       for a in (0.025, 0.05, 0.1, 0.2) if (a, 480.0) in one)
            + " of its first peak (480 t_w; branch/experiments.md, E1)")
     if six:
         txt += (". Not the return to Dx = 0, which compresses the lengthened sample: cycles that return only to the "
-                "start's force (E6) keep " + ", ".join(f"{six[a]['second_over_first']:.2f} at {a:g}" for a in sorted(six))
-                + " in cycle 2, against " + ", ".join(f"{one[(a, 480.0)]['second_over_first']:.2f}" for a in sorted(six)
-                                                       if (a, 480.0) in one)
-                + " returning to Dx = 0; they return at Dx = " + ", ".join(f"{six[a]['returns_at_Dx'][0]:.3f}"
-                                                                          for a in sorted(six)) + " (the lengthening)")
+                "start's force (E6) keep "
+                + ", ".join(f"{six[a]['second_over_first']:.2f} at {a:g}" for a in sorted(six))
+                + " in cycle 2, against "
+                + ", ".join(f"{one[(a, 480.0)]['second_over_first']:.2f}" for a in sorted(six) if (a, 480.0) in one)
+                + " returning to Dx = 0; they return at Dx = "
+                + ", ".join(f"{six[a]['returns_at_Dx'][0]:.3f}" for a in sorted(six)) + " (the lengthening)")
     return txt + (". Why the first pull loses so early: statement §extent." if ex.get("E3") else ".")
 
 
@@ -425,8 +435,8 @@ def _early_peak(d):
     parts = []
     if "tested" in three:
         r = three["tested"]
-        parts.append(f"Up to its peak (Dx = {r['peak_Dx']:.3f}) the tested sample stretches about evenly (largest local "
-                     f"strain {r['strain_at_peak']:.1f} x the affine one; for good >= 2 x only from Dx = "
+        parts.append(f"Up to its peak (Dx = {r['peak_Dx']:.3f}) the tested sample stretches about evenly (largest "
+                     f"local strain {r['strain_at_peak']:.1f} x the affine one; for good >= 2 x only from Dx = "
                      f"{r['strain_2x_from_Dx']:.3f}), yet at the peak {100 * r['measured']['tensile']:.1f} % of its "
                      f"contacts are on the tensile limit where an affine stretch of the same contacts puts "
                      f"{100 * r['affine']['tensile']:.1f} % (E3): the contacts do not share the stretch as an affine "
@@ -435,9 +445,9 @@ def _early_peak(d):
     if tested:
         r = max(tested, key=lambda x: x["amplitude"])
         lo, hi = r["contact_pull_ratio"]
-        parts.append(f"its peak force is set by the contacts' pull: with kc/kp {r['kc_over_kp']:g} instead of 0.2 on the same "
-                     f"sample the first peak grows {r['peak_over_E1']:.2f} times, as a contact's largest pull does "
-                     f"({lo:.2f} – {hi:.2f} times), and moves from Dx = {r['E1']['first_peak_Dx']:.3f} to "
+        parts.append(f"its peak force is set by the contacts' pull: with kc/kp {r['kc_over_kp']:g} instead of 0.2 on "
+                     f"the same sample the first peak grows {r['peak_over_E1']:.2f} times, as a contact's largest "
+                     f"pull does ({lo:.2f} – {hi:.2f} times), and moves from Dx = {r['E1']['first_peak_Dx']:.3f} to "
                      f"{r['first_peak_Dx']:.3f} (E5)")
     return ("; ".join(parts) + ". See docs/tablet/branch.md.") if parts else ""
 
@@ -449,9 +459,9 @@ def _rate(d):
         return ""
     parts = []
     for a, v in sorted(sens["amplitudes"].items(), key=lambda kv: float(kv[0])):
-        parts.append(f"at Dx = {a}: the first pull's peak {_pct(v['rate_change'][0])} apart between the rates; cycles 2–4 "
-                     f"{', '.join(_pct(x) for x in v['rate_change'][1:])} apart, against "
-                     f"{', '.join(_pct(x) for x in v['perturbation_change'][1:])} for a time step changed by 1e-6")
+        parts.append(f"at Dx = {a}: the first pull's peak {pct(v['rate_change'][0])} apart between the rates; "
+                     f"cycles 2–4 {', '.join(pct(x) for x in v['rate_change'][1:])} apart, against "
+                     f"{', '.join(pct(x) for x in v['perturbation_change'][1:])} for a time step changed by 1e-6")
     return ("The first pulls are quasi-static. Whether the later cycles are is told by a time step changed by 1e-6 "
             "(sensitivity.json), which shows how much such a run moves by chance: " + "; ".join(parts)
             + ". Where the rate moves a peak several times more than the perturbation (at 0.1), the later cycles "
@@ -467,9 +477,10 @@ def _realizations(d, st):
     m, sd = statistics.mean(v), statistics.stdev(v)
     inside = sum(8 / APPROX <= x <= 8 * APPROX for x in v)
     return (f"One draw: over {len(v)} realizations of this preparation (../factors/factors.md) the last chain is "
-            f"{', '.join(f'{x:.2f}' for x in v)} (mean {m:.2f}, sd {sd:.2f}; {inside} inside {8 / APPROX:.2f}–{8 * APPROX:g}); "
-            "the paper's single "
-            f"pull, about 8, lies {abs(8 - m) / sd:.2f} sd from the mean: within the realizations' spread."), abs(8 - m) / sd
+            f"{', '.join(f'{x:.2f}' for x in v)} (mean {m:.2f}, sd {sd:.2f}; {inside} inside "
+            f"{8 / APPROX:.2f}–{8 * APPROX:g}); "
+            f"the paper's single pull, about 8, lies {abs(8 - m) / sd:.2f} sd from the mean: within the "
+            "realizations' spread."), abs(8 - m) / sd
 
 
 def markdown(items, source):

@@ -4,19 +4,22 @@ files (plain Python, like ``statements``):
     python3 -m mesostudies.tablet.summary campaigns/tablet/chosen     # writes summary.md there
 
 The sample at three stages, the pull (peak, weakest planes, first gap, last chain), the cyclic
-runs (each cycle's peak, loop and permanent set, the rates against each other), Fig. 19, the drag
-share, the roughness, the time-step perturbation, the realizations of the preparation
-(../factors/factors.json) and the campaign's cost on an idle machine (../quiet/campaign-time.json).
+runs (each cycle's peak, loop and permanent set, the rates against each other, the force where each
+tension cycle is back at Dx = 0), the deeper-sintered samples' tension cycles (../mid, ../deep,
+../variants/deep: loop and set of each cycle), Fig. 19, the drag share, the roughness, the
+time-step perturbation, the realizations of the preparation (../factors/factors.json) and the
+campaign's cost on an idle machine (../quiet/campaign-time.json).
 A section whose files are absent is left out. docs/tablet/README.md quotes these numbers; the
 test python.tablet_docs checks that it quotes no other.
 """
+import glob
 import os
 import statistics
 import sys
 
 from . import statements as _st
+from .statements import pct as _pct
 
-_pct = _st._pct
 D0 = 0.01  # the paper's d0 [mm], for kc-study.csv's box sides
 
 
@@ -49,7 +52,8 @@ def _stages(d, out, runs):
 
 def _plane(name, prof):
     w = prof["weakest"]
-    return (f"| {name} | {_f(prof.get('Dx', 0.0), '.3f')} | {w['count']} | {prof['mean']:.0f} | {w['from_left_d0']:.2f} | "
+    return (f"| {name} | {_f(prof.get('Dx', 0.0), '.3f')} | {w['count']} | {prof['mean']:.0f} | "
+            f"{w['from_left_d0']:.2f} | "
             f"{w['from_right_d0']:.2f} | {_f(prof.get('total'), 'd')} | {_f(prof.get('F'), '.3g')} |")
 
 
@@ -68,10 +72,11 @@ def _pull(d, out):
         out.append("")
         return
     out += [
-            "Weakest plane (fewest contacts in overlap across x = const, ≥ 0.5 d0 from the walls):", "",
-            "| when | Dx | contacts | mean over planes | from left [d0] | from right [d0] | all contacts | F/(kp d0) |",
-            "|---|---|---|---|---|---|---|---|", _plane("start", p["planes_at_start"]), _plane("peak", p["planes_at_peak"])]
-    out += [_plane(f"mark {m}", prof) for m, prof in sorted(p.get("planes_at_marks", {}).items(), key=lambda kv: float(kv[0]))]
+        "Weakest plane (fewest contacts in overlap across x = const, ≥ 0.5 d0 from the walls):", "",
+        "| when | Dx | contacts | mean over planes | from left [d0] | from right [d0] | all contacts | F/(kp d0) |",
+        "|---|---|---|---|---|---|---|---|", _plane("start", p["planes_at_start"]), _plane("peak", p["planes_at_peak"])]
+    out += [_plane(f"mark {m}", prof)
+            for m, prof in sorted(p.get("planes_at_marks", {}).items(), key=lambda kv: float(kv[0]))]
     crack = _st.crack_plane(p)
     if crack:
         (w, before), at, p0 = crack, p["planes_at_marks"]["0.2"], p["planes_at_start"]
@@ -81,12 +86,15 @@ def _pull(d, out):
     aff = _st.load_json(d, "affine.json")
     if aff:
         t, z = aff["Dx_to_tensile_limit"], aff["Dx_to_detachment"]
-        out += ["", f"Affine stretch of the test start's contacts (affine.json): {aff['contacts']} particle contacts in overlap "
-                "(the totals above count the walls' contacts too; its L0 is the spheres' extent, which reaches into the "
+        out += ["",
+                f"Affine stretch of the test start's contacts (affine.json): {aff['contacts']} particle contacts "
+                "in overlap (the totals above count the walls' contacts too; its L0 is the spheres' extent, "
+                "which reaches into the "
                 f"walls' faces), {aff['along_x']} "
                 f"along x; mean overlap {aff['mean_overlap_d0']:.4f} d0, δmax {aff['mean_deltaMax_d0']:.4f} d0, δ0 "
                 f"{aff['mean_delta0_d0']:.4f} d0, δmin {aff['mean_delta_min_d0']:.4f} d0; the contacts along x reach "
-                f"their tensile limit at Dx = {t['10']:.4f}, {t['25']:.4f}, {t['50']:.4f}, {t['75']:.4f} (10, 25, 50, 75 %) "
+                f"their tensile limit at Dx = {t['10']:.4f}, {t['25']:.4f}, {t['50']:.4f}, {t['75']:.4f} "
+                "(10, 25, 50, 75 %) "
                 f"and let go at {z['10']:.3f}, {z['25']:.3f}, {z['50']:.3f}, {z['75']:.3f}."]
     out.append("")
 
@@ -117,6 +125,56 @@ def _cyclic(runs, out):
     out.append("")
 
 
+def _returns(d, runs, out):
+    """The force where each tension cycle is back at Dx = 0 (the re-loading's end), over the first
+    peak's magnitude: the return to the start's length compresses the lengthened sample."""
+    ends = {}
+    for (mode, a, per), (j, _) in sorted(runs.items()):
+        p = os.path.join(d, f"{j['name']}.csv")
+        if mode != "tension" or not os.path.exists(p):
+            continue
+        cyc = _st.measures.split_cycles(_st.read_csv(p), j["steps_per_cycle"], j["cycles"])
+        ends[(a, per)] = ([c[-1][2] for c in cyc], abs(j["peaks"][0]))
+    if not ends:
+        return
+    out += ["Back at Dx = 0 (tension runs): the force where each cycle ends, compressive, over the first peak's "
+            "magnitude (the sample's strength in that run):", "",
+            "| amplitude, period | F at each cycle's end | over the first peak |", "|---|---|---|"]
+    for (a, per), (f, pk) in sorted(ends.items()):
+        out.append(f"| {a:g}, {per:g} t_w | {', '.join(f'{x:+.4f}' for x in f)} | "
+                   f"{', '.join(f'{x / pk:.2f}' for x in f)} |")
+    largest = max((max(f) / pk, a, per) for (a, per), (f, pk) in ends.items())
+    out += ["", f"Largest: {largest[0]:.2f} times the first peak ({largest[1]:g}, {largest[2]:g} t_w).", ""]
+
+
+def _deeper(d, out):
+    """Each cycle's loop and set of the tension runs of the deeper-sintered samples (../mid,
+    ../deep, and ../variants/deep: the deep sample through grips or with kc/kp 0.5)."""
+    rows = []
+    for sub in ("mid", "deep", os.path.join("variants", "deep")):
+        folder = os.path.join(d, "..", sub)
+        for js in sorted(glob.glob(os.path.join(folder, "*tension-Dx*-P*.json"))):
+            j = _st.load_json(folder, os.path.basename(js))
+            if not j or "steps_per_cycle" not in j or not os.path.exists(js[:-5] + ".csv"):
+                continue
+            cm = _st.measures.cycle_measures(_st.read_csv(js[:-5] + ".csv"), j["steps_per_cycle"], j["mode"],
+                                             j["cycles"])
+            rows.append((sub.replace(os.sep, "/"), j["name"], cm))
+    if not rows:
+        return
+    out += ["## The deeper-sintered samples' tension cycles (../mid, ../deep, ../variants/deep)", "",
+            "Per run, as above: each cycle's peak, the loop over the elastic energy of the force swing, and the "
+            "permanent set over the amplitude (Dx of the run: through grips the walls' distance, not the free "
+            "part's strain; ../branch/experiments.md gives the walls' equivalent).", "",
+            "| folder | run | peaks | loops | sets |", "|---|---|---|---|---|"]
+    for sub, name, cm in rows:
+        peaks = ", ".join(format(c["peak"], ".4f") for c in cm)
+        out.append(f"| {sub} | {name} | {peaks} | "
+                   f"{', '.join(_pct(c['loop_over_elastic'], '.3g') for c in cm)} | "
+                   f"{', '.join(_pct(c['set'], '.3g') for c in cm)} |")
+    out.append("")
+
+
 def _fig19(d, out):
     f = _st.load_json(d, "fig19.json")
     if not f or "snapshots" not in f:
@@ -126,7 +184,8 @@ def _fig19(d, out):
             f"{f['max_force']:.3f} kp d0, at the end {f['final_force']:.3f}.", "",
             "| panel | Dx | F/(kp d0) | width y [d0] | width z [d0] | C | rattlers |", "|---|---|---|---|---|---|---|"]
     for k, s in enumerate(f["snapshots"]):
-        out.append(f"| ({'abcdefg'[k]}) | {abs(s['Dx']):.2f} | {s['F']:.3f} | {s['width_y_d0']:.1f} | {s['width_z_d0']:.1f} | "
+        out.append(f"| ({'abcdefg'[k]}) | {abs(s['Dx']):.2f} | {s['F']:.3f} | {s['width_y_d0']:.1f} | "
+                   f"{s['width_z_d0']:.1f} | "
                    f"{s['coordination']:.2f} | {s['rattlers']} |")
     out.append("")
 
@@ -136,16 +195,21 @@ def _others(d, out):
     if ds:
         r = ds["runs"]
         out += ["## Drag share (drag-share.json)", "",
-                f"One tension cycle to Dx = {ds['amplitude']:g} at {ds['period_crossings']:g} t_w: peak {r['lab']['peak']:.4f} "
-                f"(lab-frame drag), {r['contacts']['peak']:.4f} (relative to the contacts), {r['none']['peak']:.4f} (none): "
-                f"the drag carries {_pct(r['lab']['drag_share_of_peak'])} and {_pct(r['contacts']['drag_share_of_peak'])} "
+                f"One tension cycle to Dx = {ds['amplitude']:g} at {ds['period_crossings']:g} t_w: "
+                f"peak {r['lab']['peak']:.4f} "
+                f"(lab-frame drag), {r['contacts']['peak']:.4f} (relative to the contacts), "
+                f"{r['none']['peak']:.4f} (none): "
+                f"the drag carries {_pct(r['lab']['drag_share_of_peak'])} "
+                f"and {_pct(r['contacts']['drag_share_of_peak'])} "
                 "of the peak.", ""]
     ro = _st.load_json(d, "roughness.json")
     if ro:
         fl = ro.get("flat_cut")
         out += ["## Fracture faces (roughness.json)", "",
-                f"{ro['snapshot']}: halves of {ro['halves'][0]} and {ro['halves'][1]} spheres ({ro['elsewhere']} loose), "
-                f"median gap {ro['gap_d0']:.1f} d0, {ro['columns']} columns; heights' 5–95 % range {ro['left']['range_5_95']:.1f} "
+                f"{ro['snapshot']}: halves of {ro['halves'][0]} and {ro['halves'][1]} spheres "
+                f"({ro['elsewhere']} loose), "
+                f"median gap {ro['gap_d0']:.1f} d0, {ro['columns']} columns; "
+                f"heights' 5–95 % range {ro['left']['range_5_95']:.1f} "
                 f"and {ro['right']['range_5_95']:.1f} d0 (rms {ro['left']['rms']:.2f}, {ro['right']['rms']:.2f})"
                 + (f"; a flat cut: {max(fl['left']['range_5_95'], fl['right']['range_5_95']):.1f} d0 (rms "
                    f"{fl['left']['rms']:.2f}, {fl['right']['rms']:.2f})" if fl else "") + ".", ""]
@@ -173,7 +237,8 @@ def _kc(d, out):
     for r in sorted(rows, key=lambda r: (float(r[col["kc_over_kp"]]), r[col["stage"]] != "sintered")):
         box = " × ".join(f"{float(r[col[k]]) / D0:.2f}" for k in ("Lx", "Ly", "Lz"))
         out.append(f"| {r[col['material']]} | {float(r[col['kc_over_kp']]):g} | {r[col['stage']]} | "
-                   f"{float(r[col['solid_fraction']]):.4f} | {float(r[col['coordination']]):.2f} | {r[col['rattlers']]} | {box} |")
+                   f"{float(r[col['solid_fraction']]):.4f} | {float(r[col['coordination']]):.2f} | "
+                   f"{r[col['rattlers']]} | {box} |")
     out.append("")
 
 
@@ -181,7 +246,8 @@ def _realizations(d, out):
     same = _st.realizations(d, _st.load_json(d, "unconfined.yade.gz.json"))
     if len(same) < 2:
         return
-    out += [f"## Realizations of this preparation (../factors/factors.json, seeds {', '.join(str(r['seed']) for r in same)})", ""]
+    out += ["## Realizations of this preparation (../factors/factors.json, "
+            f"seeds {', '.join(str(r['seed']) for r in same)})", ""]
     for name, v, f in (("last chain Dx", [r["last_chain_Dx"] for r in same], ".2f"),
                        ("first gap Dx (1 d0²)", [r["first_gap_Dx_by_area"]["1"] for r in same], ".2f"),
                        ("L0 against 0.115 [%]", [100 * (r["L0"] / 0.115 - 1) for r in same], ".2f"),
@@ -198,18 +264,21 @@ def _cost(d, out):
     if not c:
         return
     out += ["## Cost (../quiet/campaign-time.json: the same campaign on an idle machine)", "",
-            f"{c['steps'] / 1e6:.2f} million steps, {c['single_job_hours']:.2f} h of job time ({c['ms_per_step']:.2f} ms per "
+            f"{c['steps'] / 1e6:.2f} million steps, {c['single_job_hours']:.2f} h of job time "
+            f"({c['ms_per_step']:.2f} ms per "
             f"step), {c['wall_hours']:.2f} h on {c['lanes']} lanes.", ""]
 
 
 def summary(d):
-    runs = _st._runs(d)
+    runs = _st.runs_of(d)
     out = [f"# The campaign in numbers ({os.path.join(*os.path.normpath(os.path.abspath(d)).split(os.sep)[-2:])})", "",
            "Written by `python3 -m mesostudies.tablet.summary DIR` from the files named in each section; "
            "Dx in d0, forces F/(kp d0).", ""]
     _stages(d, out, runs)
     _pull(d, out)
     _cyclic(runs, out)
+    _returns(d, runs, out)
+    _deeper(d, out)
     _fig19(d, out)
     _others(d, out)
     _kc(d, out)

@@ -21,7 +21,8 @@ def contact(mat_a, mat_b, steps, angVel=(0, 3, 1), vel=(0.01, 0.002, 0), overlap
     O.bodies.append([utils.sphere((0, 0, 0), r, material=a), utils.sphere((2 * r - overlap, 0, 0), r, material=b)])
     O.bodies[0].state.vel, O.bodies[0].state.angVel = vel, angVel
     O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
-                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()], [w.Law2_ScGeom_MesoPhys_Meso()]),
+                 w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom6D()], [w.Ip2_MesoMat_MesoMat_MesoPhys()],
+                                   [w.Law2_ScGeom_MesoPhys_Meso()]),
                  w.NewtonIntegrator(damping=0)]
     O.dt = 1e-6
     O.run(steps, True)

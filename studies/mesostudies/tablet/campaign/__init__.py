@@ -12,9 +12,10 @@ Rates: a cycle lasts ``period`` elastic crossing times of the sample (uniaxial.c
 4x slower SLOW, the pair where the peak force of every cycle agrees within 5 %.
 
 The package, by job: ``common`` (constants, run places, the MPI mode), ``runs`` (every test the
-figures need), ``plots`` (their pictures), ``report`` (tables, the docs copy, plan and totals) and
-``cli`` (the scripts' options). What the scripts and tests use is reachable here; the rest from
-its module.
+figures need), ``plots`` (their pictures) and ``report`` (tables, the docs copy, plan and totals,
+the jobs' step estimates). The jobs' registry and command line are the tablet's ``cli``, above
+this package (it imports this package; nothing here imports it). What the scripts and tests use is
+reachable here; the rest from its module.
 """
 from .common import (
     DT_FACTORS, FIG17_DX, FIRST_PROTOCOL, PERIODS, PROTOCOL, PULL_SPEED, cycle_peaks, is_master, mpy,
@@ -23,11 +24,10 @@ from .runs import (
     cyclic, drag_share, factor_dir, factor_run, large_compression, pull, rates, run_cycles,
     timestep_study, timestep_table,)
 from .report import factor_report, factor_table, log_job, peaks_table, plan, report, restore, totals
-from .cli import FIGURES, main, parse_args
 
 __all__ = [
     "DT_FACTORS", "FIG17_DX", "FIRST_PROTOCOL", "PERIODS", "PROTOCOL", "PULL_SPEED", "cycle_peaks", "is_master", "mpy",
-    "prepare", "protocol_of", "read_csv", "root", "run_dir", "run_name", "use_mpi", "cyclic", "drag_share", "factor_dir",
-    "factor_run", "large_compression", "pull", "rates", "run_cycles", "timestep_study", "timestep_table", "factor_report",
-    "factor_table", "log_job", "peaks_table", "plan", "report", "restore", "totals", "FIGURES", "main", "parse_args",
+    "prepare", "protocol_of", "read_csv", "root", "run_dir", "run_name", "use_mpi", "cyclic", "drag_share",
+    "factor_dir", "factor_run", "large_compression", "pull", "rates", "run_cycles", "timestep_study", "timestep_table",
+    "factor_report", "factor_table", "log_job", "peaks_table", "plan", "report", "restore", "totals",
 ]

@@ -2,6 +2,7 @@
 protocol), where runs live, their CSV, and whether this process runs under yade.mpy (inside ``yade``)."""
 import os
 
+from mesocontact.outputs import read_csv  # noqa: F401 (the campaign's modules read their CSVs with it)
 from .. import stages as _stages
 
 # yade.mpy when the campaign runs under mpiexec with --mpi N (use_mpi), else None
@@ -39,12 +40,14 @@ FIG17_DX = (0.0, 0.81, 1.8, 3.1, 4.7, 7.4, 8.6)
 # Cycle periods in elastic crossing times (uniaxial.crossing_time): the rate study runs all
 # three; the figures run FAST (thin) and SLOW (thick), where the peaks agree within 5 %.
 RATE_PERIODS = (30.0, 120.0, 480.0)
-# The periods of the figures (thin, thick), from the rate checks (docs/tablet/first-protocol.md (commit 410fda8), section 4):
-# compression agrees within 0.6 % between 120 and 480 t_w in every cycle; tension does not (the
+# The periods of the figures (thin, thick), from the rate checks (docs/tablet/first-protocol.md (commit 410fda8),
+# section 4): compression agrees within 0.6 % between 120 and 480 t_w in every cycle; tension does not (the
 # re-loading cycles 6.5 % apart at Dx = 0.2) but agrees within 1.95 % between 480 and 1920 t_w
 # at every amplitude (0.025 to 0.3).
 PERIODS = {"tension": (480.0, 1920.0), "compression": (120.0, 480.0)}
-PULL_SPEED = 0.0025  # Fig. 17: each wall's speed [mm/us]: the peak wall speed of 240 t_w cycles at Dx = 0.2, where the first pull's peak agrees within 2.2 % from 120 t_w on (Dx = 9 in about 1 040 000 steps)
+# Fig. 17: each wall's speed [mm/us]: the peak wall speed of 240 t_w cycles at Dx = 0.2, where the first pull's peak
+# agrees within 2.2 % from 120 t_w on (Dx = 9 in about 1 040 000 steps)
+PULL_SPEED = 0.0025
 FAST, SLOW = PERIODS["compression"]
 GAP_AREA = 1.0  # a crack (or see-through hole) this large [d0^2] counts as visible
 # The campaign's time step per test, as a multiple of tablet.contact_step (t_c/50), from the
@@ -87,12 +90,7 @@ def run_dir(outdir, name, quick=False):
     return os.path.join(root(outdir, quick), "runs", name)
 
 
-def read_csv(path):
-    with open(path) as f:
-        return [tuple(float(x) for x in line.split(",")) for line in f.read().split("\n")[1:] if line]
-
-
-def _csv_text(rows, header="iter,Dx,F_over_kp_d0"):
+def csv_text(rows, header="iter,Dx,F_over_kp_d0"):
     return header + "\n" + "".join(f"{int(r[0])}," + ",".join(repr(x) for x in r[1:]) + "\n" for r in rows)
 
 

@@ -13,7 +13,8 @@ def plot_rates(table, periods, png):
         rows = [r for r in table if r["mode"] == mode]
         for period in periods:
             if rows[0][f"P{period:g}"] != "":
-                ax.plot([r["cycle"] for r in rows], [r[f"P{period:g}"] for r in rows], "o-", label=f"period {period:g} t_w")
+                ax.plot([r["cycle"] for r in rows], [r[f"P{period:g}"] for r in rows], "o-",
+                        label=f"period {period:g} t_w")
         ax.set_xlabel("cycle")
         ax.set_ylabel("peak F/(kp d0)")
         ax.set_title(f"{mode}, Dx = {rows[0]['amplitude']:g}", fontsize=10)
@@ -135,5 +136,3 @@ def plot_pull(rows, events, png):
     fig.tight_layout()
     fig.savefig(png, dpi=130)
     plt.close(fig)
-
-

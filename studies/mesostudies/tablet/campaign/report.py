@@ -60,7 +60,8 @@ def _factor_row(st, p):
             "weakest_at_peak": p["planes_at_peak"]["weakest"], "mean_at_peak": p["planes_at_peak"]["mean"],
             "planes_at_peak_Dx": p["planes_at_peak"]["Dx"],
             "weakest_at_marks": {m: _weakest(marks.get(m), p["L0"]) for m in CRACK_MARKS},
-            "mean_at_marks": {m: marks[m]["mean"] if m in marks else None for m in CRACK_MARKS}, "first_gap_Dx_by_area": p["first_gap_Dx_by_area"],
+            "mean_at_marks": {m: marks[m]["mean"] if m in marks else None for m in CRACK_MARKS},
+            "first_gap_Dx_by_area": p["first_gap_Dx_by_area"],
             "last_chain_Dx": p["last_contact_Dx"], "mean_force_after_last_chain": p["mean_force_after_last_contact"],
             "steps": p.get("steps"), "wall_clock_s": p["wall_clock_s"]}
 
@@ -81,11 +82,12 @@ def factor_table(outdir, quick=False):
             st = json.load(f)
         for js in pulls:  # each row names its pull's JSON (relative to factors/), for readers of factors.json
             with open(js) as f:
-                rows.append(dict(_factor_row(st, json.load(f)), pull=os.path.relpath(js, os.path.join(outdir, "factors"))))
+                rows.append(dict(_factor_row(st, json.load(f)),
+                                 pull=os.path.relpath(js, os.path.join(outdir, "factors"))))
     fmt = lambda x, f=".3g": "–" if x is None else format(x, f)  # noqa: E731
     md = ["# The tested tablet: the factor study", "",
-          "Written by `yade -n -x studies/scripts/tablet.py factors --out DIR --table` (or `--report DOCS`) from the files under "
-          "`factors/` (each preparation's stage descriptions, each pull's CSV and JSON). One row per pull "
+          "Written by `yade -n -x studies/scripts/tablet.py factors --out DIR --table` (or `--report DOCS`) from the "
+          "files under `factors/` (each preparation's stage descriptions, each pull's CSV and JSON). One row per pull "
           "(Fig. 17's pull at the campaign's speed, ended 1 Dx after the last chain broke). Sample columns: "
           "after sintering / after release / at the test start (L0 between the loading walls; ν and C of the "
           "stage's statistics). Weakest plane: the plane x = const with the fewest contacts in overlap across "
@@ -93,33 +95,39 @@ def factor_table(outdir, quick=False):
           "distances from the left and right loading walls; at Dx = 0, at the peak tension and at Dx = 0.2 and 0.81 "
           "(the paper's panel (b): where the crack runs). First gap at three area thresholds; last chain: "
           "no chain of contacts from wall to wall.", "",
-          "| packing | glue | radii std | d0 p_s/kp | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test | C sint. / rel. / test | "
-          "rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 d0) | "
-          "peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | at Dx=0.2 | at Dx=0.81 | "
-          "first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 19]
+          "| packing | glue | radii std | d0 p_s/kp | seed | drag | L0/d0 sint. / rel. / test | ν sint. / rel. / test "
+          "| C sint. / rel. / test | rattlers test | crossing contacts at Dx=0: 0.5–1.5 d0 from a wall / bulk (≥ 3 "
+          "d0) | peak F/(kp d0) at Dx | weakest plane Dx=0: n (mean), from L / R [d0] | at peak | at Dx=0.2 | at "
+          "Dx=0.81 | first gap Dx (0.5 / 1 / 2 d0²) | last chain Dx | F after /(kp d0) |", "|" + "---|" * 19]
     for r in rows:
         s3 = [r["sintered"], r["released"], r["test_start"]]
         g = r["first_gap_Dx_by_area"]
-        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r['sinter']:g} | {r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
+        md.append(f"| {r['packing']} | {r['glue']} | {r['rel_std']:g} | {r['sinter']:g} | "
+                  f"{r.get('seed', 1)} | {r['drag']} | " + " / ".join(fmt(s['Lx_d0'], '.4g') for s in s3)
                   + " | " + " / ".join(fmt(s["solid_fraction"]) for s in s3) + " | "
                   + " / ".join(fmt(s["coordination"]) for s in s3) + f" | {r['test_start']['rattlers']} | "
                   f"{fmt(r['near_wall_mean_at_start'], '.0f')} / {fmt(r['bulk_mean_at_start'], '.0f')} | "
                   f"{fmt(r['peak_tension'], '.4g')} at {fmt(r['peak_Dx'], '.3f')} | "
-                  f"{_plane(r['weakest_at_start'], r['mean_at_start'])} | {_plane(r['weakest_at_peak'], r['mean_at_peak'])} | "
+                  f"{_plane(r['weakest_at_start'], r['mean_at_start'])} | "
+                  f"{_plane(r['weakest_at_peak'], r['mean_at_peak'])} | "
                   + " | ".join(_plane(r["weakest_at_marks"][m], r["mean_at_marks"][m]) for m in CRACK_MARKS) + " | "
-                  + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float)) + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
+                  + " / ".join(fmt(g.get(k), ".2f") for k in sorted(g, key=float))
+                  + f" | {fmt(r['last_chain_Dx'], '.2f')} | "
                   f"{fmt(r['mean_force_after_last_chain'], '.2g')} |")
-    md += ["", "Against the criteria of the tested sample (L0 = 0.115 within 1 %; bulk rupture: weakest plane at the peak at "
+    md += ["", "Against the criteria of the tested sample (L0 = 0.115 within 1 %; bulk rupture: weakest "
+               "plane at the peak at "
            "least 3 d0 from both loading walls; crack in the bulk: the same at Dx = 0.81; first gap 0.6–1.4; "
            "last chain 6–10):", ""]
     for r in rows:
         crack = _from_wall(r["weakest_at_marks"][CRACK_MARKS[-1]])
         checks = {"L0": abs(r["L0"] / 0.115 - 1) <= 0.01, "bulk rupture": _from_wall(r["weakest_at_peak"]) >= 3,
                   "crack in the bulk": crack is not None and crack >= 3,
-                  "first gap": r["first_gap_Dx_by_area"].get("1") is not None and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4,
+                  "first gap": (r["first_gap_Dx_by_area"].get("1") is not None
+                                and 0.6 <= r["first_gap_Dx_by_area"]["1"] <= 1.4),
                   "last chain": r["last_chain_Dx"] is not None and 6 <= r["last_chain_Dx"] <= 10}
         sinter = f", d0 p_s/kp {r['sinter']:g}" if r["sinter"] != sample.SINTER else ""
-        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}{sinter}, seed {r.get('seed', 1)}, {r['drag']}: "
+        md.append(f"- {r['packing']}, {r['glue']}, radii std {r['rel_std']:g}{sinter}, seed "
+                  f"{r.get('seed', 1)}, {r['drag']}: "
                   + ", ".join(f"{k} {'✓' if v else ('–' if k == 'crack in the bulk' and crack is None else '✗')}"
                               for k, v in checks.items())
                   + f" (L0 {100 * (r['L0'] / 0.115 - 1):+.2f} %)")
@@ -139,7 +147,8 @@ def factor_table(outdir, quick=False):
                         return (f"{r.get(name, 1)}: L0 {r['L0'] / sample.D0:.3f}, weakest plane "
                                 f"{_from_wall(r['weakest_at_peak']):.2f} from a wall (at Dx = 0.81: "
                                 f"{fmt(_from_wall(r['weakest_at_marks'][CRACK_MARKS[-1]]), '.2f')}), first gap "
-                                f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain {fmt(r['last_chain_Dx'], '.2f')}")
+                                f"{fmt(r['first_gap_Dx_by_area'].get('1'), '.2f')}, last chain "
+                                f"{fmt(r['last_chain_Dx'], '.2f')}")
                     others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
                                        for j, (n, v) in enumerate(zip(names, ka)) if j != k)
                     md.append(f"- {name} ({others}): {say(a)} | {say(b)}")
@@ -181,7 +190,8 @@ def _realizations(rows, names, key):
         if len(rs) < 2:
             continue
         rs = sorted(rs, key=lambda r: r.get("seed", 1))
-        others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}" for n, v in zip((n for n in names if n != "seed"), g))
+        others = ", ".join(f"{n} {v:g}" if isinstance(v, float) else f"{n} {v}"
+                           for n, v in zip((n for n in names if n != "seed"), g))
         md += ["", f"Realizations of one preparation ({others}; seeds {', '.join(str(r.get('seed', 1)) for r in rs)}):",
                f"- last chain Dx: {_spread([r['last_chain_Dx'] for r in rs])}",
                f"- first gap Dx (1 d0^2): {_spread([r['first_gap_Dx_by_area'].get('1') for r in rs])}",
@@ -216,7 +226,8 @@ def factor_report(outdir, docsdir):
 def peaks_table(runs):
     """Markdown table of cyclic runs (their JSON descriptions with final_F, the last row's force):
     peak force of every cycle, the force back at Dx = 0, the cost."""
-    out = ["| run | period [t_w] | peak F/(kp d0), cycles 1-4 | F at the end (Dx = 0) | steps | ms per step | wall-clock |",
+    out = ["| run | period [t_w] | peak F/(kp d0), cycles 1-4 | F at the end (Dx = 0) | steps | ms per "
+           "step | wall-clock |",
            "|---|---|---|---|---|---|---|"]
     key = lambda r: (r["mode"], r["amplitude"], r["period_crossings"])  # noqa: E731
     for r in sorted(runs, key=key):
@@ -251,7 +262,8 @@ def restore(docsdir, outdir):
         if _out.complete(where):
             continue
         rows = read_csv(csv_path)
-        peaks = stroke_peaks(rows, info["turns"]) if info.get("turns") else cycle_peaks(info["mode"], rows, info["steps_per_cycle"])
+        peaks = stroke_peaks(rows, info["turns"]) if info.get("turns") else cycle_peaks(info["mode"], rows,
+                                                                                        info["steps_per_cycle"])
         if peaks != info["peaks"]:
             raise ValueError(f"restore: {csv_path} does not give the peaks of {js}")
         with _out.Bundle(where) as b:
@@ -311,7 +323,8 @@ def report(outdir, docsdir):
             info = json.load(f)
         for stage in ("sintered", "released"):
             s = info[stage]
-            rows.append([info["built"]["material"], info["built"]["kc_over_kp"], stage, s["solid_fraction"], s["coordination"],
+            rows.append([info["built"]["material"], info["built"]["kc_over_kp"], stage, s["solid_fraction"],
+                         s["coordination"],
                          s["coordination_with_walls"], s["rattlers"], s["kinetic_energy_ratio"]]
                         + [s["wall_stress"][w] for w in sample.WALLS] + s["side"])
     if rows:
@@ -322,32 +335,60 @@ def report(outdir, docsdir):
     return rows
 
 
-def _job_steps(figure, cells, t_cross, dt0):
-    """Steps of one campaign job (a table line's figure and cells), each test at its time step
-    (dt0 times DT_FACTORS)."""
+# The cost estimates of the jobs that count (the tablet's registry, cli.JOBS, attaches them): the
+# steps a job's table line runs, each test at its time step (dt0 times DT_FACTORS). Each takes the
+# line's cells ({column: text}), the elastic crossing time and the campaign's base step.
+def _numbers(cells, key, default):
     import ast
+    v = cells.get(key)
+    v = ast.literal_eval(v) if v not in (None, "None") else None
+    return tuple(float(x) for x in str(v).split(",")) if v is not None else default
 
-    def numbers(key, default):
-        v = cells.get(key)
-        v = ast.literal_eval(v) if v not in (None, "None") else None
-        return tuple(float(x) for x in str(v).split(",")) if v is not None else default
 
-    cycle = lambda period, mode: int(round(period * t_cross / (dt0 * DT_FACTORS[mode])))  # noqa: E731
-    if figure in ("fig16", "fig18"):
-        mode = "tension" if figure == "fig16" else "compression"
-        amps = numbers("amplitudes", TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES)
-        return sum(FULL["cycles"] * cycle(p, mode) for _ in amps for p in numbers("periods", PERIODS[mode]))
-    if figure == "fig19":
-        until, speed = numbers("until", (3.0,))[0], numbers("speed", (PULL_SPEED,))[0]
-        return int(until * sample.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
-    if figure == "fig17":
-        until, speed = numbers("until", (9.0,))[0], numbers("speed", (PULL_SPEED,))[0]
-        return int(until * sample.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
-    if figure == "drag":
-        return 3 * int(round(FAST * t_cross / dt0))  # drag_share runs at the campaign's base step
-    if figure == "rates":
-        return sum(FULL["cycles"] * cycle(p, m) for p in numbers("periods", RATE_PERIODS) for m in _uni.MODES)
-    return 0  # prepare and the rest: minutes, not counted
+def _cycle(period, mode, t_cross, dt0):
+    return int(round(period * t_cross / (dt0 * DT_FACTORS[mode])))
+
+
+def _cyclic_steps(mode, cells, t_cross, dt0):
+    amps = _numbers(cells, "amplitudes", TENSION_AMPLITUDES if mode == "tension" else COMPRESSION_AMPLITUDES)
+    return sum(FULL["cycles"] * _cycle(p, mode, t_cross, dt0) for _ in amps
+               for p in _numbers(cells, "periods", PERIODS[mode]))
+
+
+def _pull_steps(until, cells, dt0):
+    until, speed = _numbers(cells, "until", (until,))[0], _numbers(cells, "speed", (PULL_SPEED,))[0]
+    return int(until * sample.D0 / (2 * speed * dt0 * DT_FACTORS["pull"]))
+
+
+def tension_steps(cells, t_cross, dt0):
+    """fig16: every amplitude's cycles at every period."""
+    return _cyclic_steps("tension", cells, t_cross, dt0)
+
+
+def compression_steps(cells, t_cross, dt0):
+    """fig18: every amplitude's cycles at every period."""
+    return _cyclic_steps("compression", cells, t_cross, dt0)
+
+
+def pull_steps(cells, t_cross, dt0):
+    """fig17: the pull to Dx = until (9)."""
+    return _pull_steps(9.0, cells, dt0)
+
+
+def large_compression_steps(cells, t_cross, dt0):
+    """fig19: the compression to Dx = -until (3)."""
+    return _pull_steps(3.0, cells, dt0)
+
+
+def drag_steps(cells, t_cross, dt0):
+    """drag: three runs at the campaign's base step (drag_share)."""
+    return 3 * int(round(FAST * t_cross / dt0))
+
+
+def rates_steps(cells, t_cross, dt0):
+    """rates: the cycles at every period, in tension and compression."""
+    return sum(FULL["cycles"] * _cycle(p, m, t_cross, dt0) for p in _numbers(cells, "periods", RATE_PERIODS)
+               for m in _uni.MODES)
 
 
 JOBS_LOG = "jobs.jsonl"
@@ -383,18 +424,30 @@ def totals(outdir, since=None, lanes=None, progress=True):
            "ms_per_step": 1e3 * seconds / steps if steps else None, "lanes": lanes}
     if progress:
         for j in sorted(jobs, key=lambda j: j["start"]):
-            print(f"  {j['job']:20s} {j['figure']:8s} {j['steps']:>10,d} steps  {j['seconds'] / 3600:5.2f} h", flush=True)
+            print(f"  {j['job']:20s} {j['figure']:8s} {j['steps']:>10,d} steps  {j['seconds'] / 3600:5.2f} h",
+                  flush=True)
         print(f"total: {len(jobs)} jobs, {steps:,d} steps, {out['single_job_hours']:.2f} h of job time"
               + (f" ({out['ms_per_step']:.2f} ms/step)" if steps else "")
               + f", {out['wall_hours']:.2f} h of wall time" + (f" on {lanes} lanes" if lanes else ""), flush=True)
     return out
 
 
-def plan(table, outdir, lanes=2, progress=True):
-    """The plan of a campaign table before it runs: each job's steps at the campaign's time step,
-    the ms per step measured on the unconfined start (300 steps, walls at rest), the estimated
-    hours of each job, their sum (single-job time) and the wall time on ``lanes`` lanes taking
-    the longest job first. Prints it; returns it."""
+def plan(table, outdir, registry, lanes=2, progress=True):
+    """The plan of a campaign table before it runs: each job's steps at the campaign's time step
+    (its cost in ``registry``, the tablet's cli.JOBS; none declared: not counted), the ms per
+    step measured on the unconfined start (300 steps, walls at rest), the estimated hours of each
+    job, their sum (single-job time) and the wall time on ``lanes`` lanes taking the longest job
+    first. A line whose job the registry does not know is a ValueError naming it, before any work.
+    Prints it; returns it."""
+    with open(table) as f:
+        lines = [ln.split() for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
+    head = lines[0]
+    cells = [dict(zip(head, c)) for c in lines[1:]]
+    for c in cells:  # every line's job known before the preparation's minutes, not after
+        try:
+            registry.get(c["figure"].strip("'\""))
+        except ValueError as e:
+            raise ValueError(f"{table}: line {c['description']}: {e}") from None
     prepare(outdir, False, progress)
     test = _uni.Test(progress=False)
     O.run(20, True)
@@ -402,25 +455,22 @@ def plan(table, outdir, lanes=2, progress=True):
     O.run(n, True)
     ms = 1e3 * (time.time() - t0) / n
     jobs = []
-    with open(table) as f:
-        lines = [ln.split() for ln in f if ln.strip() and not ln.lstrip().startswith("#")]
-    head = lines[0]
-    for cells in lines[1:]:
-        c = dict(zip(head, cells))
+    for c in cells:
         figure = c["figure"].strip("'\"")
-        steps = _job_steps(figure, c, test.t_cross, O.dt)
+        steps = registry.cost(figure, c, test.t_cross, O.dt) or 0  # prepare and the like: minutes, not counted
         jobs.append({"job": c["description"], "figure": figure, "steps": steps, "hours": steps * ms / 3.6e6})
     finish = [0.0] * lanes
     for j in sorted(jobs, key=lambda j: -j["hours"]):
         k = finish.index(min(finish))
         finish[k] += j["hours"]
-    out = {"table": table, "dt": O.dt, "ms_per_step": ms, "jobs": jobs, "single_job_hours": sum(j["hours"] for j in jobs),
+    out = {"table": table, "dt": O.dt, "ms_per_step": ms, "jobs": jobs,
+           "single_job_hours": sum(j["hours"] for j in jobs),
            "lanes": lanes, "wall_hours_estimate": max(finish)}
     if progress:
         for j in jobs:
             print(f"  {j['job']:20s} {j['figure']:8s} {j['steps']:>10,d} steps  {j['hours']:5.2f} h", flush=True)
         print(f"plan: {len(jobs)} jobs, {sum(j['steps'] for j in jobs):,d} steps at {ms:.2f} ms/step (measured): "
-              f"{out['single_job_hours']:.2f} h of single-job time, about {out['wall_hours_estimate']:.2f} h on {lanes} lanes",
+              f"{out['single_job_hours']:.2f} h of single-job time, about "
+              f"{out['wall_hours_estimate']:.2f} h on {lanes} lanes",
               flush=True)
     return out
-

@@ -16,13 +16,13 @@ from .. import sample
 from .. import uniaxial as _uni
 from .common import (
     COMPRESSION_AMPLITUDES, DT_FACTORS, FAST, FIG17_DX, FULL, GAP_AREA, PERIODS, PROTOCOL,
-    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, _csv_text, protocol_of, cycle_peaks, stroke_peaks,
+    PULL_SPEED, QUICK, RATE_PERIODS, TENSION_AMPLITUDES, csv_text, protocol_of, cycle_peaks, stroke_peaks,
     is_master, mpy as _mpy, prepare, read_csv, root, run_dir, run_name,
 )
 from .plots import plot_compression, plot_cycles, plot_pull, plot_rates
 
 
-def _test(progress, grips=None, members=None):
+def new_test(progress, grips=None, members=None):
     """The uni-axial test on the loaded start, serially or, under yade.mpy, split over the ranks
     (the master records, every rank follows its decisions). Returns (test, f0): f0 the first
     row's force under mpy, read before the split clears the master's forces; None serially.
@@ -91,7 +91,7 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     if kc_over_kp is not None:
         variant["tensile_stiffness"] = sample.set_tensile_stiffness(kc_over_kp)
     try:
-        test, f0 = _test(progress, grips)
+        test, f0 = new_test(progress, grips)
         if grips is not None:
             variant["grips"] = test.grips
         if energy:
@@ -113,7 +113,8 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
-            "peaks": (stroke_peaks(rows, test.turns) if returns == "force" else cycle_peaks(mode, rows, test.steps_per_cycle)),
+            "peaks": (stroke_peaks(rows, test.turns) if returns == "force"
+                      else cycle_peaks(mode, rows, test.steps_per_cycle)),
             "wall_clock_s": time.time() - t0,
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
             "mpi_ranks": _mpy().numThreads if _mpy() else 1, "dt_factor": dt_factor, "final_F": rows[-1][2],
@@ -123,8 +124,8 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     if bundle is None:
         return info, rows
     with bundle:
-        bundle.write_text(name + ".csv", _csv_text(rows))
-        bundle.write_text(name + "-branches.csv", _csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
+        bundle.write_text(name + ".csv", csv_text(rows))
+        bundle.write_text(name + "-branches.csv", csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
         bundle.write_json(name + ".json", info)
     if progress:
         print(f"{name}: {info['wall_clock_s']:.0f} s, peaks {['%.4g' % x for x in info['peaks']]}", flush=True)
@@ -186,7 +187,8 @@ def rates(outdir, quick=False, amplitude=0.2, periods=RATE_PERIODS, progress=Tru
             for period in periods:
                 row[f"P{period:g}"] = peaks[period][c] if period in peaks else ""
             for p1, p2 in zip(periods, periods[1:]):
-                row[f"change_P{p1:g}_P{p2:g}"] = abs(peaks[p1][c] / peaks[p2][c] - 1) if p1 in peaks and p2 in peaks else ""
+                row[f"change_P{p1:g}_P{p2:g}"] = (abs(peaks[p1][c] / peaks[p2][c] - 1) if p1 in peaks and p2 in peaks
+                                                  else "")
             table.append(row)
     keys = list(table[0])
     text = ",".join(keys) + "\n" + "".join(",".join(str(row[k]) for k in keys) + "\n" for row in table)
@@ -265,7 +267,8 @@ def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) 
         return abs(row[k] - ref[k]) / abs(scale) if k.endswith("F_at_Dx0") else abs(row[k] / ref[k] - 1)
 
     for row in rows.values():
-        row["change_vs_1dt"] = {k: change(row, k) for k in keys if row.get(k) is not None and ref.get(k) not in (None, 0)}
+        row["change_vs_1dt"] = {k: change(row, k) for k in keys
+                                if row.get(k) is not None and ref.get(k) not in (None, 0)}
     perturbed = [rows[f]["change_vs_1dt"] for f in (PERTURBED,) + PERTURBED_MORE if f in rows]
     sensitivity = {k: max(p[k] for p in perturbed if k in p) for k in keys if any(k in p for p in perturbed)}
     groups = {"tension": keys[:2], "compression": keys[2:4], "pull": keys[4:]}
@@ -281,7 +284,8 @@ def timestep_table(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) 
             best = f
         return best
 
-    out = {"tolerance": TIMESTEP_TOLERANCE, "perturbed_factors": [f for f in (PERTURBED,) + PERTURBED_MORE if f in rows],
+    out = {"tolerance": TIMESTEP_TOLERANCE,
+           "perturbed_factors": [f for f in (PERTURBED,) + PERTURBED_MORE if f in rows],
            "pull_until": TIMESTEP_PULL_UNTIL,
            "rows": [rows[f] for f in sorted(rows)], "perturbation_sensitivity": sensitivity,
            "largest_accepted_factor": {g: accepted(g) for g in groups}}
@@ -297,13 +301,15 @@ def timestep_markdown(ts):
             ("compression_peak", "compression peak", ".5f"), ("compression_F_at_Dx0", "compression F at Dx=0", "+.5f"),
             ("pull_max_tension", "pull peak", ".5f"), ("first_gap_Dx", "first gap Dx", ".3f"),
             ("last_contact_Dx", "last chain Dx", ".3f"))
-    out = ["| dt / dt_campaign | " + " | ".join(c[1] for c in cols) + " | energy residual (t, c, pull) | ms/step (t, c, pull) |",
+    out = ["| dt / dt_campaign | " + " | ".join(c[1] for c in cols)
+           + " | energy residual (t, c, pull) | ms/step (t, c, pull) |",
            "|---" * (len(cols) + 3) + "|"]
     for r in ts["rows"]:
         cells = []
         for key, _, fmt in cols:
             v, ch = r.get(key), r.get("change_vs_1dt", {}).get(key)
-            cells.append("—" if v is None else f"{v:{fmt}}" + ("" if ch is None or r["factor"] == 1.0 else f" ({100 * ch:.2f} %)"))
+            cells.append("—" if v is None else f"{v:{fmt}}"
+                         + ("" if ch is None or r["factor"] == 1.0 else f" ({100 * ch:.2f} %)"))
         res = ", ".join("—" if r.get(f"{m}_energy_residual") is None else f"{r[f'{m}_energy_residual']:.1e}"
                         for m in ("tension", "compression", "pull"))
         ms = ", ".join("—" if r.get(f"{m}_ms_per_step") is None else f"{r[f'{m}_ms_per_step']:.2f}"
@@ -395,13 +401,14 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
             e.reference = drag
     dt_factor = DT_FACTORS["pull"] if dt_factor is None else dt_factor
     O.dt *= dt_factor
-    test, f0 = _test(progress)
+    test, f0 = new_test(progress)
     if energy:
         test.track_energy()
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag)) if is_master() else None
     marks = list(dx_marks)
     events = {"first_gap_Dx": None, "see_through_Dx": None, "last_contact_Dx": None, "snapshots": [],
-              "gap_area": [], "planes_at_start": _uni.crossing_profile() if _mpy() is None else None, "planes_at_peak": None,
+              "gap_area": [], "planes_at_start": _uni.crossing_profile() if _mpy() is None else None,
+              "planes_at_peak": None,
               "planes_at_marks": {}}
     peak = [0.0]
     plane_marks = sorted({0.2, *dx_marks[1:]})  # Dx = 0.2: "mostly, but not completely lost mechanical contact"
@@ -472,7 +479,7 @@ def pull(outdir, quick=False, speed=None, until=9.0, progress=True, dx_marks=FIG
         summary["events_note"] = ("under yade.mpy the crack events and snapshots are not taken (they need every "
                                   "particle on one process): run the pull without --mpi for them")
     with bundle:
-        bundle.write_text(tag + ".csv", _csv_text(rows))
+        bundle.write_text(tag + ".csv", csv_text(rows))
         bundle.write_json(tag + ".json", summary)
         plot_pull(rows, events, bundle.path(tag + ".png"))
     return summary
@@ -491,7 +498,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
     speed = speed or PULL_SPEED
     prepare(outdir, quick, progress)
     O.dt *= DT_FACTORS["pull"]
-    test, f0 = _test(progress)
+    test, f0 = new_test(progress)
     bundle = _out.Bundle(os.path.join(root(outdir, quick), tag))
     marks, snaps = list(dx_marks), []
     # Room for the lateral spread: compressed by 3 d0 the sample widened by 4.0 d0 (y) and 4.0 d0 (z)
@@ -524,7 +531,7 @@ def large_compression(outdir, quick=False, speed=None, until=3.0, progress=True,
                "max_force": max(r[2] for r in rows), "final_force": rows[-1][2], "steps": O.iter - rows[0][0],
                "wall_clock_s": time.time() - t0, "strain_at_end": until * sample.D0 / test.L0}
     with bundle:
-        bundle.write_text(tag + ".csv", _csv_text(rows))
+        bundle.write_text(tag + ".csv", csv_text(rows))
         bundle.write_json(tag + ".json", summary)
         plot_compression(rows, snaps, bundle.path(tag + ".png"))
     return summary
@@ -545,14 +552,16 @@ def _spread_widths():
     return tuple(widths)
 
 
-FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", "contacts"), ("full", "all", "contacts"),
+FACTOR_VARIANTS = (("full", "loading", "contacts"), ("frictionless", "loading", "contacts"),
+                   ("full", "all", "contacts"),
                    ("frictionless", "all", "contacts"), ("full", "loading", "lab"), ("frictionless", "all", "lab"))
 
 
 def factor_dir(outdir, packing, glue, rel_std=0.05, seed=1, sinter=sample.SINTER):
     """Where the factor study keeps one preparation (its stages and its pulls; quick ones in quick/)."""
     return os.path.join(outdir, "factors", f"{packing}-{glue}" + (f"-std{rel_std:g}" if rel_std != 0.05 else "")
-                        + (f"-sinter{sinter:g}" if sinter != sample.SINTER else "") + (f"-seed{seed}" if seed != 1 else ""))
+                        + (f"-sinter{sinter:g}" if sinter != sample.SINTER else "")
+                        + (f"-seed{seed}" if seed != 1 else ""))
 
 
 def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=0.05, seed=1, sinter=sample.SINTER):
@@ -570,5 +579,3 @@ def factor_run(outdir, packing, glue, drag, quick=False, progress=True, rel_std=
                     **({"sinter": sinter} if sinter != sample.SINTER else {}))
     return pull(out, quick, progress=progress, tag=f"pull-{drag}", protocol=protocol,
                 drag=drag, stop_after_last=1.0, until=12.0)
-
-

@@ -14,7 +14,7 @@ same iter and the same Dx (the walls have not moved yet). A file with anything e
 iter further down, three rows at one iter, a different Dx) is refused: reported and left
 unchanged (exit status 1). Per file it reports which rows it removed.
 
-    python3 scripts/strip_repeated_rows.py [--dry-run] PATH...
+    python3 studies/scripts/strip_repeated_rows.py [--dry-run] PATH...
 """
 import argparse
 import os

@@ -5,7 +5,8 @@
 # where the truth fits within the 95 % threshold (chi2 of the truth - chi2 of the best fit < 3.84, all
 # parameters at the truth, none refitted: so the truth lies inside every true profile interval)
 # and it is a miss when a reported interval does not hold the truth.
-#   python3 scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] [--compare OLD_MODULE.py|OLD_PACKAGE_DIR | --compare-rev REV]
+#   python3 studies/scripts/calibrate_profile_study.py [--draws 12] [--out FILE.json] \
+#       [--compare OLD_MODULE.py|OLD_PACKAGE_DIR | --compare-rev REV]
 import argparse
 import importlib.util
 import json
@@ -17,7 +18,7 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "py"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "py"))  # the library
 import numpy as np  # noqa: E402
 from mesocontact import calibrate, outputs, theory  # noqa: E402
 
@@ -26,7 +27,8 @@ ap.add_argument("--draws", type=int, default=12)
 ap.add_argument("--starts", type=int, default=10)
 ap.add_argument("--out", default=None)
 ap.add_argument("--compare", default=None,
-                help="another version of mesocontact's calibrate (its module file, or its package directory) on the same draws")
+                help="another version of mesocontact's calibrate (its module file, or its package "
+                     "directory) on the same draws")
 ap.add_argument("--compare-rev", default=None, help="the same, calibrate as it was at this git revision")
 a = ap.parse_args()
 
@@ -43,7 +45,8 @@ def load_compared(files):
     up = r"\." if "__init__.py" in files and len(files) == 1 else r"\.\."  # the level that leaves calibrate
     for name, text in files.items():
         text = re.sub(r"^(\s*)from " + up + r"(\w*) import",
-                      lambda m: f"{m.group(1)}from mesocontact{'.' + m.group(2) if m.group(2) else ''} import", text, flags=re.M)
+                      lambda m: f"{m.group(1)}from mesocontact{'.' + m.group(2) if m.group(2) else ''} import", text,
+                      flags=re.M)
         with open(os.path.join(pkg, name), "w") as f:
             f.write(text)
     spec = importlib.util.spec_from_file_location("calibrate_compared", os.path.join(pkg, "__init__.py"),
@@ -58,7 +61,8 @@ compared = None
 if a.compare_rev:  # the module of that revision (one file before the package split, a package after)
     kind = subprocess.run(["git", "-C", HERE, "cat-file", "-t", f"{a.compare_rev}:py/mesocontact/calibrate"],
                           capture_output=True, text=True).stdout.strip()
-    names = _git("ls-tree", "--name-only", f"{a.compare_rev}:py/mesocontact/calibrate").split() if kind == "tree" else []
+    names = (_git("ls-tree", "--name-only", f"{a.compare_rev}:py/mesocontact/calibrate").split() if kind == "tree"
+             else [])
     compared = {f: _git("show", f"{a.compare_rev}:py/mesocontact/calibrate/{f}") for f in names if f.endswith(".py")} \
         or {"__init__.py": _git("show", f"{a.compare_rev}:py/mesocontact/calibrate.py")}
 elif a.compare:
@@ -82,10 +86,12 @@ for seed in range(a.draws):
     row = {"seed": seed}
     for name, mod in versions.items():
         t0 = time.time()
-        f = mod.fit((v, e, sigma), R, RHO, adhesion="jumpIn", kca=KCA, values=dict(k1=100.0), starts=a.starts, bootstrap=0)
+        f = mod.fit((v, e, sigma), R, RHO, adhesion="jumpIn", kca=KCA, values=dict(k1=100.0), starts=a.starts,
+                    bootstrap=0)
         chi2 = lambda p: float(np.sum(((setup.curve(v, p) - e) / sigma) ** 2))  # noqa: E731
         row["chi2_truth"] = chi2(TRUTH)
-        row[name] = {"chi2_fit": chi2(f.params), "delta_chi2_truth": chi2(TRUTH) - chi2(f.params), "ci95": f.ci95, "params": f.params,
+        row[name] = {"chi2_fit": chi2(f.params), "delta_chi2_truth": chi2(TRUTH) - chi2(f.params), "ci95": f.ci95,
+                     "params": f.params,
                      "outside": [n for n in f.free if not f.ci95[n][0] <= TRUTH[n] <= f.ci95[n][1]],
                      "seconds": time.time() - t0}
         print(f"draw {seed} {name:8s}: truth at +{row[name]['delta_chi2_truth']:.2f}, outside {row[name]['outside']}, "
@@ -101,5 +107,7 @@ for name in versions:
                      "median_seconds": float(np.median([r[name]["seconds"] for r in rows]))}
     print(name, summary[name], flush=True)
 if a.out:
-    outputs.write_atomic(a.out, json.dumps({"command": "python3 scripts/calibrate_profile_study.py " + " ".join(sys.argv[1:]),
-                                            "truth": TRUTH, "summary": summary, "draws": rows}, indent=1, default=float))
+    outputs.write_atomic(a.out, json.dumps({"command": "python3 studies/scripts/calibrate_profile_study.py "
+                                                       + " ".join(sys.argv[1:]),
+                                            "truth": TRUTH, "summary": summary, "draws": rows}, indent=1,
+                                           default=float))

@@ -1,0 +1,164 @@
+# ctest (inside yade): a user's own material in SI units through the library's bulk tools
+# (mesocontact.bulk): a sintered sample prepared, described and saved with its protocol; reloaded,
+# unconfined and pulled through one cosine tension cycle; bad arguments refused by name before
+# any work. The checks are the stages' own targets (stress within tol_stress of each goal, kinetic
+# energy below tol_ke of the energy scale), the walls' motion (back to the start's length to
+# rounding), and the protocol read back from the saved scene exactly.
+import math
+import os
+import tempfile
+
+from yade import O
+from mesocontact import bulk
+from mesocontact.bulk import sample, sintering, uniaxial
+from harness import check, finish
+
+# 100 um particles of 2500 kg/m^3, kc/kp = 0.1, the relative damping of Appendix F's (about 1 %).
+USER = dict(density=2500.0, k1=125.0, kp=250.0, kc=25.0, phiF=0.05, gammaN=1.25e-5, frictionAngle=0.5,
+            kt=50.0, gammaT=2.5e-6, kr=25.0, gammaR=1.25e-6, muR=0.1, ko=25.0, gammaO=1.25e-6, muO=0.1)
+D0 = 1e-4
+out = tempfile.mkdtemp(prefix="bulk-user-")
+path = os.path.join(out, "released.yade.gz")
+
+# 1. Refused before any work: nothing is built, nothing written.
+O.reset()
+p = bulk.Protocol.ratios(USER, D0, sinter=0.02, n=64, seed=3, release_steps=4000, packing="frictionless")
+for what, call in (("protocol", lambda: sintering.prepare(path, {"d0": D0})),
+                   ("path", lambda: sintering.prepare(os.path.join(out, "x.xml"), p)),
+                   ("protocol", lambda: sample.stats())):
+    try:
+        call()
+        check(False, f"refused: {what}")
+    except (ValueError, TypeError) as e:
+        check(what in str(e), f"refused naming {what}", str(e))
+check(len(O.bodies) == 0 and not os.listdir(out), "nothing built or written by a refused call")
+
+# 2. Prepared: each stage met its targets; the description and the state are saved.
+info = bulk.prepare(path, p, progress=False)
+check(os.path.exists(path) and os.path.exists(path + ".json"), "state and description saved")
+p_s = 0.02 * 250.0 / D0  # d0 p_s/kp = 0.02
+e_ref = 3 * 64 * (p_s * D0 * D0) ** 2 / (2 * 250.0)  # 3 contacts per particle, each p_s d0^2 on a spring kp
+for stage, goal in (("packed", p_s * 0.1), ("sintered", p_s), ("released", p_s * 1e-3)):
+    s = info[stage]
+    worst = max(abs(v / goal - 1.0) for v in s["wall_stress"].values())
+    check(abs(s["goal"] / goal - 1) < 1e-15 and worst < 0.01 and s["kinetic_energy"] < 1e-4 * e_ref,
+          f"{stage}: every wall within 1 % of its goal, at rest (E_kin < 1e-4 of the elastic energy)",
+          f"|stress/goal - 1| <= {worst:.2e}, E_kin/E_ref = {s['kinetic_energy'] / e_ref:.2e}")
+sf = info["released"]["solid_fraction"]
+check(0.45 < sf < 0.75 and info["released"]["coordination"] > 3, "released: a dense, connected packing",
+      f"solid fraction {sf:.3f}, coordination {info['released']['coordination']:.2f}")
+check(info["built"]["n"] == 64 and info["d0"] == D0 and info["kp"] == 250.0, "described with its scales")
+
+# 2b. Kept stages: saving each stage changes nothing; a preparation stopped after a stage goes on
+#     from it (the stage's state and the engines' settings are saved with the scene).
+kept = os.path.join(out, "kept.yade.gz")
+info_k = bulk.prepare(kept, p, progress=False, keep_stages=True)
+same = ({k: v for k, v in info_k.items() if k != "wall_clock_s"}
+        == {k: v for k, v in info.items() if k != "wall_clock_s"})
+check(same, "keep_stages: the same description to the last bit as without")
+for gone in (kept, kept + ".json", sintering.stage_path(kept, "sintered"),
+             sintering.stage_path(kept, "sintered") + ".json"):
+    os.remove(gone)
+info_r = bulk.prepare(kept, p, progress=False, keep_stages=True)
+check(info_r.get("resumed_after") == ["packed"], "resumed after the last kept stage", str(info_r.get("resumed_after")))
+# Not to the last bit: after a load YADE's collider makes the potential contacts again in another
+# order, so forces add in another order (scripts/restart_check.py); the rounding grows over the
+# remaining stages (measured: 4e-8 of the solid fraction). The resumed stages meet their targets.
+worst = max(abs(v / p.release_stress - 1.0) for v in info_r["released"]["wall_stress"].values())
+sf_r = info_r["released"]["solid_fraction"]
+check(worst < p.tol_stress and abs(sf_r / info["released"]["solid_fraction"] - 1) < 1e-4,
+      "resumed: released at p_r, the same sample to rounding", f"solid fraction {sf_r!r} vs {sf!r}")
+
+# 3. Reloaded: the protocol comes back with the scene, exactly.
+O.reset()
+O.load(path)
+check(sample.current() == p, "the protocol travels with the saved scene (O.tags)")
+
+# 4. Unconfined and one tension cycle of amplitude 0.05 d0.
+lo, hi = sample.inner_box()
+area = (hi[1] - lo[1]) * (hi[2] - lo[2])
+u = uniaxial.make_unconfined(progress=False)
+walls = sample.wall_ids()
+check(sorted(walls) == ["left", "right"], "unconfined: only the two x walls are left", str(sorted(walls)))
+O.step()  # forces are not kept after the relaxation's last step: one step at rest
+push = 0.5 * (O.forces.f(walls["right"])[0] - O.forces.f(walls["left"])[0])
+# make_unconfined stops within 1e-4 kp d0 of p_r A (a third of p_r A for so small a sample); it
+# settles far closer (measured 5e-5 of p_r A): 1 % is the claim.
+check(abs(push / (0.02 * 250.0 / D0 * 1e-3 * area) - 1) < 0.01, "unconfined: the x walls held at p_r A",
+      f"F = {push:.6e} N, p_r A = {0.02 * 250.0 / D0 * 1e-3 * area:.6e} N")
+t = uniaxial.Test(progress=False)
+t.track_energy()
+seen = []  # (length from the walls, F from the walls' forces over kp d0 in SI) at each record
+
+
+def watch(test, row):
+    w = sample.wall_ids()
+    length = (O.bodies[w["right"]].state.pos[0] - O.bodies[w["right"]].shape.extents[0]) - \
+        (O.bodies[w["left"]].state.pos[0] + O.bodies[w["left"]].shape.extents[0])
+    seen.append((length, 0.5 * (O.forces.f(w["right"])[0] - O.forces.f(w["left"])[0]) / (250.0 * D0), row))
+
+
+rows = t.cycles("tension", 0.05, n_cycles=1, period=40.0, on_record=watch)
+stretch = max(x[0] for x in seen) - t.L0
+check(abs(stretch - 0.05 * D0) < 1e-3 * 0.05 * D0, "the walls move apart by 0.05 d0 at the peak (their positions)",
+      f"{stretch:.6e} m")
+check(max(abs(x[1] - x[2][2]) for x in seen) < 1e-12, "F/(kp d0) is the walls' force over kp d0")
+peak_dx = max(r[1] for r in rows)
+check(abs(peak_dx - 0.05) < 1e-3 and abs(rows[-1][1]) < 1e-9, "the walls reach the amplitude and come back",
+      f"largest Dx {peak_dx:.5f}, last Dx {rows[-1][1]:.1e}")
+f_peak = min(r[2] for r in rows)
+check(f_peak < 0, "the sintered sample resists tension (F < 0)", f"most tensile F/(kp d0) = {f_peak:.3e}")
+check(len(t.branches) == len(rows) and all(abs(sum(b[2:]) - 1) < 1e-12 or sum(b[2:]) == 0 for b in t.branches),
+      "a branch record with each row, fractions summing to 1")
+bal = t.energy_balance()
+# The walls' work is summed as f.v dt per step (first order in dt): 6.2e-4 of the gross work here;
+# a term the bookkeeping lost (the law's dissipation, the drag's) would be of order 0.1 to 1.
+check(abs(bal["residual_over_gross"]) < 2e-3, "energy: the walls' work is the change of kinetic, stored and "
+      "dissipated energy", f"(dE - W)/gross = {bal['residual_over_gross']:.2e}")
+csv = os.path.join(out, "cycle.csv")
+t.write_csv(csv)
+with open(csv) as f:
+    lines = f.read().split("\n")
+header = lines[0].split(",")
+last = dict(zip(header, lines[-2].split(",")))
+check(header[:6] == ["iter", "Dx", "F_over_kp_d0", "L", "wall_work", "energy_change"] and len(lines) == len(rows) + 2,
+      "CSV: a row per record with length, energy and branch columns", f"{len(header)} columns")
+check(float(last["wall_work"]) == bal["wall_work"] and abs(float(last["L"]) - t.length()) < 1e-12 * t.length(),
+      "CSV: the last row's work and length are the test's")
+t.plot(os.path.join(out, "cycle.png"), "one tension cycle")
+check(os.path.getsize(os.path.join(out, "cycle.png")) > 10000, "a picture of the cycle")
+# 5. The die: the lateral walls stay (fixed), the x walls compact the sample by 0.05 d0 and pull back
+#    to 0.02 d0 beyond the start.
+O.reset()
+O.load(path)
+before = {k: tuple(O.bodies[i].state.pos) for k, i in sample.wall_ids().items()}
+uniaxial.make_confined(progress=False)
+lateral = {k: i for k, i in sample.wall_ids().items() if k not in ("left", "right")}
+die = uniaxial.Test(progress=False)
+lo, hi = sample.inner_box()
+area_die = (hi[1] - lo[1]) * (hi[2] - lo[2])
+s0 = sample.stats()["wall_stress"]
+die.compress(p.speeds()[1], until=0.05, every=2)
+s1 = sample.stats()["wall_stress"]
+f_press, dx_press = die.rows[-1][2], die.rows[-1][1]
+die.pull(p.speeds()[1], until=0.02, every=2)
+f_back = die.rows[-1][2]
+check(sorted(lateral) == ["back", "bottom", "front", "top"]
+      and all(tuple(O.bodies[i].state.pos) == before[k] for k, i in lateral.items()),
+      "die: the four lateral walls stay, unmoved to the last bit")
+check(all(s1[k] > 2 * s0[k] > 0 for k in lateral), "die: compaction by 0.05 d0 raises the stress on every die wall",
+      ", ".join(f"{k} {s0[k]:.3g} -> {s1[k]:.3g} Pa" for k in sorted(lateral)))
+check(f_press * 250.0 * D0 > 2 * 0.02 * 250.0 / D0 * 1e-3 * area_die and f_back < 0,
+      "die: the pistons push at the press and pull back in tension", f"F/(kp d0) {f_press:.3e} then {f_back:.3e}")
+one_step = 2 * p.speeds()[1] * O.dt / D0  # both pistons move one step at speed
+check(abs(dx_press + 0.05) <= one_step and abs(die.rows[-1][1] - 0.02) <= one_step,
+      "die: compressed to Dx = -0.05 and pulled back to 0.02, each to a step",
+      f"Dx {dx_press:.6f}, {die.rows[-1][1]:.6f} (a step: {one_step:.1e})")
+for bad, call in (("amplitude", lambda: t.cycles("tension", -0.1)), ("mode", lambda: t.cycles("shear", 0.1)),
+                  ("period", lambda: t.cycles("tension", 0.1, period=math.nan))):
+    try:
+        call()
+        check(False, f"cycles refuses {bad}")
+    except ValueError as e:
+        check(bad in str(e), f"cycles refuses {bad}", str(e))
+finish()
