@@ -142,6 +142,204 @@ def _start_contacts(walls, grips, x_mid, half):
     return np.array(rows), pairs
 
 
+DEFINITIONS = {
+    "F_wall": "uniaxial.Test.force: (f_right - f_left)/2 on the loading walls (grips), over kp d0, > 0 in "
+              "compression",
+    "F_bulk": "sum over bodies of w F_x (F this step's force on the body: its contacts and the drag), w = "
+              "(x - x_mid)/(2 h) clipped to +-1/2 (+-1/2 on the walls and grips), over kp d0: the force "
+              "work-conjugate to the affine field; = sum over contacts of f_x (w2 - w1) but for the drag "
+              "(max_F_bulk_bodies_minus_contacts: the largest difference at the slab records)",
+    "F_pp": "F_bulk less its walls' contacts' part: the particle contacts' mean tension, the quantity "
+            "of the static estimate (in a free pull at rest F_pp = F_wall (1 - about d0/L0): the "
+            "particle contacts span the centres of the outer layers, not the walls' distance)",
+    "F_contacts": "F_bulk from the contacts alone (no drag), recorded with start-contacts.csv, and its "
+                  "parts F_<part> (PARTS: particle contacts' normal force on the tensile limit, "
+                  "attractive on a line, repulsive, their tangential force, the walls' contacts); "
+                  "static_F_*: the static estimate's tensile, attractive-line and repulsive parts",
+    "start contacts": "the particle contacts in overlap at the start (inside one grip left out): on a "
+                      "k1/kp/k2 line, on the tensile limit -kc delta, open (no overlap or gone)",
+    "static": "each start contact opened by Dx d0 (w2 - w1) nx along its own unloading (affine.curve "
+              "for the field w)"}
+
+
+class _Recorder:
+    """What one pull records (inside YADE): ``hook`` is the test's on_record. ``rows`` (iter, Dx,
+    F_wall, F_bulk, F_pp) every record; every ``slab_every`` records ``contact_rows``
+    (START_CONTACTS_COLUMNS), ``slab_rows`` and ``drag_check`` (F_bulk from the bodies less from the
+    contacts). The field: x_mid, the walls' and grips' fixed values (``grip_side``: +-1 -> ids), the
+    free part's half length h = L/2 - t_grip d0."""
+
+    def __init__(self, test, walls, grip_side, x_mid, t_grip, contacts, pairs, slab_every):
+        from yade import O
+        from mesocontact import scene as _scene
+        from . import sample
+        self.O, self.sample, self.test = O, sample, test
+        self.x_mid, self.t_grip, self.contacts, self.pairs, self.slab_every = x_mid, t_grip, contacts, pairs, slab_every
+        self.scale = sample.KP * sample.D0
+        self.tensile_index = _scene.BRANCHES.index("tensile")
+        self.wall_set = set(walls.values())
+        self.ids = sample.sphere_ids()
+        in_grip = {i for m in grip_side.values() for i in m}
+        self.free_ids = [i for i in self.ids if i not in in_grip]
+        self.lo, hi = sample.inner_box()
+        self.half0 = self.half()  # after the test's first step (its L0)
+        self.start = {i: O.bodies[i].state.pos for i in self.ids}
+        self.start = {i: (p[0], p[1], p[2]) for i, p in self.start.items()}
+        self.w_start = {i: float(field(self.start[i][0], x_mid, self.half0)) for i in self.free_ids}
+        self.fixed_w = {walls["left"]: -0.5, walls["right"]: 0.5}  # the field's value, fixed for walls and grips
+        for s, m in grip_side.items():
+            self.fixed_w.update({i: 0.5 * s for i in m})
+        lo, length = self.lo[0], hi[0] - self.lo[0]
+        self.n_slabs = n = max(2, int(round(length / sample.D0)))
+        slab_of = {i: min(n - 1, max(0, int((self.start[i][0] - lo) / length * n))) for i in self.ids}
+        self.slab_ids = [[i for i in self.ids if slab_of[i] == k] for k in range(n)]
+        self.slab_x0 = [sum(self.start[i][0] for i in m) / len(m) for m in self.slab_ids]
+        self.pair_slab = np.array([min(n - 1, max(0, int((0.5 * (self.start[a][0] + self.start[b][0]) - lo) / length
+                                                         * n))) for a, b in pairs])
+        self.rows, self.contact_rows, self.slab_rows, self.drag_check = [], [], [], []
+
+    def half(self):
+        lo, hi = self.sample.inner_box()
+        return 0.5 * (hi[0] - lo[0]) - self.t_grip * self.sample.D0
+
+    def w_of(self, b, half):
+        if b in self.fixed_w:
+            return self.fixed_w[b]
+        return min(0.5, max(-0.5, (self.O.bodies[b].state.pos[0] - self.x_mid) / (2 * half)))
+
+    def slave(self, hold, speed):
+        """Prescribes the free particles' velocities: x on the field (2 speed w), y and z zero where
+        ``hold`` holds them, the spins zero if it holds rotations; blockedDOFs keeps them."""
+        from yade import Vector3
+        for i in self.free_ids:
+            st = self.O.bodies[i].state
+            v = st.vel
+            st.blockedDOFs = hold
+            st.vel = Vector3(2.0 * speed * self.w_start[i], 0.0 if "y" in hold else v[1], 0.0 if "z" in hold else v[2])
+            if "X" in hold:
+                st.angVel = Vector3(0, 0, 0)
+
+    def f_bodies(self):
+        """F_bulk over kp d0 from the bodies' forces of this step: the loading ends' (Test.force) and
+        the free particles' (these include the background drag)."""
+        half, total = self.half(), 0.0
+        for i in self.free_ids:
+            total += self.O.forces.f(i)[0] * self.w_of(i, half)
+        return self.test.force() + total / self.scale
+
+    def f_parts(self):
+        """F_bulk over kp d0 from the contacts' forces, as the parts of PARTS (a pass over the
+        interactions)."""
+        half, parts = self.half(), [0.0] * len(PARTS)
+        for inter in self.O.interactions:
+            if not inter.isReal:
+                continue
+            w1, w2 = self.w_of(inter.id1, half), self.w_of(inter.id2, half)
+            if w1 == w2:
+                continue
+            fn, fs = inter.phys.normalForce, inter.phys.shearForce
+            if inter.id1 in self.wall_set or inter.id2 in self.wall_set:
+                parts[4] += (fn[0] + fs[0]) * (w2 - w1)
+                continue
+            k = 0 if inter.phys.branchIndex == self.tensile_index else 1 if fn.dot(inter.geom.normal) < 0 else 2
+            parts[k] += fn[0] * (w2 - w1)
+            parts[3] += fs[0] * (w2 - w1)
+        return [x / self.scale for x in parts]
+
+    def f_walls(self):
+        """The walls' contacts' part of F_bulk (PARTS' 'walls'), over kp d0: F_bulk less it is the
+        particle contacts' mean tension F_pp, what the static estimate computes."""
+        half, total = self.half(), 0.0
+        for wid in self.wall_set:
+            for inter in self.O.bodies[wid].intrs():
+                if inter.isReal:
+                    total += ((inter.phys.normalForce[0] + inter.phys.shearForce[0])
+                              * (self.w_of(inter.id2, half) - self.w_of(inter.id1, half)))
+        return total / self.scale
+
+    def status(self):
+        """The start's contacts now: 0 on a line, 1 on the tensile limit, 2 open (no overlap or gone)."""
+        out = []
+        for a, b in self.pairs:
+            inter = self.O.interactions[a, b] if self.O.interactions.has(a, b) else None
+            if inter is None or not inter.isReal or inter.geom.penetrationDepth <= 0:
+                out.append(2)
+            else:
+                out.append(1 if inter.phys.branchIndex == self.tensile_index else 0)
+        return np.array(out)
+
+    def deviations(self):
+        """The rms deviation of the free particles from the affine field along x and their rms
+        lateral displacement [d0]."""
+        half, dev, lat = self.half(), 0.0, 0.0
+        for i in self.free_ids:
+            p = self.O.bodies[i].state.pos
+            dev += (p[0] - (self.x_mid + 2 * self.w_start[i] * half)) ** 2
+            lat += (p[1] - self.start[i][1]) ** 2 + (p[2] - self.start[i][2]) ** 2
+        n, d0 = len(self.free_ids), self.sample.D0
+        return (dev / n) ** 0.5 / d0, (lat / n) ** 0.5 / d0
+
+    def strains(self, dx):
+        """The local strain between neighbouring slabs over the field's (ones at Dx = 0)."""
+        u = [sum(self.O.bodies[i].state.pos[0] - self.start[i][0] for i in m) / len(m) for m in self.slab_ids]
+        eps = dx * self.sample.D0 / (2 * self.half0)
+        return np.diff(u) / np.diff(self.slab_x0) / eps if eps > 0 else np.ones(self.n_slabs - 1)
+
+    def hook(self, t, row):
+        f = self.f_bodies()
+        self.rows.append((row[0], row[1], row[2], f, f - self.f_walls()))
+        if (len(t.rows) - 1) % self.slab_every:
+            return
+        parts = self.f_parts()
+        self.drag_check.append(abs(self.rows[-1][3] - sum(parts)))
+        dev, lat = self.deviations()
+        status = self.status()
+        counts = [float(np.mean(status == k)) for k in range(3)]
+        d0 = self.sample.D0
+        f_st = static_curve(self.contacts, [row[1]], d0)[0]
+        strains = self.strains(row[1])
+        k = int(np.argmax(strains))
+        self.contact_rows.append((row[0], row[1], *counts, *f_st[1:], dev, lat, float(strains[k]),
+                                  0.5 * (self.slab_x0[k] + self.slab_x0[k + 1] - 2 * self.lo[0]) / d0, sum(parts),
+                                  *parts, *(x / self.scale for x in static_parts(self.contacts, row[1], d0))))
+        last = self.n_slabs - 2
+        for s in range(self.n_slabs):
+            sel = status[self.pair_slab == s]
+            n = max(1, len(sel))
+            strain = strains[min(s, last)] if s == 0 else 0.5 * (strains[s - 1] + strains[min(s, last)])
+            self.slab_rows.append((row[0], row[1], s, (self.slab_x0[s] - self.lo[0]) / d0, float(strain),
+                                   float(np.sum(sel == 0) / n), float(np.sum(sel == 1) / n),
+                                   float(np.sum(sel == 2) / n)))
+
+
+def _first_dx(rec, dx_static, static):
+    """The first Dx where 1 % and 10 % of the start's contacts are on the tensile limit or open
+    (measured and static), and where the largest local strain first reaches twice the field's."""
+    dx = [r[1] for r in rec.contact_rows]
+    out = {}
+    for key, col in (("tensile_1pc", 3), ("tensile_10pc", 3), ("open_1pc", 4), ("open_10pc", 4)):
+        level = 0.01 if key.endswith("_1pc") else 0.1
+        out[key] = {"measured": first_reaching(dx, [r[col] for r in rec.contact_rows], level),
+                    "static": first_reaching(dx_static, static[:, col - 1], level)}
+    out["local_strain_2x"] = first_reaching(dx[1:], [r[10] for r in rec.contact_rows][1:], 2.0)
+    return out
+
+
+def _write(where, rec, test, dx_static, static, info):
+    from mesocontact import outputs
+    from mesocontact import scene as _scene
+    from .campaign.common import csv_text
+    with outputs.Bundle(where) as b:
+        b.write_text("run.csv", csv_text(rec.rows, "iter,Dx,F_wall,F_bulk,F_pp"))
+        b.write_text("branches.csv", csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
+        b.write_text("start-contacts.csv", csv_text(rec.contact_rows, ",".join(START_CONTACTS_COLUMNS)))
+        b.write_text("slabs.csv", csv_text(rec.slab_rows, "iter,Dx,slab,x_d0,strain_over_affine,line,tensile,open"))
+        b.write_text("static.csv", "Dx,F_over_kp_d0,line,tensile,open\n"
+                     + "".join(f"{x!r}," + ",".join(repr(float(v)) for v in r) + "\n"
+                               for x, r in zip(dx_static, static)))
+        b.write_json("run.json", info)
+
+
 def run(outdir, sample_name, name, protocol=None, grips=None, mode="slaved", hold="x", until=0.3, speed=None,
         every=10, slab_every=10, quick=False, progress=True):
     """One pull of the unconfined start (campaign.prepare with ``protocol``, in ``outdir``) to
@@ -149,11 +347,10 @@ def run(outdir, sample_name, name, protocol=None, grips=None, mode="slaved", hol
     (``hold``), through the walls or ``grips`` [d0]: bundle <outdir>/<sample_name>/<name>/ with
     run.csv, branches.csv, start-contacts.csv, slabs.csv, static.csv and run.json. Returns the
     description."""
-    from yade import O, Vector3
+    from yade import O
     from mesocontact import outputs
-    from mesocontact import scene as _scene
     from . import sample, uniaxial
-    from .campaign.common import DT_FACTORS, PROTOCOL, PULL_SPEED, csv_text, prepare
+    from .campaign.common import DT_FACTORS, PROTOCOL, PULL_SPEED, prepare
 
     if mode not in ("free", "slaved"):
         raise ValueError(f"mode = {mode!r} is invalid: 'free' or 'slaved'")
@@ -183,170 +380,30 @@ def run(outdir, sample_name, name, protocol=None, grips=None, mode="slaved", hol
     test = uniaxial.Test(progress=progress)
     if grips is not None:
         test.use_grips(grips, members)
-    ids = sample.sphere_ids()
-    in_grip = {i for m in members.values() for i in m}
-    free_ids = [i for i in ids if i not in in_grip]
-    lo, hi = sample.inner_box()
-    half0 = 0.5 * (hi[0] - lo[0]) - t_grip * sample.D0  # after the test's first step (its L0)
-    start = {i: O.bodies[i].state.pos for i in ids}
-    start = {i: (p[0], p[1], p[2]) for i, p in start.items()}
-    w_start = {i: float(field(start[i][0], x_mid, half0)) for i in free_ids}
+    rec = _Recorder(test, walls, grip_side, x_mid, t_grip, contacts, pairs, slab_every)
     if mode == "slaved":
-        for i in free_ids:
-            st = O.bodies[i].state
-            v = st.vel
-            st.blockedDOFs = hold
-            st.vel = Vector3(2.0 * speed * w_start[i], 0.0 if "y" in hold else v[1], 0.0 if "z" in hold else v[2])
-            if "X" in hold:
-                st.angVel = Vector3(0, 0, 0)
-    # the field's value of every body, fixed for walls and grips
-    fixed_w = {walls["left"]: -0.5, walls["right"]: 0.5}
-    for s, m in grip_side.items():
-        fixed_w.update({i: 0.5 * s for i in m})
-    n_slabs = max(2, int(round((hi[0] - lo[0]) / sample.D0)))
-    slab_of = {i: min(n_slabs - 1, max(0, int((start[i][0] - lo[0]) / (hi[0] - lo[0]) * n_slabs))) for i in ids}
-    slab_ids = [[i for i in ids if slab_of[i] == k] for k in range(n_slabs)]
-    slab_x0 = [sum(start[i][0] for i in m) / len(m) for m in slab_ids]
-    pair_slab = [min(n_slabs - 1, max(0, int((0.5 * (start[a][0] + start[b][0]) - lo[0]) / (hi[0] - lo[0]) * n_slabs)))
-                 for a, b in pairs]
-    tensile_index = _scene.BRANCHES.index("tensile")
-    bulk, contact_rows, slab_rows, drag_check = [], [], [], []
-    wall_set = set(walls.values())
-
-    def w_of(b, half):
-        return fixed_w[b] if b in fixed_w else min(0.5, max(-0.5, (O.bodies[b].state.pos[0] - x_mid) / (2 * half)))
-
-    def f_bulk(contacts_only):
-        """F_bulk over kp d0: from the contacts' forces (contacts_only: a pass over the interactions), or
-        from the bodies' forces of this step (the loading ends' and the free particles'; these include
-        the background drag, checked against the contacts' every slab record)."""
-        lo_, hi_ = sample.inner_box()
-        half = 0.5 * (hi_[0] - lo_[0]) - t_grip * sample.D0
-        total = 0.0
-        if contacts_only:  # the parts of PARTS
-            parts = [0.0] * len(PARTS)
-            for I in O.interactions:
-                if I.isReal:
-                    w1, w2 = w_of(I.id1, half), w_of(I.id2, half)
-                    if w1 == w2:
-                        continue
-                    fn, fs = I.phys.normalForce, I.phys.shearForce
-                    if I.id1 in wall_set or I.id2 in wall_set:
-                        parts[4] += (fn[0] + fs[0]) * (w2 - w1)
-                        continue
-                    k = 0 if I.phys.branchIndex == tensile_index else 1 if fn.dot(I.geom.normal) < 0 else 2
-                    parts[k] += fn[0] * (w2 - w1)
-                    parts[3] += fs[0] * (w2 - w1)
-            return [x / (sample.KP * sample.D0) for x in parts]
-        for i in free_ids:
-            total += O.forces.f(i)[0] * w_of(i, half)
-        return test.force() + total / (sample.KP * sample.D0)
-
-    def f_walls():
-        """The walls' contacts' part of F_bulk (PARTS' 'walls'), over kp d0: F_bulk less it is the
-        particle contacts' mean tension F_pp, what the static estimate computes."""
-        lo_, hi_ = sample.inner_box()
-        half = 0.5 * (hi_[0] - lo_[0]) - t_grip * sample.D0
-        total = 0.0
-        for wid in wall_set:
-            for I in O.bodies[wid].intrs():
-                if I.isReal:
-                    total += (I.phys.normalForce[0] + I.phys.shearForce[0]) * (w_of(I.id2, half) - w_of(I.id1, half))
-        return total / (sample.KP * sample.D0)
-
-    def hook(t, row):
-        f = f_bulk(False)
-        bulk.append((row[0], row[1], row[2], f, f - f_walls()))
-        if (len(t.rows) - 1) % slab_every:
-            return
-        parts = f_bulk(True)
-        drag_check.append(abs(bulk[-1][3] - sum(parts)))
-        lo_, hi_ = sample.inner_box()
-        half = 0.5 * (hi_[0] - lo_[0]) - t_grip * sample.D0
-        dev, lat = 0.0, 0.0
-        for i in free_ids:
-            p = O.bodies[i].state.pos
-            dev += (p[0] - (x_mid + 2 * w_start[i] * half)) ** 2
-            lat += (p[1] - start[i][1]) ** 2 + (p[2] - start[i][2]) ** 2
-        status = []
-        for a, b in pairs:
-            I = O.interactions[a, b] if O.interactions.has(a, b) else None
-            if I is None or not I.isReal or I.geom.penetrationDepth <= 0:
-                status.append(2)
-            else:
-                status.append(1 if I.phys.branchIndex == tensile_index else 0)
-        status = np.array(status)
-        counts = [float(np.mean(status == k)) for k in range(3)]
-        f_st = static_curve(contacts, [row[1]], sample.D0)[0]
-        u = [sum(O.bodies[i].state.pos[0] - start[i][0] for i in m) / len(m) for m in slab_ids]
-        eps = row[1] * sample.D0 / (2 * half0)
-        strains = np.diff(u) / np.diff(slab_x0) / eps if eps > 0 else np.ones(n_slabs - 1)
-        k = int(np.argmax(strains))
-        contact_rows.append((row[0], row[1], *counts, *f_st[1:], (dev / len(free_ids)) ** 0.5 / sample.D0,
-                             (lat / len(free_ids)) ** 0.5 / sample.D0, float(strains[k]),
-                             0.5 * (slab_x0[k] + slab_x0[k + 1] - 2 * lo[0]) / sample.D0, sum(parts), *parts,
-                             *(x / (sample.KP * sample.D0) for x in static_parts(contacts, row[1], sample.D0))))
-        ps = np.array(pair_slab)
-        for s in range(n_slabs):
-            sel = status[ps == s]
-            n = max(1, len(sel))
-            strain = strains[min(s, n_slabs - 2)] if s == 0 else 0.5 * (strains[s - 1] + strains[min(s, n_slabs - 2)])
-            slab_rows.append((row[0], row[1], s, (slab_x0[s] - lo[0]) / sample.D0, float(strain),
-                              float(np.sum(sel == 0) / n), float(np.sum(sel == 1) / n), float(np.sum(sel == 2) / n)))
-
+        rec.slave(hold, speed)
     t0, it0 = time.time(), O.iter
-    test.pull(speed, until=until, every=every, on_record=hook)
+    test.pull(speed, until=until, every=every, on_record=rec.hook)
     wall = time.time() - t0
     steps = O.iter - it0
-    dx = np.array([r[1] for r in bulk])
+    dx = np.array([r[1] for r in rec.rows])
     info = {"sample": sample_name, "name": name, "mode": mode, "hold": hold if mode == "slaved" else None,
             "grips": test.grips, "grip_thickness_d0": grips, "speed": speed, "until": until, "every": every,
-            "dt": O.dt, "L0": test.L0, "L0_d0": test.L0 / sample.D0, "free_half_length_d0": half0 / sample.D0,
+            "dt": O.dt, "L0": test.L0, "L0_d0": test.L0 / sample.D0, "free_half_length_d0": rec.half0 / sample.D0,
             "protocol": dict(PROTOCOL, **(protocol or {})), "quick": quick,
-            "particles": len(ids), "slaved_particles": len(free_ids) if mode == "slaved" else 0,
-            "start_contacts": len(pairs), "slabs": n_slabs,
-            "wall": peak_summary(dx, [r[2] for r in bulk]), "bulk": peak_summary(dx, [r[3] for r in bulk]),
-            "pp": peak_summary(dx, [r[4] for r in bulk]),
+            "particles": len(rec.ids), "slaved_particles": len(rec.free_ids) if mode == "slaved" else 0,
+            "start_contacts": len(pairs), "slabs": rec.n_slabs,
+            "wall": peak_summary(dx, [r[2] for r in rec.rows]), "bulk": peak_summary(dx, [r[3] for r in rec.rows]),
+            "pp": peak_summary(dx, [r[4] for r in rec.rows]),
             "static": peak_summary(dx_static, static[:, 0]),
-            "max_rms_affine_deviation_d0": max(r[8] for r in contact_rows),
-            "max_rms_lateral_d0": max(r[9] for r in contact_rows),
-            "max_F_bulk_bodies_minus_contacts": max(drag_check),
+            "max_rms_affine_deviation_d0": max(r[8] for r in rec.contact_rows),
+            "max_rms_lateral_d0": max(r[9] for r in rec.contact_rows),
+            "max_F_bulk_bodies_minus_contacts": max(rec.drag_check),
             "steps": steps, "wall_clock_s": wall, "total_wall_clock_s": time.time() - t_start,
-            "ms_per_step": 1e3 * wall / max(1, steps),
-            "definitions": {
-                "F_wall": "uniaxial.Test.force: (f_right - f_left)/2 on the loading walls (grips), over kp d0, > 0 in "
-                          "compression",
-                "F_bulk": "sum over bodies of w F_x (F this step's force on the body: its contacts and the drag), w = "
-                          "(x - x_mid)/(2 h) clipped to +-1/2 (+-1/2 on the walls and grips), over kp d0: the force "
-                          "work-conjugate to the affine field; = sum over contacts of f_x (w2 - w1) but for the drag "
-                          "(max_F_bulk_bodies_minus_contacts: the largest difference at the slab records)",
-                "F_pp": "F_bulk less its walls' contacts' part: the particle contacts' mean tension, the quantity "
-                        "of the static estimate (in a free pull at rest F_pp = F_wall (1 - about d0/L0): the "
-                        "particle contacts span the centres of the outer layers, not the walls' distance)",
-                "F_contacts": "F_bulk from the contacts alone (no drag), recorded with start-contacts.csv, and its "
-                              "parts F_<part> (PARTS: particle contacts' normal force on the tensile limit, "
-                              "attractive on a line, repulsive, their tangential force, the walls' contacts); "
-                              "static_F_*: the static estimate's tensile, attractive-line and repulsive parts",
-                "start contacts": "the particle contacts in overlap at the start (inside one grip left out): on a "
-                                  "k1/kp/k2 line, on the tensile limit -kc delta, open (no overlap or gone)",
-                "static": "each start contact opened by Dx d0 (w2 - w1) nx along its own unloading (affine.curve "
-                          "for the field w)"}}
-    for key, col in (("tensile_1pc", 3), ("tensile_10pc", 3), ("open_1pc", 4), ("open_10pc", 4)):
-        level = 0.01 if key.endswith("_1pc") else 0.1
-        info.setdefault("first_Dx", {})[key] = {
-            "measured": first_reaching([r[1] for r in contact_rows], [r[col] for r in contact_rows], level),
-            "static": first_reaching(dx_static, static[:, col - 1], level)}
-    strain_col = [r[10] for r in contact_rows]
-    info["first_Dx"]["local_strain_2x"] = first_reaching([r[1] for r in contact_rows][1:], strain_col[1:], 2.0)
-    with outputs.Bundle(where) as b:
-        b.write_text("run.csv", csv_text(bulk, "iter,Dx,F_wall,F_bulk,F_pp"))
-        b.write_text("branches.csv", csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
-        b.write_text("start-contacts.csv", csv_text(contact_rows, ",".join(START_CONTACTS_COLUMNS)))
-        b.write_text("slabs.csv", csv_text(slab_rows, "iter,Dx,slab,x_d0,strain_over_affine,line,tensile,open"))
-        b.write_text("static.csv", "Dx,F_over_kp_d0,line,tensile,open\n"
-                     + "".join(f"{x!r}," + ",".join(repr(float(v)) for v in r) + "\n"
-                               for x, r in zip(dx_static, static)))
-        b.write_json("run.json", info)
+            "ms_per_step": 1e3 * wall / max(1, steps), "definitions": DEFINITIONS,
+            "first_Dx": _first_dx(rec, dx_static, static)}
+    _write(where, rec, test, dx_static, static, info)
     if progress:
         print(f"{sample_name}/{name}: F_pp peak {info['pp']['peak_F']:.4g} at Dx {info['pp']['peak_Dx']:.3g}, "
               f"wall peak {info['wall']['peak_F']:.4g}; static {info['static']['peak_F']:.4g}; {wall:.0f} s for "
