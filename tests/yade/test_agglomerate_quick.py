@@ -6,7 +6,9 @@
 # before the carved pair was relaxed to 1e-12 of the energy scale), and the meso-particle pair in
 # YADE against the closed form (1e-4); the wall cycles' turning points; a drawn approach direction:
 # the placement against brute-force surface distances along it, the momentum in all three
-# components, e = e_speed cos(deflection); the sticking speed of the tension taken as adhesion.
+# components, e = e_speed cos(deflection); the sticking speed of the tension taken as adhesion; the
+# library's agglomerate calls (`bulk.agglomerate`, `bulk.pair_cycles`, `bulk.collisions`) refuse bad
+# arguments, naming them, and leave the scene as it was.
 import json
 import math
 import os
@@ -14,11 +16,12 @@ import tempfile
 
 import numpy as np
 from yade import O, Vector3
+from mesocontact.bulk import agglomerate
+from mesocontact.bulk.collisions import Collision
 from mesostudies.agglomerate import compare, make, study
-from mesostudies.tablet import sample
+from mesostudies.agglomerate.primaries import D0, SCALES
 from harness import check, finish
 
-D0 = sample.D0
 out = tempfile.mkdtemp(prefix="agglomerate-")
 study.main(["all", "--quick", "--out", out])
 d = os.path.join(out, "quick")
@@ -42,12 +45,12 @@ for k, (ids, a) in enumerate(zip(info["members"], info["agglomerates"])):
 
 O.step()  # the loaded state's contact geometry
 for k, ids in enumerate(info["members"]):
-    check(len(make.clusters(ids)) == 1, f"agglomerate {k}: one connected cluster")
+    check(len(agglomerate.clusters(ids)) == 1, f"agglomerate {k}: one connected cluster")
 
 # 2. move_to_gap: the surfaces (not the outer spheres) are gap apart along x: brute force over all pairs.
 A, B = info["members"]
 gap = 0.05 * D0
-make.move_to_gap(A, B, gap)
+agglomerate.move_to_gap(A, B, gap)
 pa = np.array([list(O.bodies[i].state.pos) for i in A])
 pb = np.array([list(O.bodies[i].state.pos) for i in B])
 ra = np.array([O.bodies[i].shape.radius for i in A])
@@ -66,10 +69,10 @@ check(surface_gap(0.0) > 0 and abs(surface_gap(gap)) < 1e-9 * D0,
       f"gap {surface_gap(0.0) / D0:.4f} d0 apart, {surface_gap(gap) / D0:.2e} d0 after moving {gap / D0} d0")
 
 # 2b. Another approach direction: placed beside the first along it, then gap apart along it.
-n = np.array(make.directions(3, study.DIRECTION_SEED)[2])
-check(abs(np.linalg.norm(n) - 1) < 1e-15, "make.directions: unit vectors")
-make.place_along(A, B, tuple(n), [a["radius"] for a in info["agglomerates"]])
-make.move_to_gap(A, B, gap, tuple(n))
+n = np.array(agglomerate.directions(3, study.DIRECTION_SEED)[2])
+check(abs(np.linalg.norm(n) - 1) < 1e-15, "agglomerate.directions: unit vectors")
+agglomerate.place_along(A, B, tuple(n), [a["radius"] for a in info["agglomerates"]], protocol=SCALES)
+agglomerate.move_to_gap(A, B, gap, tuple(n))
 pa = np.array([list(O.bodies[i].state.pos) for i in A])
 pb = np.array([list(O.bodies[i].state.pos) for i in B])
 
@@ -143,13 +146,13 @@ check(abs(vis["e_at_fit"] - summary["e_agglomerate"][k0]) < 1e-3 and vis["e_meso
 for v, em, et in zip(summary["speeds"], summary["e_meso"], summary["e_theory"]):
     check(abs(em - et) < 1e-4, f"meso pair at {v} m/s: e = {em:.6f} (YADE) against {et:.6f} (closed form)")
 info = make.ensure(d, quick=True, progress=False)
-from mesostudies.agglomerate import collide  # noqa: E402
-c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]])
+c = Collision(info["members"], [g["radius"] for g in info["agglomerates"]], protocol=SCALES)
 masses = [sum(O.bodies[i].state.mass for i in m) for m in info["members"]]
 v = 1.0 / 1e3
 r = c.run(v, progress=False)
 p = sum(O.bodies[i].state.mass * O.bodies[i].state.vel[0] for m in info["members"] for i in m)
-s = 1.0 if make.centre_of_mass(info["members"][1])[0][0] > make.centre_of_mass(info["members"][0])[0][0] else -1.0
+s = 1.0 if agglomerate.centre_of_mass(info["members"][1])[0][0] > agglomerate.centre_of_mass(info["members"][0])[0][0] \
+    else -1.0
 p0 = s * 0.5 * v * (masses[0] - masses[1])
 check(abs(p - p0) < 1e-9 * sum(masses) * v, "collision: momentum along x kept (no external force)",
       f"{p:.6e} against {p0:.6e}")
@@ -164,8 +167,8 @@ check(abs(sum(shares.values()) - 1) < 1e-3,
 # 6. A collision along a drawn direction: momentum kept in all three components; e, the speed ratio
 # and the deflection agree (e = e_speed cos(deflection)).
 info = make.ensure(d, quick=True, progress=False)
-n = make.directions(2, study.DIRECTION_SEED)[1]
-c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=n)
+n = agglomerate.directions(2, study.DIRECTION_SEED)[1]
+c = Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=n, protocol=SCALES)
 r = c.run(v, progress=False)
 p = sum((O.bodies[i].state.vel * O.bodies[i].state.mass for m in info["members"] for i in m), Vector3(0, 0, 0))
 p0 = Vector3(*n) * (0.5 * v * (masses[0] - masses[1]))
@@ -186,6 +189,33 @@ for ad in summary["adhesion"]:
     vs = ad["sticks_below_m_s"]
     check(e_at(0.99 * vs) == 0 and e_at(1.01 * vs) > 0,
           f"after {ad['after_d0']} d0: the pair sticks below {vs:.3g} m/s and rebounds above")
+
+# 8. The library's agglomerate calls refuse bad arguments, naming them, before any work: the scene unchanged.
+from mesocontact.bulk import pair_cycles  # noqa: E402
+info = make.ensure(d, quick=True, progress=False)
+A, B = info["members"]
+radii = [g["radius"] for g in info["agglomerates"]]
+before = (len(O.engines), [tuple(O.bodies[i].state.pos) for i in A + B])
+bad = (("ids", agglomerate.centre_of_mass, ([],), {}), ("ids", agglomerate.clusters, ([10 ** 9],), {}),
+       ("axis", agglomerate.move_to_gap, (A, B, 0.0), {"axis": (0, 0, 0)}),
+       ("gap", agglomerate.move_to_gap, (A, B, -1.0), {}), ("count", agglomerate.directions, (0,), {}),
+       ("radii", agglomerate.place_along, (A, B, (1, 0, 0), [1.0]), {"protocol": SCALES}),
+       ("radius", agglomerate.carve, ([(0, 0, 0)], math.nan), {}),
+       ("tol_ke", agglomerate.relax, ([A, B],), {"tol_ke": -1.0, "protocol": SCALES}),
+       ("protocol", agglomerate.describe, (A,), {"protocol": "appendixF"}),
+       ("grip", pair_cycles.Pair, ([A, B], radii), {"grip": 1.5, "protocol": SCALES}),
+       ("material", pair_cycles.Wall, ([A, B], radii[0]), {"material": "glass", "protocol": SCALES}),
+       ("members", Collision, ([A], radii), {"protocol": SCALES}),
+       ("axis", Collision, ([A, B], radii), {"axis": (math.inf, 0, 0), "protocol": SCALES}))
+for name, call, args, kw in bad:
+    try:
+        call(*args, **kw)
+        refused = "no exception"
+    except (TypeError, ValueError) as e:
+        refused = str(e)
+    check(refused.startswith(name), f"{call.__name__}: a bad {name} refused, naming it", refused)
+check(before == (len(O.engines), [tuple(O.bodies[i].state.pos) for i in A + B]),
+      "the refused calls left the scene as it was")
 
 for f in ("cycles.png", "wall-cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
     check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")

@@ -108,8 +108,8 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
     """What the cycles' tension does to collisions if the law takes it as its non-contact force
     ('jumpIn': -fa throughout a contact, the tail -kca delta - fa after it): fa = -plateau (a
     tension plateau of cycle_measures [study units]), and the shortest tail the cycles allow, down
-    to where they turned (``below`` d0 below the touch ``touch`` [mm], drive.BELOW_TOUCH) measured from the fitted
-    law's own contact end (delta = shift), kca = fa/that. A longer tail only holds on harder.
+    to where they turned (``below`` d0 below the touch ``touch`` [mm], bulk.pair_cycles.BELOW_TOUCH)
+    measured from the fitted law's own contact end (delta = shift), kca = fa/that. A longer tail only holds on harder.
     Returns fa [N], kca [N/m], the closed form's e at ``speeds`` [mm/us], the speed [m/s] below
     which the pair sticks (0 if it rebounds at 1e-6 m/s, inf if it sticks at 1e4 m/s), and the
     smallest fa on the same tail that sticks it at the slowest speed (fa itself if that one does

@@ -11,10 +11,12 @@ import time
 from yade import O
 
 from mesocontact import outputs
+from mesocontact.bulk import agglomerate, pair_cycles
+from mesocontact.bulk.collisions import Collision
 from mesocontact.jobs import Job, Registry
 from mesocontact.outputs import read_csv
-from . import collide, compare, drive, make, plots, report
-from .primaries import D0, KP
+from . import compare, make, plots, report
+from .primaries import D0, KP, SCALES
 
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
 SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0, 160.0, 320.0), True: (0.1, 1.0, 10.0)}  # m/s
@@ -35,11 +37,11 @@ def _parser():
     p.add_argument("--factors", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
                    help=f"cycles: the cap speed's divisors (default 1,{SLOWER}; --quick: 1), one run each; "
                         "separate jobs may run them side by side")
-    p.add_argument("--wall-material", choices=sorted(drive.WALL_MATERIALS), default="own",
+    p.add_argument("--wall-material", choices=sorted(pair_cycles.WALL_MATERIALS), default="own",
                    help="wall: the primaries' own material (default) or the tablet's smooth mould "
                         "(no adhesion, no friction)")
     p.add_argument("--direction", type=int, default=0,
-                   help="collide: the approach direction's index in make.directions (0: x, as carved; "
+                   help="collide: the approach direction's index in agglomerate.directions (0: x, as carved; "
                         "k > 0: drawn on the sphere, seed DIRECTION_SEED)")
     p.add_argument("--amplitudes", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
                    help="cycle amplitudes beyond the first touch [d0], comma-separated")
@@ -85,8 +87,8 @@ def cycles(a, wall=False):
         print(f"{'wall ' if wall else ''}cycles at {speed * 1e3:g} m/s per cap", flush=True)
         t0, it0 = time.time(), O.iter
         radii = [g["radius"] for g in info["agglomerates"]]
-        pair = (drive.Wall(info["members"], radii[0], material=a.wall_material) if wall
-                else drive.Pair(info["members"], radii))
+        pair = (pair_cycles.Wall(info["members"], radii[0], material=a.wall_material, protocol=SCALES) if wall
+                else pair_cycles.Pair(info["members"], radii, protocol=SCALES))
         rows = pair.cycles(a.amplitudes or AMPLITUDES[a.quick], speed, final=factor == 1)  # slower runs: the rate check
         name = f"{_wall_prefix(a.wall_material) if wall else ''}cycles-v{speed * 1e3:g}"
         outputs.write_atomic(os.path.join(_dir(a), name + ".csv"),
@@ -97,7 +99,7 @@ def cycles(a, wall=False):
                      "units": "delta mm, F mg mm/us^2 (1e3 N)"}
         if wall:
             out[name]["against"] = (f"a flat wall, material {a.wall_material!r} "
-                                    f"({drive.WALL_MATERIALS[a.wall_material]}), agglomerate 0")
+                                    f"({pair_cycles.WALL_MATERIALS[a.wall_material]}), agglomerate 0")
         _write(os.path.join(_dir(a), name + ".json"), out[name])
     return out
 
@@ -122,14 +124,16 @@ def collision_file(direction):
 
 
 def collisions(a):
-    axis = make.directions(a.direction + 1, DIRECTION_SEED)[a.direction]
+    axis = agglomerate.directions(a.direction + 1, DIRECTION_SEED)[a.direction]
     tag = "" if a.direction == 0 else f"-dir{a.direction}"
     out = []
     for v in a.speeds or SPEEDS[a.quick]:
         info = make.ensure(_dir(a), quick=a.quick)
-        c = collide.Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=axis)
+        c = Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=axis, protocol=SCALES)
         print(f"collision at {v:g} m/s{f', direction {a.direction} {axis}' if a.direction else ''}", flush=True)
-        r = c.run(v / 1e3, snapshot=os.path.join(_dir(a), f"collision{tag}-v{v:g}.png"))
+        v_rel = v / 1e3  # mm/us
+        r = c.run(v_rel, snapshot=os.path.join(_dir(a), f"collision{tag}-v{v:g}.png"), unit="mm",
+                  speed_label=f"{v_rel * 1e3:g} m/s")
         outputs.write_atomic(os.path.join(_dir(a), f"collision{tag}-v{v:g}.csv"),
                              "iter,time_us,delta_mm,v0_mm_us,v1_mm_us,F_normal\n"
                              + "".join(",".join(repr(x) for x in row) + "\n" for row in c.rows))
@@ -247,7 +251,8 @@ def compare_job(a):
         if c:
             adhesion.append(dict(c, after_d0=amp))
     pair_turns = dict(zip(cycles[fitted_run]["amplitudes_d0"], cycles[fitted_run]["turn_forces"]))
-    walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m, pair_turns) for m in drive.WALL_MATERIALS}
+    walls = {m: _wall(d, info, params, runs[fitted_run]["touch_delta_mm"], m, pair_turns)
+             for m in pair_cycles.WALL_MATERIALS}
     summary = {"fitted_run": fitted_run, "fit_widest_run": also,
                "cycles": cycles,
                "rate_check": compare.rate_check(measures),
@@ -294,16 +299,16 @@ def everything(a):
 
 
 # The study's jobs, in the order --help lists them and 'all' runs them; each runs with the parsed
-# options. This module is the package's top: it imports the modules the jobs run (make, drive,
-# collide, compare, plots, report), none of them imports it. A new job is a function (here or in a
-# module of its own) and one record here.
+# options. This module is the package's top: it imports the modules the jobs run (make, compare,
+# plots, report, and the library's bulk.pair_cycles and bulk.collisions), none of them imports it.
+# A new job is a function (here or in a module of its own) and one record here.
 JOBS = Registry([
     Job("prepare", prepare, "the sintered block and the two carved agglomerates (make.ensure)."),
-    Job("cycles", cycles, "their F(delta) cycles at the speed and 4x slower (drive.Pair.cycles)."),
+    Job("cycles", cycles, "their F(delta) cycles at the speed and 4x slower (bulk.pair_cycles.Pair.cycles)."),
     Job("wall", lambda a: cycles(a, wall=True),
-        "the first agglomerate's cycles against a flat wall, the same way (drive.Wall)."),
-    Job("collide", collisions, "head-on collisions at each speed (collide.Collision); --direction K: approach along "
-        "the K-th direction of make.directions (0: x, the pair as carved)."),
+        "the first agglomerate's cycles against a flat wall, the same way (bulk.pair_cycles.Wall)."),
+    Job("collide", collisions, "head-on collisions at each speed (bulk.collisions.Collision); --direction K: approach "
+        "along the K-th direction of bulk.agglomerate.directions (0: x, the pair as carved)."),
     Job("compare", compare_job, "the law fitted to the slowest cycles (and to the run with the most amplitudes), the "
         "meso-particle pair and the closed form at the same speeds: agglomerate-vs-meso.json, cycles.png, "
         "restitution.png."),

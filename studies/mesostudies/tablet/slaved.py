@@ -524,9 +524,9 @@ def _title(sample_name, by_name):
     return sample_name + (f" (through {grips:g}-d0 grips)" if grips else " (through the walls)")
 
 
-def _force_axes(a, sample_name, by_name, affine_csv):
-    """Panel (a): the static estimate, the committed one (tested), each run's F_pp, the free pull's
-    wall force and the slaved pulls' normal part of F_pp."""
+def _force_axes(a, sample_name, by_name, affine_csv, letter="a"):
+    """The force panel, lettered ``letter`` ((a) in ``plot``): the static estimate, the committed one
+    (tested), each run's F_pp, the free pull's wall force and the slaved pulls' normal part of F_pp."""
     static = next(iter(by_name.values()))["static"]
     a.plot(static["Dx"], -static["F_over_kp_d0"], color="C0", ls="--", lw=2.2, label="static affine estimate")
     if affine_csv and sample_name == "tested" and os.path.exists(affine_csv):
@@ -546,21 +546,24 @@ def _force_axes(a, sample_name, by_name, affine_csv):
     a.axhline(0, color="0.6", lw=0.6)
     a.set_xlabel("Dx = (L - L0)/d0")
     a.set_ylabel("tension -F/(kp d0)")
-    a.set_title(f"(a) {_title(sample_name, by_name)}: force", fontsize=10)
+    a.set_title(f"({letter}) {_title(sample_name, by_name)}: force", fontsize=10)
     a.legend(fontsize=7)
 
 
 def plot_force(runs, png, affine_csv=None):
-    """Only the force panels (a) of ``plot``, one per sample."""
+    """Only the force panels (a) of ``plot``, one per sample, lettered (a), (b), ... in the samples'
+    order. Returns the panels' titles."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, len(runs), figsize=(6 * len(runs), 4.6), squeeze=False)
-    for a, sample_name in zip(axes[0], runs):
-        _force_axes(a, sample_name, runs[sample_name], affine_csv)
+    for k, (a, sample_name) in enumerate(zip(axes[0], runs)):
+        _force_axes(a, sample_name, runs[sample_name], affine_csv, letter=chr(ord("a") + k))
+    titles = [a.get_title() for a in axes[0]]
     fig.tight_layout()
     fig.savefig(png, dpi=120)
     plt.close(fig)
+    return titles
 
 
 def plot(runs, png, affine_csv=None):

@@ -1,9 +1,10 @@
-"""Head-on collisions of the two agglomerates (inside ``yade``).
+"""Collisions of two agglomerates (inside ``yade``).
 
-From the carved, relaxed pair (make.ensure) the second agglomerate is moved along the approach
+From two agglomerates at rest (lists of body ids, e.g. carved and relaxed with
+``bulk.agglomerate.carve_pair`` and ``relax``) the second agglomerate is moved along the approach
 direction (``axis``, default x: the pair as carved; another direction first places the second
-agglomerate beside the first along it, make.place_along, so that other faces meet) until its
-surface lies ``gap`` d0 from the first's (make.move_to_gap), and each is given half the relative
+agglomerate beside the first along it, agglomerate.place_along, so that other faces meet) until its
+surface lies ``gap`` d0 from the first's (agglomerate.move_to_gap), and each is given half the relative
 speed towards the other, every particle the same velocity and no spin. There is no background drag:
 a collision's losses are the contacts' own (viscous, plastic, and what breaks). The run ends when no
 contact has joined the two for ``quiet`` of the touch's duration so far and the smallest gap between
@@ -24,22 +25,33 @@ and frictional, and the frictional impulse over the normal one); the mass
 that broke off (everything but the two largest fragments, or the largest when stuck) over the
 total; the contact time, from the first to the last step a contact joined the two agglomerates;
 the press, the largest meso-overlap beyond the one at the first contact [d0], and the largest
-normal force between them along the approach [study units]. ``rows``: (iter, time, delta, the
-two velocities along the approach, that normal force) every ``every`` steps.
+normal force between them along the approach (the scene's units). ``rows``: (iter, time, delta, the
+two velocities along the approach, that normal force) every ``every`` steps. Lengths are
+reported over the Protocol's d0 and times scaled by a primary pair's contact time from its kp (the
+``protocol`` argument, else the scene's)::
+
+    from mesocontact.bulk import collisions
+    c = collisions.Collision(members, radii, axis=(1, 0, 0))
+    out = c.run(1e-3, snapshot="collision.png")     # relative speed, the scene's units
+    print(out["e"], out["broken_mass_fraction"], out["energy_over_impact"])
 """
 import math
+import numbers
 import time
 
-from yade import O
-from yade import Vector3
-from yade import wrapper as _w
+try:
+    from yade import O
+    from yade import Vector3
+    from yade import wrapper as _w
+except ImportError as _exc:  # pragma: no cover - outside yade
+    raise ImportError("mesocontact.bulk.collisions needs YADE: run it inside `yade`") from _exc
 
-from mesocontact import loop as _loop
-from mesocontact.bulk import pictures as _pictures
-from mesocontact.bulk import sample
-from mesocontact.bulk.uniaxial import before_newton as _before_newton
-from . import make
-from .primaries import D0, KP
+from .. import checks as _checks
+from .. import loop as _loop
+from . import agglomerate
+from . import pictures as _pictures
+from . import sample
+from .uniaxial import before_newton
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
 PARTING = 4  # checks over which the surface gap must grow before a run ends (the surfaces' vibration is noise)
@@ -47,31 +59,47 @@ STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact
 
 
 class Collision:
-    def __init__(self, members, radii, every=20, axis=make.X_AXIS):
+    """Two agglomerates (``members``, radii R) about to collide along ``axis``; ``run`` one collision."""
+
+    def __init__(self, members, radii, every=20, axis=agglomerate.X_AXIS, protocol=None):
+        if isinstance(every, bool) or not isinstance(every, numbers.Integral) or every < 1:
+            raise ValueError(f"every = {every!r} is invalid: an integer >= 1")
+        if isinstance(members, (str, bytes, dict)) or not hasattr(members, "__len__") or len(members) != 2:
+            raise ValueError(f"members = {members!r} is invalid: two agglomerates (lists of body ids)")
+        if isinstance(radii, (str, bytes, dict)) or not hasattr(radii, "__len__") or len(radii) != 2:
+            raise ValueError(f"radii = {radii!r} is invalid: two radii")
+        for k, r in enumerate(radii):
+            _checks.positive(f"radii[{k}]", r)
+        agglomerate.axis_frame(axis)  # refuses a bad axis
+        for m in members:
+            agglomerate.centre_of_mass(m)  # refuses bad ids
+        if set(members[0]) & set(members[1]):
+            raise ValueError("members is invalid: the two agglomerates share particles")
+        self.protocol = sample.resolve(protocol)
         self.members = [list(m) for m in members]
         self.radii = list(radii)
-        self.n = Vector3(*make.axis_frame(axis)[0])
-        if tuple(axis) != make.X_AXIS:
-            make.place_along(self.members[0], self.members[1], axis, self.radii)
+        self.n = Vector3(*agglomerate.axis_frame(axis)[0])
+        if tuple(axis) != agglomerate.X_AXIS:
+            agglomerate.place_along(self.members[0], self.members[1], axis, self.radii, protocol=self.protocol)
         self.owner = {i: k for k, m in enumerate(self.members) for i in m}
         self.every = every
         self.first = self.last = None
         self.normal_impulse = Vector3(0, 0, 0)
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
-        _before_newton([_loop.runner(self._watch, every, "agg_watch")])
+        before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
 
     def delta(self):
-        return make.meso_overlap(self.members, self.radii)
+        return agglomerate.meso_overlap(self.members, self.radii)
 
     def joined(self):
-        return make.contacts_between(*self.members) > 0
+        return agglomerate.contacts_between(*self.members) > 0
 
     def _normal_force(self):
         """(contacts in overlap joining the two, the sum of their normal forces on the second
         agglomerate's particles)."""
         count, f = 0, Vector3(0, 0, 0)
-        for inter, on_id2 in make.joining(*self.members):
+        for inter, on_id2 in agglomerate.joining(*self.members):
             count += 1
             f += inter.phys.normalForce if on_id2 else -inter.phys.normalForce  # Law2: +normalForce acts on id2
         return count, f
@@ -84,16 +112,32 @@ class Collision:
             if self.first is None:
                 self.first, self.touch_delta = O.time, delta
             self.last = O.time
-        v = [make.velocity(m).dot(self.n) for m in self.members]
+        v = [agglomerate.velocity(m).dot(self.n) for m in self.members]
         self.rows.append((O.iter, O.time, delta, v[0], v[1], f.dot(self.n) * self._side if count else 0.0))
 
-    def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None):
-        """One collision at relative speed v_rel [mm/us]; returns its outcome (a dict). The gap is
-        at most what the pair crosses in APPROACH us. ``snapshot``: a PNG of the end state."""
-        d0 = D0
-        c = [make.centre_of_mass(m)[0].dot(self.n) for m in self.members]
+    def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None, unit="",
+            speed_label=None):
+        """One collision at relative speed v_rel (the scene's units); returns its outcome (a dict).
+        The surfaces start ``gap`` d0 apart, at most what the pair crosses in APPROACH time units;
+        ``quiet``: how long no contact must have joined them, over the touch's duration so far;
+        ``max_time``: the run's end in any case (default: the approach and STUCK_AFTER primary
+        contact times). ``snapshot``: a PNG of the end state (bulk.pictures.png; ``unit``: the
+        length unit of its axes), titled with ``speed_label`` (default 'v_rel = <v_rel>'), e and
+        the mass broken off."""
+        _checks.positive("v_rel", v_rel)
+        _checks.positive("gap", gap)
+        _checks.nonnegative("quiet", quiet)
+        if max_time is not None:
+            _checks.positive("max_time", max_time)
+        for name, value in (("snapshot", snapshot), ("speed_label", speed_label)):
+            if value is not None and not isinstance(value, str):
+                raise TypeError(f"{name} = {value!r} is invalid: a string (or None)")
+        if not isinstance(unit, str):
+            raise TypeError(f"unit = {unit!r} is invalid: a string")
+        d0 = self.protocol.d0
+        c = [agglomerate.centre_of_mass(m)[0].dot(self.n) for m in self.members]
         side = self._side = 1.0 if c[1] > c[0] else -1.0
-        make.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH), tuple(self.n))
+        agglomerate.move_to_gap(self.members[0], self.members[1], min(gap * d0, v_rel * APPROACH), tuple(self.n))
         for k, m in enumerate(self.members):
             v = self.n * (side * (0.5 if k == 0 else -0.5) * v_rel)
             for i in m:
@@ -128,8 +172,9 @@ class Collision:
         out = self._outcome(v_rel, side, start_time, time.time() - t0)
         out["energy_over_impact"] = self._energy_shares(ke0)
         if snapshot:
-            _pictures.png(snapshot, d0=D0, unit="mm",
-                          title=f"{v_rel * 1e3:g} m/s: e = {out['e']:.3f}, "
+            label = f"v_rel = {v_rel:g}" if speed_label is None else speed_label
+            _pictures.png(snapshot, d0=d0, unit=unit,
+                          title=f"{label}: e = {out['e']:.3f}, "
                                 f"broken off {out['broken_mass_fraction']:.3f}")
         return out
 
@@ -141,7 +186,7 @@ class Collision:
         bulk = 0.0
         for m in self.members:
             mass = sum(O.bodies[i].state.mass for i in m)
-            bulk += 0.5 * mass * make.velocity(m).squaredNorm()
+            bulk += 0.5 * mass * agglomerate.velocity(m).squaredNorm()
         shares = {"centres_of_mass": bulk / ke0, "internal_kinetic": (sample.kinetic_energy() - bulk) / ke0}
         shares.update({k: (v - self._energy0.get(k, 0.0)) / ke0 for k, v in O.energy.items()
                        if k not in ("kinetic", "gravWork")})  # changes since the impact's start
@@ -150,12 +195,12 @@ class Collision:
     def _t_scale(self):
         """A primary pair's contact time pi sqrt(m/(2 kp)), the scale of the waits."""
         m = min(O.bodies[i].state.mass for m in self.members for i in m)
-        return 3.1416 * (0.5 * m / KP) ** 0.5
+        return 3.1416 * (0.5 * m / self.protocol.kp) ** 0.5
 
     def _parted(self):
         """The two largest fragments are separate clusters, each holding at least half of one
         agglomerate's particles (one from each), moving apart."""
-        parts = make.clusters([i for m in self.members for i in m])[:2]
+        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
         if len(parts) < 2:
             return False
         own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
@@ -178,7 +223,8 @@ class Collision:
     def _receding(a, b):
         """The centres of mass of ``a`` and ``b`` move apart (along the line joining them: an
         oblique rebound, surfaces tilted to the approach, ends too)."""
-        return (make.velocity(b) - make.velocity(a)).dot(make.centre_of_mass(b)[0] - make.centre_of_mass(a)[0]) > 0
+        return (agglomerate.velocity(b) - agglomerate.velocity(a)).dot(
+            agglomerate.centre_of_mass(b)[0] - agglomerate.centre_of_mass(a)[0]) > 0
 
     def _impulse_measures(self, dv, side, v_rel):
         """e along the impulse the second agglomerate received (its particles' momentum change: the
@@ -203,14 +249,14 @@ class Collision:
 
     def _outcome(self, v_rel, side, start_time, seconds):
         ids = [i for m in self.members for i in m]
-        parts = make.clusters(ids)
+        parts = agglomerate.clusters(ids)
         mass = {i: O.bodies[i].state.mass for i in ids}
         total = sum(mass.values())
         frag = []
         for p in parts[:2]:
             share = [sum(mass[i] for i in p if self.owner[i] == k) for k in (0, 1)]
             frag.append({"ids": p, "mass": sum(share), "from": 0 if share[0] >= share[1] else 1,
-                         "mixed": min(share) / sum(share), "v": make.velocity(p)})
+                         "mixed": min(share) / sum(share), "v": agglomerate.velocity(p)})
         stuck = len(frag) < 2 or frag[0]["from"] == frag[1]["from"] or frag[0]["mixed"] > 0.25
         e_speed, deflection = 0.0, None
         impulse = dict.fromkeys(("e_impulse", "impulse_angle_deg", "e_normal", "tilt_deg",
@@ -232,5 +278,6 @@ class Collision:
                 "fragments": len(parts), "largest": [f["mass"] / total for f in frag],
                 "contact_time": (self.last - self.first) if self.first is not None else None,
                 "touched": self.first is not None, "time": O.time - start_time, "wall_clock_s": seconds,
-                "press_d0": (max(r[2] for r in self.rows) - self.touch_delta) / D0 if self.first is not None else None,
+                "press_d0": ((max(r[2] for r in self.rows) - self.touch_delta) / self.protocol.d0
+                             if self.first is not None else None),
                 "largest_normal_force": max(r[5] for r in self.rows)}
