@@ -158,7 +158,7 @@ def statements(d):
             "cycle 2's peak over the first: " + ", ".join(f"{a:g}: {second[a]:.2f}" for a in amps["tension"]),
             "tension, slowest run; weaker re-loading: below 1 beyond the smallest amplitude, still attached: > 0",
             "✓" if all(0 < second[a] < 1 for a in amps["tension"]) else "✗")
-        ret = {a: _retrace(t[a][1]) for a in amps["tension"]}
+        ret = {a: retrace(t[a][1]) for a in amps["tension"]}
         met = [ret[a][0] <= 0.05 and ret[a][1] <= 0.05 for a in small]
         add("repeated cyclic loading remains on the same branch with positive slope (elastic)",
             ", ".join(f"{a:g}: {pct(ret[a][0])} / {pct(ret[a][1])}" for a in small),
@@ -175,9 +175,9 @@ def statements(d):
             "✓" if all(far[a] < 0 for a in far) else "✗")
         ratios = {}
         for k in sorted(k for k in runs if k[0] == "tension" and k[1] == 0.2):
-            lo = [_retrace(runs[("tension", a, k[2])][1])[1] for a in small if ("tension", a, k[2]) in runs]
+            lo = [retrace(runs[("tension", a, k[2])][1])[1] for a in small if ("tension", a, k[2]) in runs]
             if lo:
-                ratios[k[2]] = _retrace(runs[k][1])[1] / max(lo)
+                ratios[k[2]] = retrace(runs[k][1])[1] / max(lo)
         both = list(ratios.values())
         add("for the largest amplitude (0.2) the behaviour is not perfectly elastic, first plastic effects",
             "drift of cycles 2–4 at 0.2 over the smaller amplitudes' largest: "
@@ -212,7 +212,7 @@ def statements(d):
             "detachment (about 0.05 d0): much higher: > 20 x", "✓" if lc and lc > 1.0 else "–")
     if t and 0.2 in t:
         keys = sorted((k for k in runs if k[0] == "tension" and k[1] >= 0.2), key=lambda k: (k[1], -k[2]))
-        got = {k: _retrace(runs[k][1]) for k in keys}
+        got = {k: retrace(runs[k][1]) for k in keys}
         ok = {k: max(v) <= 0.05 for k, v in got.items()}
         add("the reversible, elastic un-/re-loading stretches to four times phi_f d0 and even higher",
             "cycles 2–4 peaks' range over the first peak / over their mean: "
@@ -307,7 +307,7 @@ def statements(d):
                  + " d0, without a kink above 0.1; by the previous statement's criterion 0.1 is plastic already. No "
                  "reason found (not explained by the experiments so far)."))
         drift = abs(c[0.2][1][-1]["set"] - c[0.2][1][1]["set"])  # a fraction of the amplitude
-        rc = _retrace(c[0.2][1])
+        rc = retrace(c[0.2][1])
         add("unloading and re-loading on the same branch: a new elastic branch (Dx = 0.2)",
             f"cycles 2–4 peaks' range {pct(rc[0])} of the first peak / {pct(rc[1])} of their mean; loop of "
             f"cycles 2–4 {pct(rv[0.2])}; set changes by {drift * 0.2:.2g} d0 ({pct(drift)} of the "
@@ -351,7 +351,7 @@ def statements(d):
     return out
 
 
-def _retrace(cycles):
+def retrace(cycles):
     """measures.retrace of a run's cycle measures."""
     return measures.retrace([c["peak"] for c in cycles])
 
@@ -364,7 +364,7 @@ def _drift(runs, amps):
         for k in sorted(k for k in runs if k[:2] == ("tension", a)):
             later = [c["peak"] for c in runs[k][1][1:]]
             parts.append(f"at {a:g}, {k[2]:g} t_w: {', '.join(f'{x:.4f}' for x in later)} "
-                         f"({pct(_retrace(runs[k][1])[1], '.3g')})")
+                         f"({pct(retrace(runs[k][1])[1], '.3g')})")
     return ("Cycles 2–4 peaks (range over their mean): " + "; ".join(parts) + ". ") if parts else ""
 
 

@@ -1,0 +1,91 @@
+"""The statements of Appendix F for every finished repeat (issue 60 item 2): per perturbation factor an
+overlay of campaigns/tablet/chosen in which the tested sample's P480 tension run at each repeated
+amplitude is replaced by the repeat's (repeat-x<f>-tension-Dx<a>-P480), then
+mesostudies.tablet.statements.statements(overlay). Prints the chosen campaign's verdicts and each
+factor's, for the statements named (default 10 11 12 15; 'all' for every one), and writes
+verdicts.json into the repeats' folder (REPEATS, default results/repeats; the second lane's runs in
+REPEATS + "2" are read too). Run from the repository:
+
+    PYTHONPATH=py:studies python3 studies/scripts/tablet_repeats.py [10 12 15 | all]
+"""
+import glob
+import json
+import os
+import re
+import shutil
+import sys
+
+from mesostudies.tablet import statements as S
+
+CHOSEN = os.path.abspath("campaigns/tablet/chosen")
+HERE = os.path.abspath(os.environ.get("REPEATS", "results/repeats"))
+OVERLAY = os.path.join(HERE, "overlay")
+
+
+def finished():
+    """{factor: {amplitude: run directory}} of the complete repeats (a bundle holds its JSON)."""
+    out = {}
+    for js in glob.glob(os.path.join(HERE, "runs", "repeat-x*-tension-Dx*-P480", "*.json")) + \
+            glob.glob(os.path.join(HERE + "2", "runs", "repeat-x*-tension-Dx*-P480", "*.json")):  # the second lane
+        m = re.match(r"repeat-x([0-9.]+)-tension-Dx([0-9.]+)-P480\.json$", os.path.basename(js))
+        if m:
+            out.setdefault(m.group(1), {})[float(m.group(2))] = os.path.dirname(js)
+    return out
+
+
+def overlay(factor, runs):
+    """campaigns/tablet/chosen with the repeats' runs in place of its P480 tension runs at their amplitudes."""
+    d = os.path.join(OVERLAY, "x" + factor)
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    for side in ("factors", "branch"):  # statements reads ../factors, ../branch
+        link = os.path.join(OVERLAY, side)
+        if not os.path.lexists(link):
+            os.symlink(os.path.join(CHOSEN, "..", side), link)
+    replaced = {f"tension-Dx{a:g}-P480{e}" for a in runs for e in (".json", ".csv", "-branches.csv")}
+    for f in os.listdir(CHOSEN):
+        if f not in replaced:
+            os.symlink(os.path.join(CHOSEN, f), os.path.join(d, f))
+    for where in runs.values():
+        for f in os.listdir(where):
+            if f == "MANIFEST.json":
+                continue
+            os.symlink(os.path.join(where, f), os.path.join(d, re.sub(r"^repeat-x[0-9.]+-", "", f)))
+    return d
+
+
+def main(argv):
+    numbers = None if argv == ["all"] else [int(x) for x in argv] or [10, 11, 12, 15]
+    table = {"chosen": {"amplitudes": [0.1, 0.2], "statements": S.statements(CHOSEN)}}
+    for factor, runs in sorted(finished().items(), key=lambda kv: abs(float(kv[0]) - 1)):
+        table["x" + factor] = {"amplitudes": sorted(runs), "statements": S.statements(overlay(factor, runs))}
+    for name, row in table.items():
+        print(f"== {name} (repeated amplitudes {row['amplitudes']})")
+        for s in row["statements"]:
+            if numbers is None or s["n"] in numbers:
+                print(f"  #{s['n']} {s['verdict']}  {s['project']}")
+    # The numbers the P480 runs decide, per run set: the retrace (range of cycles 2-4 peaks over the first
+    # peak / over their mean; one branch: both <= 5 %) at 0.1 and 0.2 (#15's 480 t_w entry; #10 itself reads
+    # the 1920 t_w run), and #12's 480 t_w ratio (0.2's over the smaller amplitudes' largest; > 1.5).
+    print("== P480 numbers: retrace 0.1 (first/mean), retrace 0.2 (first/mean), #12 ratio at 480, "
+          "cycle-2 peaks 0.1/0.2")
+    spread = {}
+    for name, row in table.items():
+        d = CHOSEN if name == "chosen" else os.path.join(OVERLAY, name)
+        runs = S.runs_of(d)
+        r = {a: S.retrace(runs[("tension", a, 480.0)][1]) for a in (0.025, 0.05, 0.1, 0.2)}
+        ratio = r[0.2][1] / max(r[a][1] for a in (0.025, 0.05, 0.1))
+        c2 = [runs[("tension", a, 480.0)][1][1]["peak"] for a in (0.1, 0.2)]
+        row["p480"] = {"retrace_0.1": r[0.1], "retrace_0.2": r[0.2], "ratio_12": ratio, "cycle2_peak": c2}
+        print(f"  {name:12s} {100 * r[0.1][0]:5.2f}/{100 * r[0.1][1]:5.2f} %  "
+              f"{100 * r[0.2][0]:5.2f}/{100 * r[0.2][1]:5.2f} %  {ratio:5.2f}  {c2[0]:.4f}/{c2[1]:.4f}")
+        for k, v in (("retrace_0.1_mean", r[0.1][1]), ("retrace_0.2_mean", r[0.2][1]), ("ratio_12", ratio)):
+            spread.setdefault(k, []).append(v)
+    for k, v in spread.items():
+        print(f"  {k}: min {min(v):.4g}, max {max(v):.4g} over {len(v)} (chosen included)")
+    with open(os.path.join(HERE, "verdicts.json"), "w") as f:
+        json.dump(table, f, indent=1, ensure_ascii=False)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
