@@ -147,10 +147,16 @@ def velocity(ids):
     return _mass_weighted(_bodies("ids", ids), "vel")[0]
 
 
-def meso_overlap(members, radii):
-    """delta = R1 + R2 - |x1 - x2| of two agglomerates' centres of mass."""
+def check_pair(members, radii):
+    """Two agglomerates of bodies present and their two radii, checked before any work: a
+    TypeError or ValueError naming ``members`` or ``radii``."""
     _members("members", members, 2)
     _radii("radii", radii, 2)
+
+
+def meso_overlap(members, radii):
+    """delta = R1 + R2 - |x1 - x2| of two agglomerates' centres of mass."""
+    check_pair(members, radii)
     c = [centre_of_mass(m)[0] for m in members]
     return radii[0] + radii[1] - (c[0] - c[1]).norm()
 

@@ -64,15 +64,8 @@ class Collision:
     def __init__(self, members, radii, every=20, axis=agglomerate.X_AXIS, protocol=None):
         if isinstance(every, bool) or not isinstance(every, numbers.Integral) or every < 1:
             raise ValueError(f"every = {every!r} is invalid: an integer >= 1")
-        if isinstance(members, (str, bytes, dict)) or not hasattr(members, "__len__") or len(members) != 2:
-            raise ValueError(f"members = {members!r} is invalid: two agglomerates (lists of body ids)")
-        if isinstance(radii, (str, bytes, dict)) or not hasattr(radii, "__len__") or len(radii) != 2:
-            raise ValueError(f"radii = {radii!r} is invalid: two radii")
-        for k, r in enumerate(radii):
-            _checks.positive(f"radii[{k}]", r)
+        agglomerate.check_pair(members, radii)
         agglomerate.axis_frame(axis)  # refuses a bad axis
-        for m in members:
-            agglomerate.centre_of_mass(m)  # refuses bad ids
         if set(members[0]) & set(members[1]):
             raise ValueError("members is invalid: the two agglomerates share particles")
         self.protocol = sample.resolve(protocol)

@@ -59,24 +59,12 @@ def _common(grip, every, check):
     _whole("check", check)
 
 
-def _pair(members, radii):
-    """Two agglomerates and their radii, checked before any work (as agglomerate.meso_overlap does)."""
-    if isinstance(members, (str, bytes, dict)) or not hasattr(members, "__len__") or len(members) != 2:
-        raise ValueError(f"members = {members!r} is invalid: two agglomerates (lists of body ids)")
-    if isinstance(radii, (str, bytes, dict)) or not hasattr(radii, "__len__") or len(radii) != 2:
-        raise ValueError(f"radii = {radii!r} is invalid: two radii")
-    for k, r in enumerate(radii):
-        _checks.positive(f"radii[{k}]", r)
-    for m in members:
-        agglomerate.centre_of_mass(m)  # refuses bad ids, naming them
-
-
 class Pair:
     """Two agglomerates (``members``, radii R), gripped at their far caps."""
 
     def __init__(self, members, radii, grip=0.5, progress=True, every=50, check=10, protocol=None):
         _common(grip, every, check)
-        _pair(members, radii)
+        agglomerate.check_pair(members, radii)
         self.protocol = sample.resolve(protocol)
         self.members = [list(m) for m in members]
         self.radii = list(radii)

@@ -393,12 +393,7 @@ class Test:
             if self.progress:
                 print(f"  {mode} Dx={amplitude:g}: cycle {(O.iter - start) / steps_per_cycle:5.2f}/{n_cycles}"
                       f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
-        for e in motion:
-            e.dead = True
-        for i in self.grip[self.left] + self.grip[self.right]:
-            if O.bodies[i]:  # under mpy a worker may not hold both walls
-                O.bodies[i].state.vel = Vector3(0, 0, 0)
-        self._record()
+        self._halt(motion)
         return self.rows
 
     def force_cycles(self, amplitude, n_cycles=4, period=480.0, every=None, on_record=None, max_strokes_steps=None):
@@ -446,13 +441,17 @@ class Test:
                           f"{'out' if outward else 'back'} at Dx={dx:+.4f}  F/(kp d0)={f:+.4e}  "
                           f"({time.time() - t0:.0f} s)",
                           flush=True)
+        self._halt(motion)
+        return self.rows
+
+    def _halt(self, motion):
+        """Ends a test's motion: its engines dead, the walls (grips) at rest, and the end recorded."""
         for e in motion:
             e.dead = True
         for i in self.grip[self.left] + self.grip[self.right]:
             if O.bodies[i]:  # under mpy a worker may not hold both walls
                 O.bodies[i].state.vel = Vector3(0, 0, 0)
         self._record()
-        return self.rows
 
     def pull(self, speed, until=9.0, every=100, on_record=None, stop=None, exact=True):
         """Monotonic tension: each wall moves out at ``speed`` [length/time] until Dx = until (or, checked
@@ -498,10 +497,5 @@ class Test:
                       f"F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)",
                       flush=True)
         if exact:
-            for e in motion:
-                e.dead = True
-            for i in self.grip[self.left] + self.grip[self.right]:
-                if O.bodies[i]:
-                    O.bodies[i].state.vel = Vector3(0, 0, 0)
-            self._record()
+            self._halt(motion)
         return self.rows

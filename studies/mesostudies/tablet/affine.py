@@ -40,6 +40,22 @@ def summary(dx, force):
             "F_at_0": float(force[0])}
 
 
+def particle_contacts(skip=lambda i: False):
+    """The real particle-particle contacts in overlap, the overlap taken from the positions (a
+    saved state keeps no geometry), in the order of O.interactions, those ``skip(i)`` leaves out
+    excepted: (interaction, branch x2 - x1, its length, overlap)."""
+    from yade import O
+    for i in O.interactions:
+        b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
+        if not (i.isReal and hasattr(b1.shape, "radius") and hasattr(b2.shape, "radius")) or skip(i):
+            continue
+        branch = b2.state.pos - b1.state.pos
+        length = branch.norm()
+        delta = b1.shape.radius + b2.shape.radius - length
+        if delta > 0:
+            yield i, branch, length, delta
+
+
 def contacts_of_scene(rigid=()):
     """The particle contacts of the scene in YADE as rows (delta, delta0, k2, kc, length, nx2,
     deltaMax, k1), and the sample's length L0 along x. The overlap is taken from the positions
@@ -47,17 +63,7 @@ def contacts_of_scene(rigid=()):
     inner contacts are left out."""
     from yade import O
     rows = []
-    for i in O.interactions:
-        b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
-        if not (i.isReal and hasattr(b1.shape, "radius") and hasattr(b2.shape, "radius")):
-            continue
-        if any(i.id1 in r and i.id2 in r for r in rigid):
-            continue
-        branch = b2.state.pos - b1.state.pos
-        length = branch.norm()
-        delta = b1.shape.radius + b2.shape.radius - length
-        if delta <= 0:
-            continue
+    for i, branch, length, delta in particle_contacts(lambda i: any(i.id1 in r and i.id2 in r for r in rigid)):
         ph = i.phys
         rows.append((delta, ph.delta0, ph.k2, ph.kc, length, (branch[0] / length) ** 2, ph.deltaMax, ph.k1))
     xs = [b.state.pos[0] - b.shape.radius for b in O.bodies if b is not None and hasattr(b.shape, "radius")]

@@ -37,6 +37,8 @@ import time
 
 import numpy as np
 
+from . import affine as _affine
+
 HOLDS = ("x", "xyz", "xyzXYZ")
 STATIC_BRANCHES = ("line", "tensile", "open")  # as profile.BRANCH_GROUPS
 # The runs of the job: (sample, run name, preparation options, grips [d0], mode, hold).
@@ -124,17 +126,8 @@ def _start_contacts(walls, grips, x_mid, half):
     from yade import O
     rows, pairs = [], []
     grip_of = {i: side for side, ids in grips.items() for i in ids}
-    for i in O.interactions:
-        b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
-        if not (i.isReal and hasattr(b1.shape, "radius") and hasattr(b2.shape, "radius")):
-            continue
-        if i.id1 in grip_of and grip_of.get(i.id2) == grip_of[i.id1]:
-            continue
-        branch = b2.state.pos - b1.state.pos
-        length = branch.norm()
-        delta = b1.shape.radius + b2.shape.radius - length
-        if delta <= 0:
-            continue
+    for i, branch, length, delta in _affine.particle_contacts(
+            lambda i: i.id1 in grip_of and grip_of.get(i.id2) == grip_of[i.id1]):
         w1, w2 = (0.5 * grip_of[b] if b in grip_of else float(field(O.bodies[b].state.pos[0], x_mid, half))
                   for b in (i.id1, i.id2))
         rows.append((delta, i.phys.delta0, i.phys.k2, i.phys.kc, branch[0] / length, w2 - w1))
