@@ -6,7 +6,8 @@
 # before the carved pair was relaxed to 1e-12 of the energy scale), and the meso-particle pair in
 # YADE against the closed form (1e-4); the wall cycles' turning points; a drawn approach direction:
 # the placement against brute-force surface distances along it, the momentum in all three
-# components, e = e_speed cos(deflection); the sticking speed of the tension taken as adhesion; the
+# components, e = e_speed cos(deflection); the same direction followed to its end (bonds, the
+# final gap, the spin's share); the sticking speed of the tension taken as adhesion; the
 # library's agglomerate calls (`bulk.agglomerate`, `bulk.pair_cycles`, `bulk.collisions`) refuse bad
 # arguments, naming them, and leave the scene as it was.
 import json
@@ -176,6 +177,21 @@ check((p - p0).norm() < 1e-9 * sum(masses) * v, "collision along a drawn directi
 if not r["stuck"]:
     check(abs(r["e_speed"] * math.cos(math.radians(r["deflection_deg"])) - r["e"]) < 1e-12,
           f"e = {r['e']:.4f} is the speed ratio {r['e_speed']:.4f} times cos({r['deflection_deg']:.1f} deg)")
+
+# 6b. The same direction faster, followed to its end (issue #59's ensemble): the run goes on until the
+# fragments' surfaces are `follow` presses apart; the bonds counted before are each agglomerate's own
+# contacts in overlap (describe's coordination x n / 2, counted there independently); spin takes a share.
+info = make.ensure(d, quick=True, progress=False)
+bonds0 = sum(round(g["coordination"] * g["n"] / 2) for g in info["agglomerates"])
+c = Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=n, protocol=SCALES)
+r = c.run(10.0 / 1e3, progress=False, follow=3.0)
+check(r["bonds_before"] == bonds0 and 0 <= r["bonds_broken"] <= bonds0,
+      f"followed: {r['bonds_before']} bonds before (describe: {bonds0}), {r['bonds_broken']} broken")
+if not r["stuck"]:
+    check(r["final_gap_over_press"] > 3.0 and r["time"] > 0,
+          f"followed: the fragments end {r['final_gap_over_press']:.2f} presses apart (> 3)")
+    check(0 <= r["spin_energy_share"] <= r["e_rigid"] ** 2 <= 1,
+          f"followed: e_rigid {r['e_rigid']:.3f}, the spins' share {r['spin_energy_share']:.3f} of the impact's energy")
 
 # 7. The cycles' tension as a non-contact force: the pair sticks below the stated speed, not above.
 from mesocontact import theory  # noqa: E402

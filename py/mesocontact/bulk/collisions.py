@@ -50,6 +50,7 @@ from .. import checks as _checks
 from .. import loop as _loop
 from . import agglomerate
 from . import pictures as _pictures
+from . import impact as _impact
 from . import sample
 from .uniaxial import before_newton
 
@@ -78,6 +79,7 @@ class Collision:
         self.every = every
         self.first = self.last = None
         self.normal_impulse = Vector3(0, 0, 0)
+        self.point_sum, self.point_weight, self.recontacts = Vector3(0, 0, 0), 0.0, 0
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
         before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
@@ -95,6 +97,9 @@ class Collision:
         for inter, on_id2 in agglomerate.joining(*self.members):
             count += 1
             f += inter.phys.normalForce if on_id2 else -inter.phys.normalForce  # Law2: +normalForce acts on id2
+            w = inter.phys.normalForce.norm()  # the contact point of the collision: force-weighted mean
+            self.point_sum += inter.geom.contactPoint * w
+            self.point_weight += w
         return count, f
 
     def _watch(self):
@@ -104,24 +109,32 @@ class Collision:
         if count:
             if self.first is None:
                 self.first, self.touch_delta = O.time, delta
+            elif O.time - self.last > 1.5 * self.every * O.dt:
+                self.recontacts += 1  # joined again after at least one look without a joining contact
             self.last = O.time
         v = [agglomerate.velocity(m).dot(self.n) for m in self.members]
         self.rows.append((O.iter, O.time, delta, v[0], v[1], f.dot(self.n) * self._side if count else 0.0))
 
     def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None, unit="",
-            speed_label=None):
+            speed_label=None, follow=None):
         """One collision at relative speed v_rel (the scene's units); returns its outcome (a dict).
         The surfaces start ``gap`` d0 apart, at most what the pair crosses in APPROACH time units;
         ``quiet``: how long no contact must have joined them, over the touch's duration so far;
         ``max_time``: the run's end in any case (default: the approach and STUCK_AFTER primary
         contact times). ``snapshot``: a PNG of the end state (bulk.pictures.png; ``unit``: the
         length unit of its axes), titled with ``speed_label`` (default 'v_rel = <v_rel>'), e and
-        the mass broken off."""
+        the mass broken off. ``follow`` (default None): a parted pair's run goes on until the two
+        largest fragments' surfaces are ``follow`` times the press apart (the press sets the
+        collision's length scale at every speed: at low speeds the separation is slow, and the
+        internal vibration small, in proportion), re-contacts counted, and the outcome also holds
+        the spin-aware measures and the broken bonds (``bulk.impact``)."""
         _checks.positive("v_rel", v_rel)
         _checks.positive("gap", gap)
         _checks.nonnegative("quiet", quiet)
         if max_time is not None:
             _checks.positive("max_time", max_time)
+        if follow is not None:
+            _checks.positive("follow", follow)
         for name, value in (("snapshot", snapshot), ("speed_label", speed_label)):
             if value is not None and not isinstance(value, str):
                 raise TypeError(f"{name} = {value!r} is invalid: a string (or None)")
@@ -140,6 +153,7 @@ class Collision:
         ke0 = sample.kinetic_energy()
         O.run(1, True)  # the stored energies' values before the impact (the dissipated ones start at 0)
         self._energy0 = dict(O.energy.items())
+        bonds = _impact.bonds(self.members) if follow is not None else None  # after a step: a loaded scene's geometry
         t0, start_time = time.time(), O.time
         approach = min(gap * d0, v_rel * APPROACH) / v_rel
         max_time = max_time if max_time is not None else approach + STUCK_AFTER * self._t_scale()
@@ -152,10 +166,10 @@ class Collision:
                 apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
                 state = "apart" if apart else "joined"
                 gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
-                if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])):
+                if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])) and self._far(follow):
                     # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
                     break
-                if O.time - self.first > 5 * chunk * O.dt and self._parted():
+                if O.time - self.first > 5 * chunk * O.dt and self._parted() and self._far(follow):
                     # the two largest fragments, one from each, separate; exchanged particles still join them
                     state = "parted"
                     break
@@ -164,11 +178,42 @@ class Collision:
                       f"delta = {self.delta() / d0:+.4f} d0  ({time.time() - t0:.0f} s)", flush=True)
         out = self._outcome(v_rel, side, start_time, time.time() - t0)
         out["energy_over_impact"] = self._energy_shares(ke0)
+        if follow is not None:
+            out.update(self._followed(v_rel, side, bonds))
         if snapshot:
             label = f"v_rel = {v_rel:g}" if speed_label is None else speed_label
             _pictures.png(snapshot, d0=d0, unit=unit,
                           title=f"{label}: e = {out['e']:.3f}, "
                                 f"broken off {out['broken_mass_fraction']:.3f}")
+        return out
+
+    def _far(self, follow):
+        """Whether the two largest fragments' surfaces lie ``follow`` presses apart (always,
+        without ``follow``)."""
+        if follow is None:
+            return True
+        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
+        return len(parts) == 2 and _surface_gap(*parts) > follow * self._press()
+
+    def _press(self):
+        """The largest meso-overlap beyond the one at the first touch (the scene's length)."""
+        return max(r[2] for r in self.rows) - self.touch_delta
+
+    def _followed(self, v_rel, side, bonds):
+        """The measures of a followed run: re-contacts, broken bonds, the final gap and, when the
+        two largest fragments come one from each agglomerate, the spin-aware restitution."""
+        lost = _impact.broken(bonds)
+        out = {"recontacts": self.recontacts, "bonds_before": len(bonds), "bonds_broken": len(lost),
+               "bonds_broken_fraction": len(lost) / len(bonds) if bonds else None,
+               "e_contact": None, "e_rigid": None, "spin_energy_share": None, "spin": None}
+        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
+        own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
+        if len(parts) == 2 and own[0] != own[1] and self.point_weight > 0 and self.normal_impulse.norm() > 0:
+            a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
+            out["final_gap_over_press"] = _surface_gap(a, b) / self._press()
+            point = self.point_sum / self.point_weight
+            out.update(_impact.spin_measures(a, b, tuple(self.normal_impulse), tuple(point),
+                                             tuple(self.n * (-side * v_rel))))
         return out
 
     def _energy_shares(self, ke0):
@@ -206,11 +251,7 @@ class Collision:
     def surface_gap(self):
         """The smallest distance between the surfaces of a particle of one agglomerate and one of
         the other."""
-        import numpy as np
-        pos = [np.array([list(O.bodies[i].state.pos) for i in m]) for m in self.members]
-        rad = [np.array([O.bodies[i].shape.radius for i in m]) for m in self.members]
-        return float((np.linalg.norm(pos[0][:, None, :] - pos[1][None, :, :], axis=2)
-                      - rad[0][:, None] - rad[1][None, :]).min())
+        return _surface_gap(*self.members)
 
     @staticmethod
     def _receding(a, b):
@@ -274,3 +315,12 @@ class Collision:
                 "press_d0": ((max(r[2] for r in self.rows) - self.touch_delta) / self.protocol.d0
                              if self.first is not None else None),
                 "largest_normal_force": max(r[5] for r in self.rows)}
+
+
+def _surface_gap(first, second):
+    """The smallest distance between the surfaces of a particle of ``first`` and one of ``second``."""
+    import numpy as np
+    pos = [np.array([list(O.bodies[i].state.pos) for i in m]) for m in (first, second)]
+    rad = [np.array([O.bodies[i].shape.radius for i in m]) for m in (first, second)]
+    return float((np.linalg.norm(pos[0][:, None, :] - pos[1][None, :, :], axis=2)
+                  - rad[0][:, None] - rad[1][None, :]).min())

@@ -146,17 +146,18 @@ class Pair:
                                f"(delta = {self.delta():.4g}, F = {self.force():.4g})")
         return hit[0]
 
-    def cycles(self, amplitudes, speed, gap=0.05, max_steps=10 ** 7, final=True):
+    def cycles(self, amplitudes, speed, gap=0.05, max_steps=10 ** 7, final=True, max_pull=MAX_PULL):
         """The protocol of the module's docstring; amplitudes in d0 beyond the first touch, speed
         of each cap, gap: the surfaces' distance at the start [d0]. Returns the rows (iter, delta,
         F); ``events`` holds (what, iter, delta, F) at each turn; ``final``: pull apart at the end
-        (a rate check's run may leave it out)."""
+        (a rate check's run may leave it out), to ``max_pull`` d0 below the touch at most."""
         if isinstance(amplitudes, (str, bytes, dict)) or not hasattr(amplitudes, "__len__") or not len(amplitudes):
             raise ValueError(f"amplitudes = {amplitudes!r} is invalid: a sequence of amplitudes [d0]")
         for k, a in enumerate(amplitudes):
             _checks.positive(f"amplitudes[{k}]", a)
         _checks.positive("speed", speed)
         _checks.nonnegative("gap", gap)
+        _checks.positive("max_pull", max_pull)
         _whole("max_steps", max_steps)
         d0 = self.protocol.d0
         kp = self.protocol.kp
@@ -178,8 +179,8 @@ class Pair:
             d, f = self.stroke(-speed, lambda d, f: d <= touch - BELOW_TOUCH * d0, max_steps)
             note("unloaded", d, f)
         if final:  # the last pull apart (a rate check's run may leave it out)
-            d, f = self.stroke(-speed, lambda d, f: self.touching() == 0 or d <= touch - MAX_PULL * d0, max_steps)
-            note("apart" if self.touching() == 0 else f"still joined at {MAX_PULL:g} d0", d, f)
+            d, f = self.stroke(-speed, lambda d, f: self.touching() == 0 or d <= touch - max_pull * d0, max_steps)
+            note("apart" if self.touching() == 0 else f"still joined at {max_pull:g} d0", d, f)
         self._record()
         self.touch = touch
         return self.rows

@@ -15,7 +15,7 @@ from mesocontact.bulk import agglomerate, pair_cycles
 from mesocontact.bulk.collisions import Collision
 from mesocontact.jobs import Job, Registry
 from mesocontact.outputs import read_csv
-from . import compare, make, plots, report
+from . import compare, ensemble, make, measure, plots, report
 from .primaries import D0, KP, SCALES
 
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
@@ -45,6 +45,12 @@ def _parser():
                         "k > 0: drawn on the sphere, seed DIRECTION_SEED)")
     p.add_argument("--amplitudes", type=lambda s: tuple(float(x) for x in s.split(",")), default=None,
                    help="cycle amplitudes beyond the first touch [d0], comma-separated")
+    p.add_argument("--seeds", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
+                   help="ensemble: the blocks' seeds, comma-separated (default 1,2,3)")
+    p.add_argument("--directions", type=lambda s: tuple(int(x) for x in s.split(",")), default=None,
+                   help="ensemble: direction indices, comma-separated (default 1..20, drawn on the sphere)")
+    p.add_argument("--follow", type=float, default=ensemble.FOLLOW,
+                   help="ensemble: a parted pair is followed until its fragments are this many presses apart")
     return p
 
 
@@ -56,6 +62,12 @@ def batch_columns():
 def _check(a, p):
     if a.direction < 0:
         p.error(f"--direction {a.direction} is invalid: an index >= 0")
+    for name in ("seeds", "directions"):
+        v = getattr(a, name)
+        if v is not None and (not v or any(x < (1 if name == "seeds" else 0) for x in v)):
+            p.error(f"--{name} {','.join(map(str, v))} is invalid: integers >= {1 if name == 'seeds' else 0}")
+    if not (a.follow > 0 and a.follow < float("inf")):
+        p.error(f"--follow {a.follow} is invalid: a positive finite number")
     if a.factors is not None and (not a.factors or any(f < 1 for f in a.factors)):
         p.error(f"--factors {a.factors} is invalid: positive integers")
     for name in ("speeds", "amplitudes"):
@@ -294,7 +306,7 @@ def compare_job(a):
 def everything(a):
     """The job 'all': the others in turn, in the registry's order."""
     for job in JOBS:
-        if job != "all":
+        if job not in ("all", "ensemble", "rate", "pulls"):
             JOBS.get(job).function(a)
 
 
@@ -312,5 +324,17 @@ JOBS = Registry([
     Job("compare", compare_job, "the law fitted to the slowest cycles (and to the run with the most amplitudes), the "
         "meso-particle pair and the closed form at the same speeds: agglomerate-vs-meso.json, cycles.png, "
         "restitution.png."),
+    Job("ensemble", lambda a: ensemble.runs(a.out, a.seeds or (1, 2, 3), a.directions or ensemble.DIRECTIONS,
+                                            a.speeds or ensemble.SPEEDS, a.follow, a.quick),
+        "issue #59's ensemble: collisions of each seed's block (--seeds) along each direction (--directions) at each "
+        "speed, followed to their end, one JSON each under <out>/block-s<seed>/ensemble; finished ones are skipped. "
+        "Not part of 'all'."),
+    Job("rate", lambda a: measure.rate(ensemble.block_dir(a.out, (a.seeds or (1,))[0]), (a.seeds or (1,))[0],
+                                       a.quick, a.speeds or measure.RATE_SPEEDS),
+        "issue #59: the pair's cycles with the caps at collision-like speeds (--speeds, m/s per cap), in the "
+        "ensemble's block folder (--seeds' first). Not part of 'all'."),
+    Job("pulls", lambda a: measure.pulls(ensemble.block_dir(a.out, (a.seeds or (1,))[0]), (a.seeds or (1,))[0],
+                                         a.quick, a.amplitudes or measure.PULL_AMPLITUDES),
+        "issue #59: a fresh pair pressed once to each --amplitudes and pulled fully apart, slowly. Not part of 'all'."),
     Job("all", everything, "prepare, cycles, wall, collide and compare in turn."),
 ])

@@ -1,0 +1,95 @@
+# ctest (inside yade): bulk.impact against motions built by hand (a few seconds). Two clusters of
+# spheres are given a rigid motion, v_i = V + w x (x_i - c) and every sphere's own spin w:
+# rigid() recovers V and w (to rounding: 1e-12 of |w|), and its rotational energy, 0.5 w.I w,
+# equals the particles' kinetic energy minus the centre's 0.5 M V^2, summed sphere by sphere
+# (no inertia tensor involved). spin_measures' e_contact against the contact point's velocities
+# written out (V + w x (p - c) of each cluster), e_rigid against the energies summed the same way,
+# and a spin that vanishes leaves e_contact the centres' normal restitution. bonds() and broken():
+# two touching spheres make one bond, which breaks when they are moved apart and a step is taken.
+import numpy as np
+from yade import O, Vector3, utils
+from yade import wrapper as w
+from mesocontact.bulk import impact
+from harness import check, finish
+
+rng = np.random.default_rng(7)
+
+
+def cluster(centre, n=12):
+    ids = []
+    for _ in range(n):
+        x = np.asarray(centre) + rng.uniform(-1.0, 1.0, 3)
+        ids.append(O.bodies.append(utils.sphere(tuple(x), rng.uniform(0.2, 0.4))))
+    return ids
+
+
+def give(ids, V, W):
+    """A rigid motion about the cluster's centre of mass: v_i = V + W x (x_i - c), spin W."""
+    m = np.array([O.bodies[i].state.mass for i in ids])
+    x = np.array([list(O.bodies[i].state.pos) for i in ids])
+    c = m @ x / m.sum()
+    for i, xi in zip(ids, x):
+        O.bodies[i].state.vel = Vector3(*(np.asarray(V) + np.cross(W, xi - c)))
+        O.bodies[i].state.angVel = Vector3(*W)
+    return c
+
+
+def kinetic(ids):
+    return sum(0.5 * O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm()
+               + 0.5 * O.bodies[i].state.inertia[0] * O.bodies[i].state.angVel.squaredNorm() for i in ids)
+
+
+O.reset()
+A, B = cluster((0, 0, 0)), cluster((3, 0.5, 0))
+VA, WA = np.array([0.1, -0.2, 0.05]), np.array([0.3, -1.1, 0.7])
+VB, WB = np.array([-0.4, 0.1, 0.0]), np.array([2.0, 0.4, -0.9])
+cA, cB = give(A, VA, WA), give(B, VB, WB)
+for ids, V, W, name in ((A, VA, WA, "A"), (B, VB, WB, "B")):
+    mass, c, vc, wr, inertia = impact.rigid(ids)
+    check(np.linalg.norm(vc - V) < 1e-12 * np.linalg.norm(V) and np.linalg.norm(wr - W) < 1e-12 * np.linalg.norm(W),
+          f"rigid({name}): the built motion recovered", f"V off by {np.linalg.norm(vc - V):.1e}, "
+          f"w off by {np.linalg.norm(wr - W):.1e} of |w| = {np.linalg.norm(W):.3f}")
+    rot = kinetic(ids) - 0.5 * mass * V.dot(V)
+    check(abs(0.5 * wr @ inertia @ wr - rot) < 1e-12 * rot,
+          f"rigid({name}): 0.5 w.I w is the particles' kinetic energy about the centre",
+          f"{0.5 * wr @ inertia @ wr:.12g} against {rot:.12g}")
+
+p, n = np.array([1.5, 0.2, 0.1]), np.array([1.0, 0.3, -0.2])
+dv0 = np.array([-0.8, 0.1, 0.05])
+r = impact.spin_measures(A, B, tuple(n), tuple(p), tuple(dv0))
+un = n / np.linalg.norm(n)
+at = (VB + np.cross(WB, p - cB)) - (VA + np.cross(WA, p - cA))
+check(abs(r["e_contact"] - (-at.dot(un) / dv0.dot(un))) < 1e-12,
+      "e_contact: the contact point's normal velocity after over before", f"{r['e_contact']:.12f}")
+mA, mB = (sum(O.bodies[i].state.mass for i in ids) for ids in (A, B))
+mu = mA * mB / (mA + mB)
+spin = kinetic(A) - 0.5 * mA * VA.dot(VA) + kinetic(B) - 0.5 * mB * VB.dot(VB)
+rel = VB - VA
+want = np.sqrt((0.5 * mu * rel.dot(rel) + spin) / (0.5 * mu * dv0.dot(dv0)))
+share = spin / (0.5 * mu * dv0.dot(dv0))
+check(abs(r["e_rigid"] - want) < 1e-12 * want and abs(r["spin_energy_share"] - share) < 1e-12 * share,
+      "e_rigid: the rigid motion's energy after (summed sphere by sphere) over the impact's", f"{r['e_rigid']:.12f}")
+give(A, VA, (0, 0, 0))
+give(B, VB, (0, 0, 0))
+r = impact.spin_measures(A, B, tuple(n), tuple(p), tuple(dv0))
+check(abs(r["e_contact"] + rel.dot(un) / dv0.dot(un)) < 1e-12 and r["spin_energy_share"] < 1e-24,
+      "without spin e_contact is the centres' normal restitution", f"{r['e_contact']:.12f} against "
+      f"{-rel.dot(un) / dv0.dot(un):.12f}, spin's share {r['spin_energy_share']:.1e}")
+
+O.reset()
+O.engines = [w.ForceResetter(), w.InsertionSortCollider([w.Bo1_Sphere_Aabb()]),
+             w.InteractionLoop([w.Ig2_Sphere_Sphere_ScGeom()], [w.Ip2_FrictMat_FrictMat_FrictPhys()],
+                               [w.Law2_ScGeom_FrictPhys_CundallStrack()]),
+             w.NewtonIntegrator()]
+a = O.bodies.append(utils.sphere((0, 0, 0), 1.0))
+b = O.bodies.append(utils.sphere((1.9, 0, 0), 1.0))
+c = O.bodies.append(utils.sphere((10, 0, 0), 1.0))
+O.dt = 1e-6
+O.step()
+bonds = impact.bonds([[a, c], [b]]) | impact.bonds([[a, b, c]])
+check(bonds == {(a, b)}, "bonds: only the touching pair of one agglomerate", str(bonds))
+check(impact.broken(bonds) == [], "broken: none while they touch")
+O.bodies[b].state.pos = Vector3(2.5, 0, 0)
+O.step()
+check(impact.broken(bonds) == [(a, b)], "broken: the pair moved apart", str(impact.broken(bonds)))
+finish()
