@@ -233,6 +233,49 @@ for name, call, args, kw in bad:
 check(before == (len(O.engines), [tuple(O.bodies[i].state.pos) for i in A + B]),
       "the refused calls left the scene as it was")
 
+# 9. The library's one call (bulk.coarse.coarse_grain) on the same pair: with the study's cap speed and
+# amplitudes its cycles are the study's cycles-v2.5 (the same state and code: every row equal), its
+# collisions along x the study's at the same speeds, and the scene is given back as it was; the
+# verdicts follow from the e's and the tolerance; bad arguments are refused, naming them.
+from mesocontact.bulk import coarse  # noqa: E402
+info = make.ensure(d, quick=True, progress=False)
+A, B = info["members"]
+radii = [g["radius"] for g in info["agglomerates"]]
+start = [tuple(O.bodies[i].state.pos) for i in A + B]
+for name, kw in (("speeds", {"speeds": []}), ("speeds[0]", {"speeds": [-1.0]}), ("directions", {"directions": 0}),
+                 ("amplitudes[0]", {"amplitudes": (0.0,)}), ("tolerance", {"tolerance": math.nan}),
+                 ("cap_speed", {"cap_speed": -1.0}), ("out", {"out": 3})):
+    try:
+        coarse.coarse_grain([A, B], radii, **{"speeds": [1e-3], **kw}, protocol=SCALES, progress=False)
+        refused = "no exception"
+    except (TypeError, ValueError) as e:
+        refused = str(e)
+    check(refused.startswith(name), f"coarse_grain: a bad {name} refused, naming it", refused)
+cg_out = os.path.join(out, "coarse")
+speeds = study.SPEEDS[True][:2]
+cg = coarse.coarse_grain([A, B], radii, [v / 1e3 for v in speeds], directions=1, amplitudes=study.AMPLITUDES[True],
+                         cap_speed=study.CAP_SPEED, out=cg_out, protocol=SCALES, progress=False)
+check([tuple(O.bodies[i].state.pos) for i in A + B] == start, "coarse_grain: the scene given back as it was")
+study_rows = [tuple(float(x) for x in line.split(","))
+              for line in open(os.path.join(d, "cycles-v2.5.csv")).read().split("\n")[1:] if line]
+f_scale = max(abs(r[2]) for r in study_rows)
+same = all(abs(a[1] - b[1]) <= 1e-12 * abs(b[1]) and abs(a[2] - b[2]) <= 1e-9 * f_scale
+           for a, b in zip(cg.cycle_rows, study_rows))
+check(len(cg.cycle_rows) == len(study_rows) and same,
+      f"coarse_grain: its cycles are the study's ({len(cg.cycle_rows)} rows against {len(study_rows)})")
+with open(os.path.join(d, "collisions.json")) as f:
+    study_e = {h["v_rel_m_s"]: h["e"] for h in json.load(f)}
+for v, row in zip(speeds, cg.e_agglomerates):
+    check(abs(row[0] - study_e[v]) < 1e-6,
+          f"coarse_grain: e at {v} m/s along x {row[0]:.6f}, the study's {study_e[v]:.6f}")
+holds = [abs(sum(r) / len(r) - e) <= 0.1 and max(b) <= 0.01 for r, e, b in zip(cg.e_agglomerates, cg.e_meso, cg.broken)]
+with open(os.path.join(cg_out, "coarse-grained.json")) as f:
+    js = json.load(f)
+check(js["holds"] == holds and cg.holds() == holds and js["material"]["k1"] == cg.fit.params["k1"],
+      f"coarse_grain: the verdicts {holds} follow from the e's; the JSON holds them and the material")
+check(all(os.path.getsize(os.path.join(cg_out, f)) > 1000 for f in ("cycles.csv", "coarse-grained.png")),
+      "coarse_grain: cycles.csv and coarse-grained.png written")
+
 for f in ("cycles.png", "wall-cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
     check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")
 check(all(k in summary for k in ("fit", "speeds", "e_agglomerate", "e_meso", "e_theory", "fragmented")), "summary keys")
