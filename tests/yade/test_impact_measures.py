@@ -5,7 +5,8 @@
 # (no inertia tensor involved). spin_measures' e_contact against the contact point's velocities
 # written out (V + w x (p - c) of each cluster), e_rigid against the energies summed the same way,
 # and a spin that vanishes leaves e_contact the centres' normal restitution. bonds() and broken():
-# two touching spheres make one bond, which breaks when they are moved apart and a step is taken.
+# two touching spheres make one bond, which breaks when they are moved apart and a step is taken. A
+# followed head-on collision of two single meso-particles: e is the closed form's, e_contact = e_rigid = e.
 import numpy as np
 from yade import O, Vector3, utils
 from yade import wrapper as w
@@ -92,4 +93,23 @@ check(impact.broken(bonds) == [], "broken: none while they touch")
 O.bodies[b].state.pos = Vector3(2.5, 0, 0)
 O.step()
 check(impact.broken(bonds) == [(a, b)], "broken: the pair moved apart", str(impact.broken(bonds)))
+
+# A followed collision of two single meso-particles head-on (bulk.collisions with follow): e of the
+# centres is the closed form's (the pair's discretisation: 2000 steps per contact, equal to 6 digits here;
+# 1e-3 allowed), and with no spin and the contact on the line of centres e_contact and e_rigid are e.
+from mesocontact import pair, theory  # noqa: E402
+from mesocontact.bulk import protocol  # noqa: E402
+from mesocontact.bulk.collisions import Collision  # noqa: E402
+mat = dict(density=2500.0, k1=1e3, kp=5e3, kc=1e3, phiF=0.1, gammaN=0.0, frictionAngle=0.0)
+R, v = 1e-3, 0.05
+pair.build(R, v, material=mat)
+prot = protocol.Protocol.ratios(dict(mat, gammaN=1e-9), d0=2 * R, sinter=0.02)  # only its d0 and kp are read
+r = Collision([[0], [1]], [R, R], protocol=prot).run(v, follow=3.0, progress=False)
+m = 2500.0 * 4.0 / 3.0 * np.pi * R ** 3
+want = theory.pair_collision(v, 1e3, 5e3, 1e3, 0.1, R, m / 2).e
+check(abs(r["e"] - want) < 1e-3 and abs(r["e_contact"] - r["e"]) < 1e-9 and abs(r["e_rigid"] - r["e"]) < 1e-9,
+      f"followed head-on pair: e {r['e']:.6f} (closed form {want:.6f}), e_contact {r['e_contact']:.6f}, "
+      f"e_rigid {r['e_rigid']:.6f}")
+check(r["final_gap_over_press"] > 3.0 and r["recontacts"] == 0 and r["bonds_before"] == 0,
+      f"followed head-on pair: {r['final_gap_over_press']:.2f} presses apart, no re-contact, no bonds")
 finish()

@@ -60,16 +60,3 @@ def runs(out, seeds, directions=DIRECTIONS, speeds=SPEEDS, follow=FOLLOW, quick=
         for s in seeds:
             for k in directions:
                 run_one(out, s, k, v, follow, quick)
-
-
-def collected(out):
-    """Every finished collision under ``out``: a list of outcomes."""
-    rows = []
-    for d in sorted(os.listdir(out)) if os.path.isdir(out) else []:
-        e = os.path.join(out, d, "ensemble")
-        if d.startswith("block-s") and os.path.isdir(e):
-            for f in sorted(os.listdir(e)):
-                if f.endswith(".json"):
-                    with open(os.path.join(e, f)) as fh:
-                        rows.append(json.load(fh))
-    return rows
