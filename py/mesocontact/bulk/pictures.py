@@ -90,15 +90,21 @@ def png(path, title="", win=None, pixel=None, d0=None, unit=""):
     """Renders the spheres seen from -y (the paper's view) into ``path``: each sphere shaded as a
     sphere (light from the viewer's upper left) and coloured by its centre's distance from the
     viewer, red -> green -> blue over the sample's depth (its bulk: 1st to 99th percentile); the
-    walls in grey. ``win`` (see window()) fixes the frame, so that a series of panels shares
-    one scale; ``pixel`` defaults to d0/16; ``unit`` labels the axes (e.g. "mm")."""
+    walls in grey, drawn over the height of the sample's bulk (its centres' 1st to 99th percentile
+    in z, plus d0; the boxes themselves reach further). ``win`` (see window()) fixes the frame, so
+    that a series of panels shares one scale; a sphere not wholly inside it is left out (not cut
+    by the frame's edge) and counted in the panel's corner. ``pixel`` defaults to d0/16; ``unit``
+    labels the axes (e.g. "mm")."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     pixel = pixel or _d0(d0) / 16
     win = win or window(d0=d0)
     _, pos, rad = _spheres()
+    x0, x1, z0, z1 = win
+    inside = ((pos[:, 0] - rad >= x0) & (pos[:, 0] + rad <= x1) & (pos[:, 2] - rad >= z0) & (pos[:, 2] + rad <= z1))
     ybuf, owner, normal = depth_buffer(win, pixel)
+    owner[(owner >= 0) & ~inside[np.maximum(owner, 0)]] = -1  # a sphere the frame would cut is left out
     y = pos[:, 1]
     # the colour spans the bulk's depth (1st to 99th percentile): a few spheres squeezed out of a
     # compressed sample must not stretch it until the bulk is one colour (Fig. 19's late panels)
@@ -108,14 +114,14 @@ def png(path, title="", win=None, pixel=None, d0=None, unit=""):
     light /= np.linalg.norm(light)
     shade = 0.3 + 0.7 * np.clip(normal @ light, 0.0, 1.0)  # both point towards the viewer's side
     img = np.ones(ybuf.shape + (3,))
-    x0, x1, z0, z1 = win
     xs = x0 + (np.arange(img.shape[1]) + 0.5) * pixel
     zs = z0 + (np.arange(img.shape[0]) + 0.5) * pixel
-    for i in sample.wall_ids().values():  # the walls: grey, behind nothing
+    bulk_z = np.percentile(pos[:, 2], [1, 99]) + np.array([-1.0, 1.0]) * _d0(d0)
+    for i in sample.wall_ids().values():  # the walls: grey, behind nothing, as tall as the sample's bulk
         b = O.bodies[i]
         c, e = b.state.pos, b.shape.extents
         inx = (xs >= c[0] - e[0]) & (xs <= c[0] + e[0])
-        inz = (zs >= c[2] - e[2]) & (zs <= c[2] + e[2])
+        inz = (zs >= max(c[2] - e[2], bulk_z[0])) & (zs <= min(c[2] + e[2], bulk_z[1]))
         img[np.ix_(inz, inx)] = 0.72
     seen = owner >= 0
     img[seen] = depth_colours(depth[owner[seen]]) * shade[seen][:, None]
@@ -124,6 +130,9 @@ def png(path, title="", win=None, pixel=None, d0=None, unit=""):
     ax.set_xlabel(f"x [{unit}]" if unit else "x")
     ax.set_ylabel(f"z [{unit}]" if unit else "z")
     ax.set_title(title, fontsize=9)
+    if (~inside).any():
+        ax.text(0.98, 0.02, f"{int((~inside).sum())} outside the frame", transform=ax.transAxes, ha="right",
+                va="bottom", fontsize=7, color="0.3")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -233,9 +242,14 @@ def walls_connected(left, right):
     return False
 
 
-def montage(pngs, path, ncols=4, titles=None):
+DEPTH_KEY = ("colour: depth from the viewer (at -y), red front, green middle, blue back "
+             "(the sample's 1st to 99th percentile)")
+
+
+def montage(pngs, path, ncols=4, titles=None, key=DEPTH_KEY):
     """The panels ``pngs`` side by side in one picture (a series shares its frame and scale),
-    lettered (a), (b), ... as the paper's snapshot figures, each with its title if given."""
+    lettered (a), (b), ... as the paper's snapshot figures, each with its title if given, and
+    ``key`` (default: png()'s depth colours) as a colour bar under them (None: no key)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.image as mpimg
@@ -250,5 +264,12 @@ def montage(pngs, path, ncols=4, titles=None):
         ax.imshow(img)
         ax.set_title(f"({chr(97 + k)})" + (f" {titles[k]}" if titles else ""), fontsize=9, loc="left")
     fig.tight_layout(pad=0.2)
+    if key:
+        bar = fig.add_axes([0.3, -0.035, 0.4, 0.018])
+        bar.imshow(depth_colours(np.linspace(0.0, 1.0, 256))[None, :, :], aspect="auto", extent=(0, 1, 0, 1))
+        bar.set_yticks([])
+        bar.set_xticks([0, 0.5, 1])
+        bar.set_xticklabels(["front", "middle", "back"], fontsize=8)
+        bar.set_title(key, fontsize=8)
     fig.savefig(path, dpi=130, bbox_inches="tight", pad_inches=0.08)  # the first row's letters inside the picture
     plt.close(fig)
