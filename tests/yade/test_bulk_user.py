@@ -3,7 +3,8 @@
 # unconfined and pulled through one cosine tension cycle; bad arguments refused by name before
 # any work. The checks are the stages' own targets (stress within tol_stress of each goal, kinetic
 # energy below tol_ke of the energy scale), the walls' motion (back to the start's length to
-# rounding), and the protocol read back from the saved scene exactly.
+# rounding), and the protocol read back from the saved scene exactly; a die; cycles whose period
+# is the walls' speed; the radius distributions.
 import math
 import os
 import tempfile
@@ -154,6 +155,46 @@ one_step = 2 * p.speeds()[1] * O.dt / D0  # both pistons move one step at speed
 check(abs(dx_press + 0.05) <= one_step and abs(die.rows[-1][1] - 0.02) <= one_step,
       "die: compressed to Dx = -0.05 and pulled back to 0.02, each to a step",
       f"Dx {dx_press:.6f}, {die.rows[-1][1]:.6f} (a step: {one_step:.1e})")
+# 6. A period given as the walls' speed: the relative speed of the pistons peaks at it, to the period's
+# granularity (a multiple of 8 steps: up to 8/steps faster) and the records' sampling of the cosine
+# (400 a cycle: their largest within 1 - cos(pi/400) = 3e-5 below the peak).
+v_walls = p.speeds()[1]
+top = []
+die.cycles("tension", 0.02, n_cycles=1, wall_speed=v_walls, on_record=lambda test, row: top.append(
+    abs(O.bodies[sample.wall_ids()["right"]].state.vel[0] - O.bodies[sample.wall_ids()["left"]].state.vel[0])))
+exact = math.pi * 0.02 * D0 / v_walls / O.dt
+rise = max(top) / v_walls - exact / die.steps_per_cycle
+check(die.steps_per_cycle == 8 * (round(exact) // 8) and -3e-5 < rise < 1e-9,
+      "cycles(wall_speed=v): the pistons' relative speed peaks at v", f"{max(top) / v_walls:.6f} of v, "
+      f"{die.steps_per_cycle} steps per cycle ({exact:.2f} for v exactly)")
+
+# 7. Radius distributions (the gas only): each has the mean d0/2 and the relative spread asked for,
+# less what its cut removes (a normal cut at 2 sigma keeps sqrt(1 - 4 phi(2)/(2 Phi(2) - 1)) = 0.880 of
+# its sigma: 0.0880 for rel_std 0.1; uniform keeps 0.1, bounded by 1 +- sqrt(3) 0.1); 2000 radii
+# estimate the spread to 1.6 % (1/sqrt(2n)), allowed 5 %. Wide lognormal radii (rel_std 0.25, up to
+# 0.82 d0) are placed without overlaps (the placement's cells are at least a diameter wide).
+for dist, rel, want in (("gaussian", 0.1, 0.0880), ("uniform", 0.1, 0.1), ("lognormal", 0.1, 0.0880),
+                        ("lognormal", 0.25, None)):
+    sample.build(p.replace(n=2000 if want else 600, rel_std=rel, distribution=dist))
+    r = [b.shape.radius for b in O.bodies if b.shape.__class__.__name__ == "Sphere"]
+    mean = sum(r) / len(r)
+    sd = math.sqrt(sum((x - mean) ** 2 for x in r) / (len(r) - 1))
+    if want:
+        ok = abs(mean / (0.5 * D0) - 1) < 0.01 and abs(sd / mean / want - 1) < 0.05
+        if dist == "uniform":
+            ok = ok and 0.5 * D0 * (1 - math.sqrt(3) * rel) <= min(r) and max(r) <= 0.5 * D0 * (1 + math.sqrt(3) * rel)
+        check(ok, f"radii {dist}, rel_std {rel}: mean {mean / (0.5 * D0):.4f} d0/2, spread {sd / mean:.4f} "
+              f"(expected {want})")
+    else:
+        pos = [(b.state.pos, b.shape.radius) for b in O.bodies if b.shape.__class__.__name__ == "Sphere"]
+        worst = min((a[0] - b[0]).norm() - a[1] - b[1] for k, a in enumerate(pos) for b in pos[k + 1:])
+        check(worst >= 0 and max(r) > 0.6 * D0, f"radii {dist}, rel_std {rel}: up to {max(r) / D0:.2f} d0, "
+              f"placed without overlap (closest gap {worst / D0:.2e} d0)")
+try:
+    p.replace(distribution="weibull")
+    check(False, "Protocol refuses distribution")
+except ValueError as e:
+    check("distribution" in str(e), "Protocol refuses distribution", str(e))
 for bad, call in (("amplitude", lambda: t.cycles("tension", -0.1)), ("mode", lambda: t.cycles("shear", 0.1)),
                   ("period", lambda: t.cycles("tension", 0.1, period=math.nan))):
     try:

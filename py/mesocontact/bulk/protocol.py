@@ -16,6 +16,8 @@ import math
 from .. import checks as _checks
 
 PACKINGS = ("full", "frictionless")   # the law while the gas is compacted: full, or without friction and adhesion
+DISTRIBUTIONS = ("gaussian", "uniform", "lognormal")  # the radii's, about d0/2 with relative std rel_std
+_LATER_DEFAULTS = {"distribution": "gaussian"}
 GLUES = ("loading", "all", "sinter")   # adhesive walls: the two x walls after sintering, all six after, all six before
 TAG = "mesocontact.bulk"               # the O.tags key that carries the protocol with the scene
 REQUIRED = ("density", "k1", "kp", "kc", "phiF", "gammaN")  # MesoMat keywords the stages read
@@ -29,8 +31,10 @@ class Protocol:
     material: the particles' MesoMat keywords (a dict; 'label' is set by the library);
     d0: the mean particle diameter (the length scale of every report);
     sinter_stress, release_stress: the walls' stress while sintering (p_s) and after release (p_r);
-    n, rel_std, gas_fraction, seed, aspect: n radii Gaussian about d0/2 (relative std, cut at
-    2 sigma) placed at random at this solid fraction in a box with these side ratios;
+    n, rel_std, gas_fraction, seed, aspect: n radii about d0/2 with this relative standard
+    deviation, drawn from ``distribution`` (DISTRIBUTIONS: 'gaussian', cut at 2 sigma; 'uniform';
+    'lognormal', cut at 2 sigma of its logarithm), placed at random at this solid fraction in a
+    box with these side ratios;
     packing: 'full' compacts with the full law, 'frictionless' packs without friction, rolling,
     torsion and adhesion to rest at packing_stress first; glue: which walls become adhesive
     and when (GLUES); compaction_speed, sinter_speed: the walls' largest speed (default: a
@@ -67,6 +71,7 @@ class Protocol:
     hold_speed: float = None
     name: str = "user"
     units: str = ""
+    distribution: str = "gaussian"
 
     def __post_init__(self):
         # A value, not a view of the caller's objects: the material copied, sequences as tuples.
@@ -133,7 +138,11 @@ class Protocol:
         return dataclasses.replace(self, **changes)
 
     def to_json(self):
-        return json.dumps(dataclasses.asdict(self), sort_keys=True)
+        d = dataclasses.asdict(self)
+        for key, default in _LATER_DEFAULTS.items():  # fields added later: absent at their default, so that
+            if d[key] == default:                     # the scenes and descriptions made before stay the same
+                del d[key]
+        return json.dumps(d, sort_keys=True)
 
     @classmethod
     def from_json(cls, text):
@@ -198,6 +207,8 @@ def _validate_choices(p):
         raise ValueError(f"packing = {p.packing!r} is invalid: one of {PACKINGS}")
     if p.glue not in GLUES:
         raise ValueError(f"glue = {p.glue!r} is invalid: one of {GLUES}")
+    if p.distribution not in DISTRIBUTIONS:
+        raise ValueError(f"distribution = {p.distribution!r} is invalid: one of {DISTRIBUTIONS}")
     # The release lowers the goal every 1000 steps: fewer would be one sudden drop.
     if isinstance(p.release_steps, bool) or not isinstance(p.release_steps, int) or p.release_steps < 1000 \
             or p.release_steps % 1000:

@@ -359,14 +359,22 @@ class Test:
             self._on_record(self, row)
 
     def cycles(self, mode, amplitude, n_cycles=4, steps_per_cycle=None, period=40.0, every=None,
-               on_record=None):
+               on_record=None, wall_speed=None):
         """n_cycles cosine cycles of amplitude Dx = amplitude (in d0) in tension or compression.
-        The period is ``steps_per_cycle`` steps, or ``period`` elastic crossing times. Returns
-        the rows (iter, Dx, F/(kp d0)) recorded every ``every`` steps (default: 400 per cycle)."""
+        The period is ``steps_per_cycle`` steps, or the one at which the walls' relative speed
+        peaks at ``wall_speed`` (the scene's units: pi amplitude d0 / wall_speed; the period is
+        a multiple of 8 steps, so the peak is up to 8/steps faster), or ``period``
+        elastic crossing times. Returns the rows (iter, Dx, F/(kp d0)) recorded every ``every``
+        steps (default: 400 per cycle)."""
         sign = check_mode(mode)
         _cycle_arguments(amplitude, n_cycles, every)
+        if steps_per_cycle is not None and wall_speed is not None:
+            raise ValueError("wall_speed is invalid together with steps_per_cycle: give one")
         if steps_per_cycle is not None:
             _whole("steps_per_cycle", steps_per_cycle)
+        elif wall_speed is not None:
+            _checks.positive("wall_speed", wall_speed)
+            steps_per_cycle = max(1, int(round(math.pi * amplitude * self.p.d0 / wall_speed / O.dt)))
         else:
             _checks.positive("period", period)
             steps_per_cycle = int(round(period * self.t_cross / O.dt))
