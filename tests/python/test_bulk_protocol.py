@@ -84,7 +84,13 @@ class Refusals(unittest.TestCase):
                  ("material = ", dict(material=dict(USER, label=object()))),
                  ("material is invalid: it lacks 'gammaN'",
                   dict(material={k: v for k, v in USER.items() if k != "gammaN"})),
-                 ("material['gammaN'] = ", dict(material=dict(USER, gammaN=0.0)))]
+                 ("material['gammaN'] = ", dict(material=dict(USER, gammaN=0.0))),
+                 ("distribution = ", dict(distribution="weibull")), ("mixture = ", dict(mixture="glass")),
+                 ("mixture[0] is invalid: its number fraction", dict(mixture=((1.5, USER),))),
+                 ("mixture[0] is invalid: its material", dict(mixture=((0.5, "glass"),))),
+                 ("mixture[0]['kp'] = ", dict(mixture=((0.5, dict(USER, kp=-1.0)),))),
+                 ("mixture[1]['gammaN'] = ", dict(mixture=((0.2, USER), (0.2, dict(USER, gammaN=0.0))))),
+                 ("mixture is invalid: its fractions add up", dict(mixture=((0.5, USER), (0.5, USER))))]
         for prefix, kw in cases:
             with self.subTest(prefix=prefix, kw=kw):
                 self.refused(prefix, **kw)

@@ -4,7 +4,7 @@
 # any work. The checks are the stages' own targets (stress within tol_stress of each goal, kinetic
 # energy below tol_ke of the energy scale), the walls' motion (back to the start's length to
 # rounding), and the protocol read back from the saved scene exactly; a die; cycles whose period
-# is the walls' speed; the radius distributions.
+# is the walls' speed; the radius distributions; a mixture of two materials.
 import math
 import os
 import tempfile
@@ -190,6 +190,26 @@ for dist, rel, want in (("gaussian", 0.1, 0.0880), ("uniform", 0.1, 0.1), ("logn
         worst = min((a[0] - b[0]).norm() - a[1] - b[1] for k, a in enumerate(pos) for b in pos[k + 1:])
         check(worst >= 0 and max(r) > 0.6 * D0, f"radii {dist}, rel_std {rel}: up to {max(r) / D0:.2f} d0, "
               f"placed without overlap (closest gap {worst / D0:.2e} d0)")
+# 8. A mixture: a quarter of the particles twice as stiff and 1.5 times as dense. Each keeps its kind
+# through the stages (the frictionless packing swaps every material and back), a contact of two kinds
+# has the harmonic mean of their kp (docs/model.md section 8: 2 x 250 x 500 / 750), and the sample
+# reaches the stages' targets.
+hard = dict(USER, kp=500.0, k1=250.0, kc=50.0, density=3750.0)
+pm = p.replace(mixture=((0.25, hard),), seed=5)
+info_m = bulk.prepare(os.path.join(out, "mixture.yade.gz"), pm, progress=False)
+kinds = [O.bodies[i].material.label for i in sample.sphere_ids()]
+counts = {"particles": 48, "particles-1": 16}
+check(kinds.count("particles-1") == 16 and kinds.count("particles") == 48 and info_m["built"]["mixture"] == counts,
+      "mixture: 16 of 64 particles of the second kind, kept through the stages", str(info_m["built"]["mixture"]))
+mixed = [i.phys.kp for i in O.interactions if i.isReal and O.bodies[i.id1].material.label.startswith("particles")
+         and O.bodies[i.id2].material.label.startswith("particles")
+         and O.bodies[i.id1].material.label != O.bodies[i.id2].material.label]
+check(mixed and all(abs(k - 2 * 250.0 * 500.0 / 750.0) < 1e-9 * k for k in mixed),
+      f"mixture: the {len(mixed)} contacts of two kinds have kp = 2 x 250 x 500/750")
+rel = info_m["released"]
+check(all(abs(v / (0.02 * 250.0 / D0 * 1e-3) - 1) < 0.01 for v in rel["wall_stress"].values()),
+      "mixture: released to p_r on every wall", str(rel["wall_stress"]))
+check(bulk.Protocol.from_json(pm.to_json()) == pm, "mixture: the protocol comes back from its JSON")
 try:
     p.replace(distribution="weibull")
     check(False, "Protocol refuses distribution")

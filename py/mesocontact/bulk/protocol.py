@@ -17,7 +17,7 @@ from .. import checks as _checks
 
 PACKINGS = ("full", "frictionless")   # the law while the gas is compacted: full, or without friction and adhesion
 DISTRIBUTIONS = ("gaussian", "uniform", "lognormal")  # the radii's, about d0/2 with relative std rel_std
-_LATER_DEFAULTS = {"distribution": "gaussian"}
+_LATER_DEFAULTS = {"distribution": "gaussian", "mixture": ()}
 GLUES = ("loading", "all", "sinter")   # adhesive walls: the two x walls after sintering, all six after, all six before
 TAG = "mesocontact.bulk"               # the O.tags key that carries the protocol with the scene
 REQUIRED = ("density", "k1", "kp", "kc", "phiF", "gammaN")  # MesoMat keywords the stages read
@@ -72,6 +72,7 @@ class Protocol:
     name: str = "user"
     units: str = ""
     distribution: str = "gaussian"
+    mixture: tuple = ()
 
     def __post_init__(self):
         # A value, not a view of the caller's objects: the material copied, sequences as tuples.
@@ -80,6 +81,10 @@ class Protocol:
         for key in ("aspect", "drag"):
             if isinstance(getattr(self, key), list):
                 object.__setattr__(self, key, tuple(getattr(self, key)))
+        if isinstance(self.mixture, (list, tuple)):
+            object.__setattr__(self, "mixture", tuple(
+                (f, dict(m)) if isinstance(m, dict) else (f, m) for f, m in
+                (x if isinstance(x, (list, tuple)) and len(x) == 2 else (None, x) for x in self.mixture)))
         _validate(self)
         try:
             self.to_json()
@@ -148,7 +153,17 @@ class Protocol:
     def from_json(cls, text):
         kw = json.loads(text)
         kw["aspect"], kw["drag"] = tuple(kw["aspect"]), tuple(kw["drag"])
+        if "mixture" in kw:
+            kw["mixture"] = tuple((f, m) for f, m in kw["mixture"])
         return cls(**kw)
+
+    def materials(self):
+        """[(label, number fraction, MesoMat keywords)] of the particles: 'particles' (the
+        ``material``, the rest of the fractions), then 'particles-1', 'particles-2', ... of the
+        mixture."""
+        rest = 1.0 - sum(f for f, _ in self.mixture)
+        return [("particles", rest, dict(self.material))] + [
+            (f"particles-{k + 1}", f, dict(m)) for k, (f, m) in enumerate(self.mixture)]
 
 
 def _kp(material):
@@ -165,19 +180,42 @@ def _validate(p):
     _validate_choices(p)
 
 
-def _validate_numbers(p):
-    """_validate's first half: the material and the numbers (stresses, speeds, tolerances, n, rel_std)."""
-    _kp(p.material)
+def _validate_material(name, material):
+    if name == "material":
+        _kp(material)
+    elif not (_checks.is_number(material.get("kp")) and material["kp"] > 0):
+        raise ValueError(f"{name}['kp'] = {material.get('kp')!r} is invalid: a positive number")
     for key in REQUIRED:
-        if key not in p.material:
-            raise ValueError(f"material is invalid: it lacks {key!r} (needs {', '.join(REQUIRED)})")
+        if key not in material:
+            raise ValueError(f"{name} is invalid: it lacks {key!r} (needs {', '.join(REQUIRED)})")
     # The stages come to rest through the law's dashpot and the background drag (drag x gammaN):
     # without gammaN they never would.
-    _checks.positive("material['gammaN']", p.material["gammaN"])
-    _checks.positive("material['density']", p.material["density"])
+    _checks.positive(f"{name}['gammaN']", material["gammaN"])
+    _checks.positive(f"{name}['density']", material["density"])
     for key in ("k1", "kc", "phiF", "fa", "kca", "kt", "kr", "ko", "gammaT", "gammaR", "gammaO"):
-        if key in p.material:
-            _checks.nonnegative(f"material[{key!r}]", p.material[key])
+        if key in material:
+            _checks.nonnegative(f"{name}[{key!r}]", material[key])
+
+
+def _validate_mixture(p):
+    """The mixture: pairs (number fraction, a material dict as ``material``), fractions in (0, 1)
+    leaving the first material a share."""
+    if not isinstance(p.mixture, tuple):
+        raise ValueError(f"mixture = {p.mixture!r} is invalid: pairs (number fraction, material dict)")
+    for k, (f, m) in enumerate(p.mixture):
+        if not (_checks.is_number(f) and 0 < f < 1) or isinstance(f, bool):
+            raise ValueError(f"mixture[{k}] is invalid: its number fraction {f!r} must lie in (0, 1)")
+        if not isinstance(m, dict):
+            raise ValueError(f"mixture[{k}] is invalid: its material {m!r} must be a dict of MesoMat keywords")
+        _validate_material(f"mixture[{k}]", m)
+    if sum(f for f, _ in p.mixture) >= 1:
+        raise ValueError("mixture is invalid: its fractions add up to 1 or more (the first material needs a share)")
+
+
+def _validate_numbers(p):
+    """_validate's first half: the materials and the numbers (stresses, speeds, tolerances, n, rel_std)."""
+    _validate_material("material", p.material)
+    _validate_mixture(p)
     for key in ("d0", "sinter_stress", "release_stress", "gas_fraction", "tol_stress", "tol_ke"):
         _checks.positive(key, getattr(p, key))
     for key in ("packing_stress", "compaction_speed", "sinter_speed", "energy_stress", "hold_speed"):

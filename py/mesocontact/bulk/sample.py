@@ -61,8 +61,9 @@ def particle_material(protocol, label="particles", **changes):
 
 def without_adhesion(protocol):
     """The keywords that switch the particles' adhesion off: kc, and the non-contact fa where the
-    material has one."""
-    return dict(kc=0.0, **({"fa": 0.0} if protocol.material.get("fa", 0.0) > 0 else {}))
+    material has one (``protocol``: a Protocol, or one material's keywords)."""
+    material = protocol if isinstance(protocol, dict) else protocol.material
+    return dict(kc=0.0, **({"fa": 0.0} if material.get("fa", 0.0) > 0 else {}))
 
 
 def mould_material(protocol):
@@ -81,11 +82,14 @@ def background_damping(protocol, reference="lab"):
 
 
 def contact_step(protocol, r_min):
-    """t_c/50 of the stiffest, lightest pair (every spring of the law resolved)."""
-    m = protocol.material
-    m_min = _params.sphere_mass(r_min, m["density"])
-    return _params.resolved_step(m["kp"], m_min, kt=m.get("kt", 0.0), kr=m.get("kr", 0.0), ko=m.get("ko", 0.0),
-                                 gamma=m["gammaN"])
+    """t_c/50 of the stiffest, lightest pair (every spring of the law resolved; in a mixture the
+    smallest over its materials)."""
+    steps = []
+    for _, _, m in protocol.materials():
+        m_min = _params.sphere_mass(r_min, m["density"])
+        steps.append(_params.resolved_step(m["kp"], m_min, kt=m.get("kt", 0.0), kr=m.get("kr", 0.0),
+                                           ko=m.get("ko", 0.0), gamma=m["gammaN"]))
+    return min(steps)
 
 
 def engines(protocol, controller=None, extra=(), reference="lab"):
@@ -146,6 +150,19 @@ def _place(radii, sides, cell, rng):
     return placed
 
 
+def _kinds(p, n):
+    """Each sphere's material label: 'particles' alone, or a mixture's kinds in their number
+    fractions (rounded; the first material takes the rest), shuffled by their own generator so that
+    the radii and places are those of the same seed without a mixture."""
+    if not p.mixture:
+        return ["particles"] * n
+    counts = [int(round(f * n)) for _, f, _ in p.materials()[1:]]
+    kinds = [label for (label, _, _), c in zip(p.materials()[1:], counts) for _ in range(c)]
+    kinds = ["particles"] * (n - len(kinds)) + kinds
+    random.Random(p.seed + 104729).shuffle(kinds)
+    return kinds
+
+
 def build(protocol):
     """A loose random gas of the protocol's n spheres in a box of six smooth walls (ids 0-5,
     spheres after), sides in the ratios protocol.aspect; the scene carries the protocol
@@ -157,7 +174,8 @@ def build(protocol):
     aspect = p.aspect
     side = (volume / p.gas_fraction / (aspect[0] * aspect[1] * aspect[2])) ** (1.0 / 3.0)
     sides = [side * a for a in aspect]
-    materials = [_w.MesoMat(**mould_material(p)), _w.MesoMat(**particle_material(p))]  # refused before the reset
+    materials = [_w.MesoMat(**mould_material(p))] + [_w.MesoMat(**dict(m, label=label))  # refused before the reset
+                                                     for label, _, m in p.materials()]
     _scene.reset()
     O.tags[TAG] = p.to_json()
     for mat in materials:
@@ -167,12 +185,15 @@ def build(protocol):
     # cells at least a diameter wide, so that the 27 cells about one hold every sphere it can overlap
     # (1.2 d0 holds them for radii up to 0.6 d0: every preparation made so far, rel_std <= 0.1, unchanged)
     placed = _place(radii, sides, max(p.d0 * 1.2, 2.0 * max(radii)), rng)
-    O.bodies.append([_utils.sphere(c, r, material="particles") for c, r in placed])
+    O.bodies.append([_utils.sphere(c, r, material=kind) for (c, r), kind in zip(placed, _kinds(p, len(placed)))])
     O.dt = contact_step(p, min(radii))
     out = {"n": p.n, "radii": (min(radii), max(radii)), "side0": side, "dt": O.dt, "material": p.name,
            "kc_over_kp": p.material["kc"] / p.kp, "seed": p.seed, "rel_std": p.rel_std}
     if p.distribution != "gaussian":
         out["distribution"] = p.distribution
+    if p.mixture:
+        out["mixture"] = {label: sum(1 for i in sphere_ids() if O.bodies[i].material.label == label)
+                          for label, _, _ in p.materials()}
     if tuple(aspect) != (1, 1, 1):
         out["aspect"] = list(aspect)
     return out

@@ -92,8 +92,15 @@ def compact(protocol, goal, speed, progress, chunk=500, max_steps=200000):
 
 
 def switch_particles(label):
-    """Gives every sphere the material ``label``, each contact keeping its history."""
-    _s.give_material(_s.sphere_ids(), [m for m in O.materials if m.label == label][0])
+    """Gives every sphere the material ``label`` ('particles' or 'packing'; in a mixture each
+    sphere the one of its own kind, 'particles-k' or 'packing-k'), each contact keeping its
+    history."""
+    by_label = {m.label: m for m in O.materials}
+    kinds = {}
+    for i in _s.sphere_ids():
+        kinds.setdefault(O.bodies[i].material.label.partition("-")[2], []).append(i)
+    for kind, ids in sorted(kinds.items()):
+        _s.give_material(ids, by_label[label + ("-" + kind if kind else "")])
 
 
 def wall_contacts(name):
@@ -106,8 +113,9 @@ def _pack_frictionless(p, info, progress):
     """Packed without friction, rolling, torsion and adhesion to rest at the packing stress, then
     the full law back, each contact keeping its history."""
     packing_stress = p.packing_stress if p.packing_stress is not None else 0.1 * p.sinter_stress
-    O.materials.append(_w.MesoMat(**_s.particle_material(p, **_s.without_adhesion(p), frictionAngle=0.0, muR=0.0,
-                                                         muO=0.0, label="packing")))
+    for label, _, mat in p.materials():  # each kind of particle without friction and adhesion
+        O.materials.append(_w.MesoMat(**dict(mat, **_s.without_adhesion(mat), frictionAngle=0.0, muR=0.0, muO=0.0,
+                                             label=label.replace("particles", "packing"))))
     switch_particles("packing")
     set_goal(packing_stress)
     info["compacted"] = compact(p, packing_stress, p.speeds()[0], progress)
