@@ -1,0 +1,65 @@
+"""Where the agglomerates' cycles lose energy and hold on (issue #59, item 2; plain Python).
+
+Rows are a cycle run's (iter, delta, F) with F > 0 pushing the two apart; events its turns
+(what, iter, delta, F). Work is the trapezoidal sum of F d(delta): > 0 while pressing, < 0 while the
+pair pushes the caps back. Units are the run's (mm and the study's force unit, 1e3 N: work in
+1e3 N mm = 1 J).
+
+- ``loops``: per cycle (a loading to a turn and the unloading after it), the work put in while
+  loading, the work given back while unloading, the loss (their sum, the loop's area when it
+  closes), and the tension's work (the part of the unloading with F < 0);
+- ``pull``: the last stroke apart of a run that ends apart: the tension's work, its largest
+  force, and its range (from the first touch to where the last contact let go, in d0);
+- ``viscous_gamma``: gammaN from the extra loss of a faster run over a slower one, both through
+  the same turns: a dashpot gammaN at constant relative speed v adds gammaN v per unit of path in
+  contact, so gammaN = (loss_fast - loss_slow) / (v_fast - v_slow) / path.
+"""
+D0 = 0.01  # mm, the primaries' d0
+
+
+def _work(rows):
+    return sum(0.5 * (a[2] + b[2]) * (b[1] - a[1]) for a, b in zip(rows, rows[1:]))
+
+
+def _between(rows, i0, i1):
+    return [r for r in rows if i0 <= r[0] <= i1]
+
+
+def _tension_work(rows):
+    """The work of the tensile forces (F < 0) along rows: > 0 when the pair held on while pulled apart."""
+    return -sum(0.5 * (min(a[2], 0.0) + min(b[2], 0.0)) * (a[1] - b[1]) for a, b in zip(rows, rows[1:]))
+
+
+def loops(rows, events):
+    """[{amplitude, w_in, w_back, loss, tension_work, path}] per loaded turn (see the module);
+    path: the loading's and unloading's length where |F| exceeds 1 % of the run's largest."""
+    scale = max(abs(r[2]) for r in rows)
+    out = []
+    for k, e in enumerate(events):
+        if not e[0].startswith("loaded to") or k + 1 >= len(events):
+            continue
+        load, unload = _between(rows, events[k - 1][1], e[1]), _between(rows, e[1], events[k + 1][1])
+        w_in, w_back = _work(load), _work(unload)
+        path = sum(abs(b[1] - a[1]) for a, b in list(zip(load, load[1:])) + list(zip(unload, unload[1:]))
+                   if abs(a[2]) > 0.01 * scale)
+        out.append({"amplitude": float(e[0].split()[2]), "w_in": w_in, "w_back": w_back, "loss": w_in + w_back,
+                    "tension_work": _tension_work(unload), "path": path})
+    return out
+
+
+def pull(rows, events):
+    """The last stroke apart (from the last turn to the end): tension work, largest tension, the
+    range from the first touch to where the last contact let go [d0], and how the stroke ended."""
+    touch = next(e for e in events if e[0] == "touch")
+    last = events[-1]
+    start = max(e[1] for e in events if e[0].startswith("loaded to"))
+    stroke = _between(rows, start, last[1])
+    return {"tension_work": _tension_work(stroke), "largest_tension": -min(r[2] for r in stroke),
+            "range_d0": (touch[2] - last[2]) / D0, "ended": last[0]}
+
+
+def viscous_gamma(slow, fast, v_slow, v_fast):
+    """gammaN per loaded turn from two runs' loops (loops()) at relative speeds v_slow < v_fast, over
+    the slow run's path in contact [force/(length/time)]."""
+    return [(f["loss"] - s["loss"]) / (v_fast - v_slow) / s["path"]
+            for s, f in zip(slow, fast) if s["amplitude"] == f["amplitude"] and s["path"] > 0]

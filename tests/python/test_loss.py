@@ -1,0 +1,65 @@
+"""mesostudies.agglomerate.loss against loops whose areas are known by hand: a loading and
+unloading on one line loses nothing; Luding's triangle (k1 up to delta_max, k2 back to zero force)
+loses k1 dm^2/2 - k2 (dm - d0)^2/2 = (k1/2) dm^2 (1 - k1/k2) exactly, as the trapezoids are exact
+on straight lines; a tensile branch's work is its triangle; a dashpot gamma at speed v adds gamma v
+per unit of path, which viscous_gamma gives back."""
+import unittest
+
+from mesostudies.agglomerate import loss
+
+
+def line(d_from, d_to, force, n=200):
+    return [(d_from + (d_to - d_from) * k / n, force(d_from + (d_to - d_from) * k / n)) for k in range(n + 1)]
+
+
+def run(strokes):
+    """rows (iter, delta, F) and events from strokes [(what, [(delta, F), ...])]: each event at a stroke's end;
+    every stroke's points kept (a jump of the force at a turn is a vertical side, of no area)."""
+    rows, events, it = [], [], 0
+    for what, pts in strokes:
+        for d, f in pts:
+            rows.append((it, d, f))
+            it += 1
+        events.append((what, rows[-1][0], rows[-1][1], rows[-1][2]))
+    return rows, events
+
+
+class Loops(unittest.TestCase):
+    def test_elastic_line_loses_nothing(self):
+        k, a = 3.0, 0.1
+        rows, ev = run([("touch", [(0.0, 0.0)]), ("loaded to 0.1 d0", line(0, a, lambda d: k * d)),
+                        ("unloaded", line(a, 0, lambda d: k * d))])
+        (c,) = loss.loops(rows, ev)
+        self.assertAlmostEqual(c["w_in"], 0.5 * k * a * a, places=12)
+        self.assertAlmostEqual(c["loss"], 0.0, places=15)
+        self.assertEqual(c["tension_work"], 0.0)
+
+    def test_triangle_and_tension(self):
+        k1, k2, dm = 2.0, 5.0, 0.2
+        d0 = dm * (1 - k1 / k2)          # where the unloading reaches zero force
+        kc = 1.5
+        rows, ev = run([("touch", [(0.0, 0.0)]), ("loaded to 0.2 d0", line(0, dm, lambda d: k1 * d)),
+                        ("unloaded", line(dm, d0, lambda d: k2 * (d - d0))
+                         + line(d0, d0 - 0.05, lambda d: -kc * (d0 - d))[1:]),
+                        ("apart", line(d0 - 0.05, d0 - 0.05, lambda d: 0.0, n=1))])
+        (c,) = loss.loops(rows, ev)
+        tension = 0.5 * kc * 0.05 ** 2
+        self.assertAlmostEqual(c["loss"], 0.5 * k1 * dm * dm - 0.5 * k2 * (dm - d0) ** 2 + tension, places=12)
+        self.assertAlmostEqual(c["tension_work"], tension, places=12)
+        p = loss.pull(rows, ev)
+        self.assertAlmostEqual(p["largest_tension"], kc * 0.05, places=12)
+        self.assertAlmostEqual(p["range_d0"], -(d0 - 0.05) / loss.D0, places=9)
+        self.assertEqual(p["ended"], "apart")
+
+    def test_viscous_gamma(self):
+        k, a, gamma = 3.0, 0.1, 0.7
+
+        def runs(v):
+            return run([("touch", [(0.0, 0.0)]), ("loaded to 0.1 d0", line(0, a, lambda d: k * d + gamma * v)),
+                        ("unloaded", line(a, 0, lambda d: k * d - gamma * v))])
+        slow, fast = (loss.loops(*runs(v)) for v in (0.5, 2.0))
+        self.assertAlmostEqual(loss.viscous_gamma(slow, fast, 0.5, 2.0)[0], gamma, places=9)
+
+
+if __name__ == "__main__":
+    unittest.main()
