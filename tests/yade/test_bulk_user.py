@@ -4,7 +4,8 @@
 # any work. The checks are the stages' own targets (stress within tol_stress of each goal, kinetic
 # energy below tol_ke of the energy scale), the walls' motion (back to the start's length to
 # rounding), and the protocol read back from the saved scene exactly; a die; cycles whose period
-# is the walls' speed; the radius distributions; a mixture of two materials.
+# is the walls' speed; force-turn cycles in compression; the radius distributions; a mixture of two
+# materials.
 import math
 import os
 import tempfile
@@ -168,6 +169,17 @@ check(die.steps_per_cycle == 8 * (round(exact) // 8) and -3e-5 < rise < 1e-9,
       "cycles(wall_speed=v): the pistons' relative speed peaks at v", f"{max(top) / v_walls:.6f} of v, "
       f"{die.steps_per_cycle} steps per cycle ({exact:.2f} for v exactly)")
 
+# 6b. Force-turn cycles in compression (in the die): each press turns at Dx = -0.02 and each return
+# when the force is back at the start's or Dx at 0, each within a check (a quarter record: 1/1600 of
+# the amplitude at this speed, allowed 1/100).
+n0 = len(die.rows)
+die.force_cycles(0.02, n_cycles=2, period=40.0, mode="compression")
+f_start = die.rows[n0][2]  # the call's first record
+press, back = die.turns[0::2], die.turns[1::2]
+check(len(die.turns) == 4 and all(-0.02 - 2e-4 < t[1] <= -0.02 for t in press) and all(t[2] > f_start for t in press)
+      and all(t[2] <= f_start or t[1] >= 0 for t in back),
+      "force_cycles in compression: presses turn at Dx = -0.02, returns at the start's force or Dx = 0",
+      "; ".join(f"Dx {t[1]:+.5f} F {t[2]:+.3e}" for t in die.turns))
 # 7. Radius distributions (the gas only): each has the mean d0/2 and the relative spread asked for,
 # less what its cut removes (a normal cut at 2 sigma keeps sqrt(1 - 4 phi(2)/(2 Phi(2) - 1)) = 0.880 of
 # its sigma: 0.0880 for rel_std 0.1; uniform keeps 0.1, bounded by 1 +- sqrt(3) 0.1); 2000 radii

@@ -404,14 +404,17 @@ class Test:
         self._halt(motion)
         return self.rows
 
-    def force_cycles(self, amplitude, n_cycles=4, period=480.0, every=None, on_record=None, max_strokes_steps=None):
+    def force_cycles(self, amplitude, n_cycles=4, period=480.0, every=None, on_record=None, max_strokes_steps=None,
+                     mode="tension"):
         """n_cycles tension cycles that turn back at Dx = amplitude and return until the force is
         back at the start's (F >= the first record's F) or, whichever comes first, the length is
-        (Dx <= 0): cycles about the sample's present length rather than its first one. The walls
+        (Dx <= 0): cycles about the sample's present length rather than its first one (``mode``
+        'compression': turning at Dx = -amplitude, back until F <= the start's or Dx >= 0). The walls
         move at constant speed, each amplitude d0 / (period t_w), the cosine cycle's mean speed,
         so that a return to Dx = 0 takes the cosine cycle's time. The turns are checked every
         quarter record (the overshoot is below 1/800 of the amplitude). Returns the rows;
         ``self.turns`` holds (iter, Dx, F) where each stroke ended."""
+        sign = check_mode(mode)
         _cycle_arguments(amplitude, n_cycles, every)
         _checks.positive("period", period)
         if max_strokes_steps is not None:
@@ -432,20 +435,22 @@ class Test:
         for cycle in range(int(n_cycles)):
             for outward in (True, False):
                 for e in motion:
-                    e.velocity = speed if outward else -speed
+                    e.velocity = (speed if outward else -speed) * sign
                 start = O.iter
                 while True:
                     self._run(check)
                     Test.steps_run += check
                     dx, f = self.dx(), self.force()
-                    if (dx >= amplitude) if outward else (f >= f_start or dx <= 0):
+                    if sign > 0 and ((dx >= amplitude) if outward else (f >= f_start or dx <= 0)):
+                        break
+                    if sign < 0 and ((dx <= -amplitude) if outward else (f <= f_start or dx >= 0)):
                         break
                     if O.iter - start > limit:
                         raise RuntimeError(f"force_cycles: the {'outward' if outward else 'return'} stroke of cycle "
                                            f"{cycle + 1} did not end in {limit} steps (Dx = {dx:.4g}, F = {f:.4g})")
                 self.turns.append((O.iter, dx, f))
                 if self.progress:
-                    print(f"  tension Dx={amplitude:g} to the start's force: cycle {cycle + 1}/{n_cycles} "
+                    print(f"  {mode} Dx={amplitude:g} to the start's force: cycle {cycle + 1}/{n_cycles} "
                           f"{'out' if outward else 'back'} at Dx={dx:+.4f}  F/(kp d0)={f:+.4e}  "
                           f"({time.time() - t0:.0f} s)",
                           flush=True)
