@@ -88,6 +88,21 @@ class TestStatements(unittest.TestCase):
         v = sorted(r["last_chain_Dx"] for r in rows if (r["packing"], r["glue"], r["rel_std"], r["sinter"], r["drag"])
                    == ("frictionless", "sinter", 0.1, 0.02, "contacts"))
         self.assertIn(", ".join(f"{x:.2f}" for x in v), items[20]["why"])
+        # 23: the peak's decay from cycle 1 to 4 of the slowest compression runs, each cycle's largest force
+        # read from the CSV here; the verdict by the rule (at most 5 % at 0.1, above at 0.2, for each measure)
+        decay = {}
+        for a in (0.05, 0.1, 0.2, 0.3):
+            with open(os.path.join(chosen, f"compression-Dx{a:g}-P480.json")) as f:
+                js = json.load(f)
+            rows = statements.read_csv(os.path.join(chosen, f"compression-Dx{a:g}-P480.csv"))
+            i0, n = rows[0][0], js["steps_per_cycle"]
+            peaks = [max(r[2] for r in rows if i0 + k * n <= r[0] <= i0 + (k + 1) * n) for k in range(4)]
+            decay[a] = 1 - peaks[3] / peaks[0]
+        self.assertIn("peak decay over the cycles " + ", ".join(f"{a:g}: {100 * decay[a]:.2g} %" for a in decay),
+                      items[23]["project"])
+        self.assertTrue(decay[0.1] <= 0.05 < decay[0.2])
+        self.assertIn("set 0.05: 4.2 %, 0.1: 8.2 %", items[23]["project"])  # over 5 % at 0.1: not all three agree
+        self.assertEqual(items[23]["verdict"], "◐")
         # every statement not or only partly met says why (or that no reason was found)
         self.assertTrue(all(items[n]["why"] for n, s in items.items() if s["verdict"] in ("✗", "◐")),
                         [n for n, s in items.items() if s["verdict"] in ("✗", "◐") and not s["why"]])
