@@ -15,7 +15,7 @@ from mesocontact.bulk import agglomerate, pair_cycles
 from mesocontact.bulk.collisions import Collision
 from mesocontact.jobs import Job, Registry
 from mesocontact.outputs import read_csv
-from . import compare, ensemble, make, measure, plots, report
+from . import compare, ensemble, make, measure, plots, predict, report
 from .primaries import D0, KP, SCALES
 
 AMPLITUDES = {False: (0.1, 0.2, 0.4), True: (0.05, 0.1, 0.2)}    # d0 beyond the first touch
@@ -23,6 +23,7 @@ SPEEDS = {False: (0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0, 160.0,
 CAP_SPEED = 0.0025   # each cap's speed in the cycles [mm/us], the tablet's pull speed (2.5 m/s)
 SLOWER = 4
 DIRECTION_SEED = 1
+CAMPAIGN = "campaigns/agglomerate"  # the committed campaign: its slow cycles and their fit
 
 
 def _parser():
@@ -306,7 +307,7 @@ def compare_job(a):
 def everything(a):
     """The job 'all': the others in turn, in the registry's order."""
     for job in JOBS:
-        if job not in ("all", "ensemble", "rate", "pulls"):
+        if job not in ("all", "ensemble", "rate", "pulls", "predict"):
             JOBS.get(job).function(a)
 
 
@@ -336,5 +337,8 @@ JOBS = Registry([
     Job("pulls", lambda a: measure.pulls(ensemble.block_dir(a.out, (a.seeds or (1,))[0]), (a.seeds or (1,))[0],
                                          a.quick, a.amplitudes or measure.PULL_AMPLITUDES),
         "issue #59: a fresh pair pressed once to each --amplitudes and pulled fully apart, slowly. Not part of 'all'."),
+    Job("predict", lambda a: predict.predict(a.out, CAMPAIGN, make.ensure(ensemble.block_dir(a.out, 1), seed=1)),
+        "issue #59: e predicted from the cycles alone (the slow cycles' fit, gammaN from the rate cycles) against "
+        "the ensemble under --out: ensemble.json, ensemble.md. Not part of 'all'."),
     Job("all", everything, "prepare, cycles, wall, collide and compare in turn."),
 ])

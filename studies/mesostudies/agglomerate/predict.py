@@ -1,0 +1,80 @@
+"""Issue #59, item 3: the restitution predicted from the cycles alone and set against the ensemble
+(inside ``yade``: the meso pair with viscosity runs in YADE).
+
+What the law takes from where:
+- k1, kp, kc, phiF (and the overlap's offset): the fit to the slowest pair cycles (the campaign's
+  cycles-v0.625, ``compare.fit``), nothing from a collision;
+- gammaN: the extra loss per cycle of the pair's cycles at collision-like cap speeds (rate-cycles-v*)
+  over the slow cycles at the same turns, over the slow cycles' path in contact (``loss.viscous_gamma``;
+  the median over the speeds and amplitudes measured);
+- e(v): two meso-particles of that law (``compare.meso_collisions``) at each speed of the ensemble.
+
+Written: ensemble.json (speeds, n_blocks, n_directions, e_mean, e_sd over every block and direction
+of ``ensemble_report``'s primary measure, e_predicted, fitted_to, and the other measures' means),
+ensemble.md (the table) and ensemble.png in ``out``.
+"""
+import json
+import os
+import statistics
+
+from mesocontact import outputs
+from mesocontact.outputs import read_csv
+from . import compare, ensemble_report, loss
+
+PRIMARY = "e_contact"  # the contact point's normal restitution, spin included: a head-on law's e
+SLOW = "cycles-v0.625"
+
+
+def _run(d, name):
+    with open(os.path.join(d, name + ".json")) as f:
+        events = json.load(f)["events"]
+    return [tuple(r) for r in read_csv(os.path.join(d, name + ".csv"))], events
+
+
+def viscosity(campaign, block, slow=SLOW):
+    """(gammaN [kg/s], its values per rate run and amplitude): the fast pair cycles in ``block``
+    (rate-cycles-v<m/s per cap>) against the slow ones in ``campaign``."""
+    rows, ev = _run(campaign, slow)
+    v_slow = 2 * json.load(open(os.path.join(campaign, slow + ".json")))["speed_per_cap_m_s"] / 1e3
+    base = loss.loops(rows, ev)
+    per = {}
+    for f in sorted(os.listdir(block)):
+        if f.startswith("rate-cycles-v") and f.endswith(".json"):
+            name = f[:-5]
+            v = 2 * json.load(open(os.path.join(block, f)))["speed_per_cap_m_s"] / 1e3  # relative, mm/us
+            per[name] = loss.viscous_gamma(base, loss.loops(*_run(block, name)), v_slow, v)
+    values = [g for gs in per.values() for g in gs]
+    return (statistics.median(values) if values else None), per
+
+
+def predict(out, campaign, info, progress=True):
+    """The comparison (see the module); ``info``: make.ensure's description of the pair whose
+    radii and masses the meso-particles take; returns the JSON written."""
+    tab = ensemble_report.table(ensemble_report.collected(out))
+    speeds = sorted(tab)
+    with open(os.path.join(campaign, "agglomerate-vs-meso.json")) as f:
+        params = json.load(f)["fit"]
+    gamma, per = viscosity(campaign, os.path.join(out, "block-s1"))
+    e_pred = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=progress,
+                                     gammaN=gamma or 0.0)
+    res = {"speeds": speeds, "n_blocks": [tab[v]["n_blocks"] for v in speeds],
+           "n_directions": [tab[v]["n_directions"] for v in speeds], "n_runs": [tab[v]["n"] for v in speeds],
+           "measure": PRIMARY,
+           "e_mean": [tab[v][PRIMARY]["mean"] for v in speeds], "e_sd": [tab[v][PRIMARY]["sd"] for v in speeds],
+           "e_predicted": e_pred,
+           "fitted_to": {"k1, kp, kc, phiF, shift": f"the pair's slow cycles ({SLOW}, campaigns/agglomerate)",
+                         "gammaN": f"the rate cycles' extra loss over {SLOW} ({', '.join(per) or 'none'}): "
+                                   f"median {gamma} kg/s", "collisions": "nothing"},
+           "gammaN_per_run": per, "params": params, "table": {str(v): tab[v] for v in speeds}}
+    res["difference"] = [None if m is None else p - m for m, p in zip(res["e_mean"], e_pred)]
+    outputs.write_atomic(os.path.join(out, "ensemble.json"), json.dumps(res, indent=1))
+    outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res))
+    return res
+
+
+def _verdict_table(res):
+    lines = [f"| v [m/s] | runs | {res['measure']} mean ± sd | predicted | difference |", "|---|---|---|---|---|"]
+    for v, n, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["e_mean"], res["e_sd"], res["e_predicted"],
+                                 res["difference"]):
+        lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |")
+    return "\n".join(lines)
