@@ -80,6 +80,7 @@ class Collision:
         self.first = self.last = None
         self.normal_impulse = Vector3(0, 0, 0)
         self.point_sum, self.point_weight, self.recontacts = Vector3(0, 0, 0), 0.0, 0
+        self.first_impact = None  # a followed run's measures when the first impact ended (see _first_end)
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
         before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
@@ -104,7 +105,8 @@ class Collision:
 
     def _watch(self):
         count, f = self._normal_force()
-        self.normal_impulse += f * (self.every * O.dt)  # the normal forces' impulse, sampled every ``every`` steps
+        if self.first_impact is None:  # a followed run: the first impact's impulse only (exchanged particles rest)
+            self.normal_impulse += f * (self.every * O.dt)  # the normal forces' impulse, sampled every ``every`` steps
         delta = self.delta()
         if count:
             if self.first is None:
@@ -151,6 +153,8 @@ class Collision:
         O.energy.clear()
         O.trackEnergy = True  # the law's dissipation, for where the impact's energy goes
         ke0 = sample.kinetic_energy()
+        masses = [agglomerate.centre_of_mass(m)[1] for m in self.members]
+        ke_rel = 0.5 * masses[0] * masses[1] / (masses[0] + masses[1]) * v_rel ** 2  # the relative motion's
         O.run(1, True)  # the stored energies' values before the impact (the dissipated ones start at 0)
         self._energy0 = dict(O.energy.items())
         bonds = _impact.bonds(self.members) if follow is not None else None  # after a step: a loaded scene's geometry
@@ -162,16 +166,10 @@ class Collision:
         while O.time - start_time < max_time:
             O.run(chunk, True)
             if self.first is not None:
-                touch = self.last - self.first
-                apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
-                state = "apart" if apart else "joined"
-                gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
-                if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])) and self._far(follow):
-                    # no contact for a while and the surfaces part over PARTING checks (head-on or sliding past)
-                    break
-                if O.time - self.first > 5 * chunk * O.dt and self._parted() and self._far(follow):
-                    # the two largest fragments, one from each, separate; exchanged particles still join them
-                    state = "parted"
+                ended, state, gaps = self._ended(quiet, chunk, gaps)
+                if ended and follow is not None and self.first_impact is None:
+                    self.first_impact = self._first_end(v_rel, side, ke_rel)
+                if ended and self._far(follow):
                     break
             if progress:
                 print(f"  v_rel {v_rel:g}: t = {(O.time - start_time):.4g} us  {state}  "
@@ -187,6 +185,21 @@ class Collision:
                                 f"broken off {out['broken_mass_fraction']:.3f}")
         return out
 
+    def _ended(self, quiet, chunk, gaps):
+        """(whether the impact has ended, the state, the surface gaps of the checks since the two
+        last parted): no contact for a while and the surfaces part over PARTING checks (head-on
+        or sliding past), or the two largest fragments, one from each, separate (exchanged
+        particles may still join them)."""
+        touch = self.last - self.first
+        apart = not self.joined() and O.time - self.last > max(quiet * touch, 5 * chunk * O.dt)
+        state = "apart" if apart else "joined"
+        gaps = gaps[-(PARTING - 1):] + [self.surface_gap()] if apart else []
+        if len(gaps) == PARTING and all(a < b for a, b in zip(gaps, gaps[1:])):
+            return True, state, gaps
+        if O.time - self.first > 5 * chunk * O.dt and self._parted():
+            return True, "parted", gaps
+        return False, state, gaps
+
     def _far(self, follow):
         """Whether the two largest fragments' surfaces lie ``follow`` presses apart (always,
         without ``follow``)."""
@@ -199,21 +212,39 @@ class Collision:
         """The largest meso-overlap beyond the one at the first touch (the scene's length)."""
         return max(r[2] for r in self.rows) - self.touch_delta
 
+    def _fragments(self):
+        """The two largest fragments (first's, second's) when they come one from each agglomerate,
+        else None."""
+        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
+        own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
+        if len(parts) < 2 or own[0] == own[1]:
+            return None
+        return (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
+
+    def _first_end(self, v_rel, side, ke_rel):
+        """The spin-aware restitution (bulk.impact) when the first impact ends (where a run without
+        ``follow`` ends), with that impact's normal impulse and mean contact point and the
+        fragments' centres there; the impulse stops adding up from then on."""
+        frags = self._fragments()
+        out = {"e_contact": None, "e_rigid": None, "spin_energy_share": None, "spin": None,
+               "first_end_time": O.time}
+        if frags and self.point_weight > 0 and self.normal_impulse.norm() > 0:
+            out.update(_impact.spin_measures(*frags, tuple(self.normal_impulse),
+                                             tuple(self.point_sum / self.point_weight),
+                                             tuple(self.n * (-side * v_rel)), impact_energy=ke_rel))
+        return out
+
     def _followed(self, v_rel, side, bonds):
-        """The measures of a followed run: re-contacts, broken bonds, the final gap and, when the
-        two largest fragments come one from each agglomerate, the spin-aware restitution."""
+        """The measures of a followed run: re-contacts, broken bonds, the final gap, and the
+        spin-aware restitution of the first impact (None when it never ended: stuck)."""
         lost = _impact.broken(bonds)
         out = {"recontacts": self.recontacts, "bonds_before": len(bonds), "bonds_broken": len(lost),
                "bonds_broken_fraction": len(lost) / len(bonds) if bonds else None,
-               "e_contact": None, "e_rigid": None, "spin_energy_share": None, "spin": None}
-        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
-        own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
-        if len(parts) == 2 and own[0] != own[1] and self.point_weight > 0 and self.normal_impulse.norm() > 0:
-            a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
-            out["final_gap_over_press"] = _surface_gap(a, b) / self._press()
-            point = self.point_sum / self.point_weight
-            out.update(_impact.spin_measures(a, b, tuple(self.normal_impulse), tuple(point),
-                                             tuple(self.n * (-side * v_rel))))
+               **(self.first_impact or {"e_contact": None, "e_rigid": None, "spin_energy_share": None,
+                                        "spin": None})}
+        frags = self._fragments()
+        if frags:
+            out["final_gap_over_press"] = _surface_gap(*frags) / self._press()
         return out
 
     def _energy_shares(self, ke0):

@@ -43,11 +43,13 @@ def rigid(ids):
     return mass, c, vc, np.linalg.solve(inertia, L), inertia
 
 
-def spin_measures(first, second, normal, point, dv_before):
+def spin_measures(first, second, normal, point, dv_before, impact_energy=None):
     """e_contact and e_rigid (see the module) of the fragments ``first`` and ``second`` (ids) after
     a collision that began with the relative velocity ``dv_before`` (second's minus first's) and no
     spin; ``point``: the contact point, ``normal``: the direction of the normal impulse
-    (3-sequences). Also the spins' share of the impact's energy and the two angular velocities."""
+    (3-sequences); ``impact_energy``: the impact's kinetic energy of relative motion (default: 0.5
+    mu |dv_before|^2 with the fragments' reduced mass; give the whole agglomerates' when mass broke
+    off). Also the spins' share of the impact's energy and the two angular velocities."""
     import numpy as np
     n = np.asarray(normal, dtype=float)
     n /= np.linalg.norm(n)
@@ -58,7 +60,7 @@ def spin_measures(first, second, normal, point, dv_before):
     mu = parts[0][0] * parts[1][0] / (parts[0][0] + parts[1][0])
     rel = parts[1][2] - parts[0][2]
     spin = sum(0.5 * w @ inertia @ w for _, _, _, w, inertia in parts)
-    impact = 0.5 * mu * dv0.dot(dv0)
+    impact = 0.5 * mu * dv0.dot(dv0) if impact_energy is None else float(impact_energy)
     return {"e_contact": float(-(at[1] - at[0]).dot(n) / dv0.dot(n)),
             "e_rigid": float(np.sqrt(max(0.5 * mu * rel.dot(rel) + spin, 0.0) / impact)),
             "spin_energy_share": float(spin / impact),
