@@ -32,7 +32,7 @@ def _parser():
     p.add_argument("--speeds", type=_numbers, required=True, help="relative collision speeds (the block's units)")
     p.add_argument("--directions", type=int, default=1, help="approach directions: x, then drawn (default 1)")
     p.add_argument("--amplitudes", type=_numbers, default=coarse.AMPLITUDES, help="cycle amplitudes [d0]")
-    p.add_argument("--cap-speed", type=_numbers, default=None, help="the cycles' cap speed (default wave speed/8000)")
+    p.add_argument("--cap-speed", type=float, default=None, help="the cycles' cap speed (default wave speed/8000)")
     p.add_argument("--tolerance", type=float, default=0.1, help="largest |e mean - e meso| that holds")
     p.add_argument("--radius", type=float, default=None, help="carving radius (default: largest with the margin)")
     p.add_argument("--margin", type=float, default=0.5, help="d0 between a carved sphere and the walls")
@@ -41,9 +41,16 @@ def _parser():
 
 
 def main(argv):
-    a = _parser().parse_args(argv)
+    parser = _parser()
+    a = parser.parse_args(argv)
     if not os.path.exists(a.block):
-        _parser().error(f"block {a.block!r}: no such file")
+        parser.error(f"block {a.block!r}: no such file")
+    if a.directions < 1:  # refused before any work, as the library would refuse them after the carving
+        parser.error(f"--directions {a.directions}: a count >= 1")
+    for name in ("tolerance", "cap_speed", "radius", "margin"):
+        v = getattr(a, name)
+        if v is not None and not (v > 0 and math.isfinite(v)) and not (name == "margin" and v == 0):
+            parser.error(f"--{name.replace('_', '-')} {v}: a positive finite number")
     O.load(a.block)
     p = sample.current()  # refuses a scene without its Protocol
     O.step()  # a loaded state's contact geometry is made by a step
@@ -54,7 +61,7 @@ def main(argv):
     os.makedirs(a.out, exist_ok=True)
     sample.save_atomic(os.path.join(a.out, "agglomerates.yade.gz"), {"members": members, "radii": radii})
     cg = coarse.coarse_grain(members, radii, a.speeds, a.directions, a.amplitudes,
-                             a.cap_speed[0] if a.cap_speed else None, a.tolerance, out=a.out)
+                             a.cap_speed, a.tolerance, out=a.out)
     print(cg.report(), flush=True)
     print(f"written: {a.out}/coarse-grained.json, coarse-grained.png, cycles.csv", flush=True)
 

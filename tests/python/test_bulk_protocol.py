@@ -90,10 +90,20 @@ class Refusals(unittest.TestCase):
                  ("mixture[0] is invalid: its material", dict(mixture=((0.5, "glass"),))),
                  ("mixture[0]['kp'] = ", dict(mixture=((0.5, dict(USER, kp=-1.0)),))),
                  ("mixture[1]['gammaN'] = ", dict(mixture=((0.2, USER), (0.2, dict(USER, gammaN=0.0))))),
-                 ("mixture is invalid: its fractions add up", dict(mixture=((0.5, USER), (0.5, USER))))]
+                 ("mixture is invalid: its fractions add up", dict(mixture=((0.5, USER), (0.5, USER)))),
+                 ("mixture is invalid: with n = 8 a kind gets no sphere",
+                  dict(n=8, mixture=((0.45, USER), (0.45, USER), (0.09, USER))))]
         for prefix, kw in cases:
             with self.subTest(prefix=prefix, kw=kw):
                 self.refused(prefix, **kw)
+
+    def test_mixture_counts_add_up(self):
+        # the fractions of n, the largest remainders taking the rest: of 10, 0.4 -> 4, 0.35 -> 3.5, 0.25 -> 2.5;
+        # one sphere is left, for the first of the two equal remainders
+        p = P.appendix_f(n=10, mixture=((0.35, USER), (0.25, USER)))
+        self.assertEqual(p.kind_counts(), [4, 4, 2])
+        p = P.appendix_f(n=64, mixture=((0.25, USER),))
+        self.assertEqual(p.kind_counts(), [48, 16])
 
     def test_conversions_named(self):
         for prefix, call in (("sinter = ", lambda: P.Protocol.ratios(USER, 1e-4, sinter=0.0)),

@@ -159,7 +159,13 @@ check(abs(dx_press + 0.05) <= one_step and abs(die.rows[-1][1] - 0.02) <= one_st
 # 6. A period given as the walls' speed: the relative speed of the pistons peaks at it, to the period's
 # granularity (a multiple of 8 steps: up to 8/steps faster) and the records' sampling of the cosine
 # (400 a cycle: their largest within 1 - cos(pi/400) = 3e-5 below the peak).
-v_walls = p.speeds()[1]
+v_walls = 0.5 * p.speeds()[1]  # the two pistons' relative speed: each at a quarter of the sintering walls'
+try:
+    die.cycles("tension", 0.02, n_cycles=1, wall_speed=4 * v_walls)
+    refused = "no exception"
+except ValueError as e:
+    refused = str(e)
+check(refused.startswith("wall_speed"), "cycles refuses a wall_speed its period cannot hold (under 800 steps)", refused)
 top = []
 die.cycles("tension", 0.02, n_cycles=1, wall_speed=v_walls, on_record=lambda test, row: top.append(
     abs(O.bodies[sample.wall_ids()["right"]].state.vel[0] - O.bodies[sample.wall_ids()["left"]].state.vel[0])))

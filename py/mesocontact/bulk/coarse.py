@@ -28,7 +28,9 @@ loaded before each stage, loaded back at the end):
    meso-particle's e; the law holds where |mean - meso| <= ``tolerance`` and no collision broke off
    more than 1 % of the mass. ``holds_below``: the first speed where it does not.
 
-With ``out``, the folder receives cycles.csv, coarse-grained.json and coarse-grained.png.
+With ``out``, the folder receives cycles.csv, coarse-grained.json and coarse-grained.png. The scene
+given back is the one saved at the start, loaded: as after any O.load, its contacts' geometry
+(penetrationDepth) is made by the next step.
 """
 import dataclasses
 import json
@@ -114,7 +116,11 @@ class CoarseGrained:
                          f"{'yes' if ok else 'no':>6s}")
         below = self.holds_below()
         lines.append("the law holds at every speed" if below is None else
-                     f"the law stops holding at {below:g} (|mean - meso| > {self.tolerance:g} or fragmentation)")
+                     f"the law holds below {below:g} only (the slowest speed where |mean - meso| > "
+                     f"{self.tolerance:g} or a collision fragments)")
+        if self.fit.undetermined:
+            lines.append("e meso is the fit's point: it depends on " + ", ".join(self.fit.undetermined)
+                         + ", which the cycles do not fix (another point that fits as well gives another e)")
         lines += ["not determined by the cycles:"] + ["  " + t for t in self.undetermined()]
         return "\n".join(lines)
 

@@ -157,6 +157,15 @@ class Protocol:
             kw["mixture"] = tuple((f, m) for f, m in kw["mixture"])
         return cls(**kw)
 
+    def kind_counts(self):
+        """The number of spheres of each kind of materials(): the fractions of n, the largest
+        remainders taking the spheres left, so that they add up to n."""
+        kinds = self.materials()
+        counts = [int(f * self.n) for _, f, _ in kinds]
+        for k in sorted(range(len(kinds)), key=lambda k: -(kinds[k][1] * self.n - counts[k]))[:self.n - sum(counts)]:
+            counts[k] += 1
+        return counts
+
     def materials(self):
         """[(label, number fraction, MesoMat keywords)] of the particles: 'particles' (the
         ``material``, the rest of the fractions), then 'particles-1', 'particles-2', ... of the
@@ -210,6 +219,8 @@ def _validate_mixture(p):
         _validate_material(f"mixture[{k}]", m)
     if sum(f for f, _ in p.mixture) >= 1:
         raise ValueError("mixture is invalid: its fractions add up to 1 or more (the first material needs a share)")
+    if p.mixture and isinstance(p.n, int) and 0 in p.kind_counts():
+        raise ValueError(f"mixture is invalid: with n = {p.n} a kind gets no sphere ({p.kind_counts()})")
 
 
 def _validate_numbers(p):

@@ -361,9 +361,10 @@ class Test:
     def cycles(self, mode, amplitude, n_cycles=4, steps_per_cycle=None, period=40.0, every=None,
                on_record=None, wall_speed=None):
         """n_cycles cosine cycles of amplitude Dx = amplitude (in d0) in tension or compression.
-        The period is ``steps_per_cycle`` steps, or the one at which the walls' relative speed
-        peaks at ``wall_speed`` (the scene's units: pi amplitude d0 / wall_speed; the period is
-        a multiple of 8 steps, so the peak is up to 8/steps faster), or ``period``
+        The period is ``steps_per_cycle`` steps, or the one at which the two walls' relative speed
+        (twice each wall's) peaks at ``wall_speed`` (the scene's units: pi amplitude d0 / wall_speed;
+        the period is a multiple of 8 steps, so the peak is up to 8/steps faster: at least 800 steps
+        are required, 1 %), or ``period``
         elastic crossing times. Returns the rows (iter, Dx, F/(kp d0)) recorded every ``every``
         steps (default: 400 per cycle)."""
         sign = check_mode(mode)
@@ -374,7 +375,12 @@ class Test:
             _whole("steps_per_cycle", steps_per_cycle)
         elif wall_speed is not None:
             _checks.positive("wall_speed", wall_speed)
-            steps_per_cycle = max(1, int(round(math.pi * amplitude * self.p.d0 / wall_speed / O.dt)))
+            exact = math.pi * amplitude * self.p.d0 / wall_speed / O.dt
+            if max(8, 8 * (int(round(exact)) // 8)) > 1.01 * exact or exact < 800:
+                raise ValueError(f"wall_speed = {wall_speed!r} is invalid: a period of {exact:.1f} steps, too few to "
+                                 "hold the walls' speed within 1 % (at least 800 steps: wall_speed <= "
+                                 f"{math.pi * amplitude * self.p.d0 / (800 * O.dt):.4g})")
+            steps_per_cycle = int(round(exact))
         else:
             _checks.positive("period", period)
             steps_per_cycle = int(round(period * self.t_cross / O.dt))

@@ -55,8 +55,10 @@ def predict(out, campaign, info, progress=True):
     with open(os.path.join(campaign, "agglomerate-vs-meso.json")) as f:
         params = json.load(f)["fit"]
     gamma, per = viscosity(campaign, os.path.join(out, "block-s1"))
-    e_pred = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=progress,
-                                     gammaN=gamma or 0.0)
+    if gamma is None:
+        raise ValueError(f"{out}/block-s1 holds no rate cycles matching {SLOW}'s turns: gammaN cannot be measured "
+                         "(run the job 'rate' first)")
+    e_pred = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=progress, gammaN=gamma)
     res = {"speeds": speeds, "n_blocks": [tab[v]["n_blocks"] for v in speeds],
            "n_directions": [tab[v]["n_directions"] for v in speeds], "n_runs": [tab[v]["n"] for v in speeds],
            "measure": PRIMARY,
@@ -76,5 +78,6 @@ def _verdict_table(res):
     lines = [f"| v [m/s] | runs | {res['measure']} mean ± sd | predicted | difference |", "|---|---|---|---|---|"]
     for v, n, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["e_mean"], res["e_sd"], res["e_predicted"],
                                  res["difference"]):
-        lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |")
+        lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |" if m is not None else
+                     f"| {v:g} | {n} | – | {p:.3f} | – |")
     return "\n".join(lines)

@@ -86,7 +86,9 @@ def _plastic_onset(c, sets):
         + (", ".join(f"the {n} is {pct(measures[n][0.1])} at 0.1 already" for n in above if not above[n])
            or "every measure agrees") + ". Each grows about as fast from 0.05 to 0.1 as from 0.1 to 0.2 ("
         + ", ".join(f"{n} x{g[0]:.1f} then x{g[1]:.1f}" for n, g in growth.items())
-        + "): the onset is gradual, not a kink at 0.1.")
+        + "): the onset is gradual, not a kink at 0.1, and the 5 % line decides the verdict (a 3 % line puts "
+        "the cycle-2 loop's crossing between 0.05 and 0.1, a 10 % line between 0.2 and 0.3); the set, the direct "
+        "measure of plastic deformation, and statement 22's first-cycle loop (15 % at 0.1) say plastic at 0.1.")
 
 
 def crack_plane(pull):
