@@ -7,6 +7,7 @@
 # and a spin that vanishes leaves e_contact the centres' normal restitution. bonds() and broken():
 # two touching spheres make one bond, which breaks when they are moved apart and a step is taken. A
 # followed head-on collision of two single meso-particles: e is the closed form's, e_contact = e_rigid = e.
+# A clump is refused as an agglomerate.
 import numpy as np
 from yade import O, Vector3, utils
 from yade import wrapper as w
@@ -112,4 +113,17 @@ check(abs(r["e"] - want) < 1e-3 and abs(r["e_contact"] - r["e"]) < 1e-9 and abs(
       f"e_rigid {r['e_rigid']:.6f}")
 check(r["final_gap_over_press"] > 3.0 and r["recontacts"] == 0 and r["bonds_before"] == 0,
       f"followed head-on pair: {r['final_gap_over_press']:.2f} presses apart, no re-contact, no bonds")
+
+# A clump is refused as an agglomerate (its primaries move as one rigid body: cycles and collisions
+# need them free), naming the argument; free spheres are taken.
+from mesocontact.bulk import agglomerate  # noqa: E402
+O.reset()
+clump = O.bodies.appendClumped([utils.sphere((0, 0, 0), 1.0), utils.sphere((1.5, 0, 0), 1.0)])
+free = O.bodies.append([utils.sphere((5, 0, 0), 1.0), utils.sphere((6.5, 0, 0), 1.0)])
+try:
+    agglomerate.check_pair([clump[1], free], [2.0, 2.0])
+    refused = "no exception"
+except ValueError as e:
+    refused = str(e)
+check(refused.startswith("members[0] is invalid") and "clump" in refused, "a clump refused as an agglomerate", refused)
 finish()

@@ -76,7 +76,10 @@ def _members(name, members, count=None):
     if not len(members):
         raise ValueError(f"{name} is invalid: at least one agglomerate")
     for k, m in enumerate(members):
-        _bodies(f"{name}[{k}]", m)
+        for i, b in zip(m, _bodies(f"{name}[{k}]", m)):
+            if b.isClump or b.isClumpMember:  # a clump moves as one rigid body: its primaries cannot be driven
+                raise ValueError(f"{name}[{k}] is invalid: body {i} is a clump or one of its members; an "
+                                 "agglomerate's primaries must move freely (O.bodies.releaseFromClump first)")
 
 
 def _radii(name, radii, count):
