@@ -71,17 +71,17 @@ def table(rows):
 
 
 def text(tab):
-    lines = ["| v [m/s] | runs (blocks x directions) | e_contact mean ± sd [min, max] | e mean ± sd | e_normal mean | "
-             "e_rigid mean | stuck | fragmented | bonds broken | mass broken off | with re-contacts |",
+    lines = ["| v [m/s] | runs (blocks x directions) | e_rigid mean ± sd [min, max] | e mean ± sd | e_normal mean | "
+             "e_contact mean [min, max] | stuck | fragmented | bonds broken | mass broken off | with re-contacts |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for v, s in tab.items():
-        c, e = s["e_contact"], s["e"]
+        c, e, k = s["e_rigid"], s["e"], s["e_contact"]
 
         def f(x, fmt=".3f"):
             return "–" if x is None else format(x, fmt)
         lines.append(f"| {v:g} | {s['n']} ({s['n_blocks']} x {s['n_directions']}) | {f(c['mean'])} ± {f(c['sd'])} "
                      f"[{f(c['min'])}, {f(c['max'])}] | {f(e['mean'])} ± {f(e['sd'])} | {f(s['e_normal']['mean'])} | "
-                     f"{f(s['e_rigid']['mean'])} | {s['stuck']} | {s['fragmented']} | "
+                     f"{f(k['mean'])} [{f(k['min'])}, {f(k['max'])}] | {s['stuck']} | {s['fragmented']} | "
                      f"{100 * s['bonds_broken_fraction_mean']:.2f} % | {100 * s['broken_mass_mean']:.2f} % | "
                      f"{s['runs_with_recontacts']} |")
     return "\n".join(lines)
