@@ -4,7 +4,7 @@ the broken bonds and mass, the re-contacts.
 
 Measures (bulk.collisions, bulk.impact): ``e`` along the approach of the two largest fragments'
 centres; ``e_normal`` along the normal forces' impulse (no spin); ``e_contact`` the contact point's
-normal velocity (spin included: the one a head-on meso-particle law is compared with); ``e_rigid``
+normal velocity (spin included: the issue's measure, not bounded at a rough contact); ``e_rigid``
 the rigid motion's share of the impact's energy. A stuck pair counts e = 0 in every measure. A
 collision is fragmentation when it breaks off more than FRAGMENTED of the mass.
 
