@@ -59,6 +59,10 @@ class Loops(unittest.TestCase):
                         ("unloaded", line(a, 0, lambda d: k * d - gamma * v))])
         slow, fast = (loss.loops(*runs(v)) for v in (0.5, 2.0))
         self.assertAlmostEqual(loss.viscous_gamma(slow, fast, 0.5, 2.0)[0], gamma, places=9)
+        # a fast loop whose loading takes no work (the caps' inertia) gives no gammaN
+        rows, ev = run([("touch", [(0.0, 0.0)]), ("loaded to 0.1 d0", line(0, a, lambda d: -1.0)),
+                        ("unloaded", line(a, 0, lambda d: k * d))])
+        self.assertEqual(loss.viscous_gamma(slow, loss.loops(rows, ev), 0.5, 2.0), [None])
 
 
 if __name__ == "__main__":

@@ -185,12 +185,16 @@ info = make.ensure(d, quick=True, progress=False)
 bonds0 = sum(round(g["coordination"] * g["n"] / 2) for g in info["agglomerates"])
 c = Collision(info["members"], [g["radius"] for g in info["agglomerates"]], axis=n, protocol=SCALES)
 r = c.run(10.0 / 1e3, progress=False, follow=3.0)
-check(r["bonds_before"] == bonds0 and 0 <= r["bonds_broken"] <= bonds0,
-      f"followed: {r['bonds_before']} bonds before (describe: {bonds0}), {r['bonds_broken']} broken")
+bonds_now = sum(round(agglomerate.describe(m, protocol=SCALES)["coordination"] * len(m) / 2) for m in info["members"])
+check(r["bonds_before"] == bonds0 and bonds_now >= r["bonds_before"] - r["bonds_broken"],
+      f"followed: {r['bonds_before']} bonds before (describe: {bonds0}), {r['bonds_broken']} broken; describe "
+      f"counts {bonds_now} now, at least the survivors")
 if not r["stuck"]:
     check(r["final_gap_over_press"] > 3.0 and r["time"] > 0,
           f"followed: the fragments end {r['final_gap_over_press']:.2f} presses apart (> 3)")
-    check(0 <= r["spin_energy_share"] <= r["e_rigid"] ** 2 <= 1,
+    # a glancing impact along a drawn direction sets the pair spinning; what the rigid motion keeps is at
+    # most the impact's energy
+    check(r["spin_energy_share"] > 0.01 and r["e_rigid"] <= 1,
           f"followed: e_rigid {r['e_rigid']:.3f}, the spins' share {r['spin_energy_share']:.3f} of the impact's energy")
 
 # 7. The cycles' tension as a non-contact force: the pair sticks below the stated speed, not above.

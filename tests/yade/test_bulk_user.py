@@ -182,10 +182,13 @@ n0 = len(die.rows)
 die.force_cycles(0.02, n_cycles=2, period=40.0, mode="compression")
 f_start = die.rows[n0][2]  # the call's first record
 press, back = die.turns[0::2], die.turns[1::2]
+# A return ends at the first crossing: the last record before its turn (records are 4 checks apart) has
+# neither crossed.
+before = [max((row for row in die.rows if row[0] < t[0]), key=lambda row: row[0]) for t in back]
 check(len(die.turns) == 4 and all(-0.02 - 2e-4 < t[1] <= -0.02 for t in press) and all(t[2] > f_start for t in press)
-      and all(t[2] <= f_start or t[1] >= 0 for t in back),
-      "force_cycles in compression: presses turn at Dx = -0.02, returns at the start's force or Dx = 0",
-      "; ".join(f"Dx {t[1]:+.5f} F {t[2]:+.3e}" for t in die.turns))
+      and all(t[2] <= f_start or t[1] >= 0 for t in back) and all(row[2] > f_start and row[1] < 0 for row in before),
+      "force_cycles in compression: presses turn at Dx = -0.02, returns at the first crossing of the start's force "
+      "or Dx = 0", "; ".join(f"Dx {t[1]:+.5f} F {t[2]:+.3e}" for t in die.turns))
 # 7. Radius distributions (the gas only): each has the mean d0/2 and the relative spread asked for,
 # less what its cut removes (a normal cut at 2 sigma keeps sqrt(1 - 4 phi(2)/(2 Phi(2) - 1)) = 0.880 of
 # its sigma: 0.0880 for rel_std 0.1; uniform keeps 0.1, bounded by 1 +- sqrt(3) 0.1); 2000 radii

@@ -48,6 +48,7 @@ except ImportError as _exc:  # pragma: no cover - outside yade
 from .. import calibrate
 from .. import checks as _checks
 from .. import outputs
+from .. import params as _params
 from .. import theory
 from . import agglomerate
 from . import pair_cycles
@@ -209,7 +210,7 @@ def coarse_grain(members, radii, speeds, directions=1, amplitudes=AMPLITUDES, ca
             print(f"coarse_grain: cycles at {cap_speed:g} per cap, amplitudes {amplitudes} d0", flush=True)
         pair = pair_cycles.Pair(members, radii, progress=progress, protocol=p)
         rows = [tuple(r) for r in pair.cycles(amplitudes, cap_speed)]
-        a12 = 2.0 * radii[0] * radii[1] / (radii[0] + radii[1])
+        a12 = _params.reduced_radius(*radii)  # as YADE's Ip2 computes it
         fit = calibrate.fit_cycles([r[1] for r in rows], [r[2] for r in rows], a12, shift=True)
         if progress:
             print(fit.report(), flush=True)
@@ -228,7 +229,7 @@ def coarse_grain(members, radii, speeds, directions=1, amplitudes=AMPLITUDES, ca
     finally:
         O.load(saved)
         os.remove(saved)
-    m_r = masses[0] * masses[1] / (masses[0] + masses[1])
+    m_r = _params.reduced_mass(*masses)
     fp = fit.params
     e_meso = [theory.pair_collision(v, fp["k1"], fp["kp"], fp["kc"], fp["phiF"], a12, m_r).e for v in speeds]
     r_mean, m_mean = sum(radii) / 2, sum(masses) / 2

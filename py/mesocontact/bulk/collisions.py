@@ -56,6 +56,7 @@ from .uniaxial import before_newton
 
 APPROACH = 0.002  # us of free flight before the surfaces meet, at most (about 140 steps)
 PARTING = 4  # checks over which the surface gap must grow before a run ends (the surfaces' vibration is noise)
+_NO_SPIN = dict.fromkeys(("e_contact", "e_rigid", "spin_energy_share", "spin"))  # a run whose first impact never ended
 STUCK_AFTER = 2000  # primary contact times (about twenty of a rebound's contact time) after which one cluster is stuck
 
 
@@ -93,20 +94,23 @@ class Collision:
 
     def _normal_force(self):
         """(contacts in overlap joining the two, the sum of their normal forces on the second
-        agglomerate's particles)."""
-        count, f = 0, Vector3(0, 0, 0)
+        agglomerate's particles, the sum of their contact points weighted by |normal force|, that
+        weight)."""
+        count, f, point, weight = 0, Vector3(0, 0, 0), Vector3(0, 0, 0), 0.0
         for inter, on_id2 in agglomerate.joining(*self.members):
             count += 1
             f += inter.phys.normalForce if on_id2 else -inter.phys.normalForce  # Law2: +normalForce acts on id2
-            w = inter.phys.normalForce.norm()  # the contact point of the collision: force-weighted mean
-            self.point_sum += inter.geom.contactPoint * w
-            self.point_weight += w
-        return count, f
+            w = inter.phys.normalForce.norm()
+            point += inter.geom.contactPoint * w
+            weight += w
+        return count, f, point, weight
 
     def _watch(self):
-        count, f = self._normal_force()
-        if self.first_impact is None:  # a followed run: the first impact's impulse only (exchanged particles rest)
+        count, f, point, weight = self._normal_force()
+        if self.first_impact is None:  # a followed run: the first impact's only (exchanged particles rest)
             self.normal_impulse += f * (self.every * O.dt)  # the normal forces' impulse, sampled every ``every`` steps
+            self.point_sum += point  # the collision's contact point: the force-weighted mean
+            self.point_weight += weight
         delta = self.delta()
         if count:
             if self.first is None:
@@ -226,8 +230,7 @@ class Collision:
         ``follow`` ends), with that impact's normal impulse and mean contact point and the
         fragments' centres there; the impulse stops adding up from then on."""
         frags = self._fragments()
-        out = {"e_contact": None, "e_rigid": None, "spin_energy_share": None, "spin": None,
-               "first_end_time": O.time}
+        out = dict(_NO_SPIN, first_end_time=O.time)
         if frags and self.point_weight > 0 and self.normal_impulse.norm() > 0:
             out.update(_impact.spin_measures(*frags, tuple(self.normal_impulse),
                                              tuple(self.point_sum / self.point_weight),
@@ -240,8 +243,7 @@ class Collision:
         lost = _impact.broken(bonds)
         out = {"recontacts": self.recontacts, "bonds_before": len(bonds), "bonds_broken": len(lost),
                "bonds_broken_fraction": len(lost) / len(bonds) if bonds else None,
-               **(self.first_impact or {"e_contact": None, "e_rigid": None, "spin_energy_share": None,
-                                        "spin": None})}
+               **(self.first_impact or _NO_SPIN)}
         frags = self._fragments()
         if frags:
             out["final_gap_over_press"] = _surface_gap(*frags) / self._press()
@@ -269,15 +271,11 @@ class Collision:
     def _parted(self):
         """The two largest fragments are separate clusters, each holding at least half of one
         agglomerate's particles (one from each), moving apart."""
-        parts = agglomerate.clusters([i for m in self.members for i in m])[:2]
-        if len(parts) < 2:
-            return False
-        own = [max((0, 1), key=lambda k: sum(1 for i in p if self.owner[i] == k)) for p in parts]
-        if own[0] == own[1] or any(sum(1 for i in p if self.owner[i] == k) < 0.5 * len(self.members[k])
-                                   for p, k in zip(parts, own)):
+        frags = self._fragments()
+        if frags is None or any(sum(1 for i in p if self.owner[i] == k) < 0.5 * len(self.members[k])
+                                for k, p in enumerate(frags)):
             return False  # one cluster still holds both, or a small piece is the second largest
-        a, b = (parts[0], parts[1]) if own[0] == 0 else (parts[1], parts[0])
-        return self._receding(a, b)
+        return self._receding(*frags)
 
     def surface_gap(self):
         """The smallest distance between the surfaces of a particle of one agglomerate and one of

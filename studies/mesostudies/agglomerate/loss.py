@@ -60,6 +60,7 @@ def pull(rows, events):
 
 def viscous_gamma(slow, fast, v_slow, v_fast):
     """gammaN per loaded turn from two runs' loops (loops()) at relative speeds v_slow < v_fast, over
-    the slow run's path in contact [force/(length/time)]."""
-    return [(f["loss"] - s["loss"]) / (v_fast - v_slow) / s["path"]
+    the slow run's path in contact [force/(length/time)]; None for a fast loop whose loading takes
+    no work (the force read on the caps is then their inertia's, not the contact's)."""
+    return [(f["loss"] - s["loss"]) / (v_fast - v_slow) / s["path"] if f["w_in"] > 0 else None
             for s, f in zip(slow, fast) if s["amplitude"] == f["amplitude"] and s["path"] > 0]

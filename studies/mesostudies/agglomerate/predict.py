@@ -30,26 +30,23 @@ SLOW = "cycles-v0.625"
 
 
 def _run(d, name):
+    """(rows, the run's JSON) of a cycle run."""
     with open(os.path.join(d, name + ".json")) as f:
-        events = json.load(f)["events"]
-    return [tuple(r) for r in read_csv(os.path.join(d, name + ".csv"))], events
+        info = json.load(f)
+    return [tuple(r) for r in read_csv(os.path.join(d, name + ".csv"))], info
 
 
 def viscosity(campaign, block, slow=SLOW):
     """(gammaN [kg/s], its values per rate run and amplitude): the fast pair cycles in ``block``
-    (rate-cycles-v<m/s per cap>) against the slow ones in ``campaign``."""
-    rows, ev = _run(campaign, slow)
-    v_slow = 2 * json.load(open(os.path.join(campaign, slow + ".json")))["speed_per_cap_m_s"] / 1e3
-    base = loss.loops(rows, ev)
+    (rate-cycles-v<m/s per cap>) against the slow ones in ``campaign``; relative speeds are twice
+    the caps' [mm/us]."""
+    rows, info = _run(campaign, slow)
+    base, v_slow = loss.loops(rows, info["events"]), 2 * info["speed_per_cap_m_s"] / 1e3
     per = {}
-    for f in sorted(os.listdir(block)):
-        if f.startswith("rate-cycles-v") and f.endswith(".json"):
-            name = f[:-5]
-            v = 2 * json.load(open(os.path.join(block, f)))["speed_per_cap_m_s"] / 1e3  # relative, mm/us
-            fast = loss.loops(*_run(block, name))
-            # a loop whose loading takes no work is the caps' inertia, not the contact's (40 m/s per cap, 0.1 d0)
-            per[name] = [g if f["w_in"] > 0 else None
-                         for g, f in zip(loss.viscous_gamma(base, fast, v_slow, v), fast)]
+    for name in sorted(f[:-5] for f in os.listdir(block) if f.startswith("rate-cycles-v") and f.endswith(".json")):
+        rows, info = _run(block, name)
+        per[name] = loss.viscous_gamma(base, loss.loops(rows, info["events"]), v_slow,
+                                       2 * info["speed_per_cap_m_s"] / 1e3)
     values = [g for gs in per.values() for g in gs if g is not None]
     return (statistics.median(values) if values else None), per
 
