@@ -15,6 +15,7 @@ import numpy as np
 try:
     from yade import O
     from yade import export as _export
+    from yade import wrapper as _w
 except ImportError as _exc:  # pragma: no cover - outside yade
     raise ImportError("mesocontact.bulk.pictures needs YADE: run it inside `yade`") from _exc
 
@@ -41,15 +42,30 @@ def depth_colours(depth):
     return np.stack([r, g, b], axis=-1)
 
 
+def wall_slab(i, name, d0):
+    """(lo, hi) corners of wall ``name`` (body ``i``) as drawn: a box itself; a facet's triangle
+    given a quarter d0 of thickness outside its plane."""
+    b = O.bodies[i]
+    if not isinstance(b.shape, _w.Facet):
+        c, e = b.state.pos, b.shape.extents
+        return [c[k] - e[k] for k in range(3)], [c[k] + e[k] for k in range(3)]
+    corners = [b.state.pos + b.state.ori * v for v in b.shape.vertices]
+    lo = [min(p[k] for p in corners) for k in range(3)]
+    hi = [max(p[k] for p in corners) for k in range(3)]
+    axis, outward = sample.WALLS.index(name) // 2, (1 if sample.WALLS.index(name) % 2 else -1)
+    (hi if outward > 0 else lo)[axis] += outward * 0.25 * d0
+    return lo, hi
+
+
 def window(margin=1.0, stretch=0.0, d0=None):
     """(x0, x1, z0, z1) around the spheres and walls present, ``margin`` d0 wide, and ``stretch``
     d0 wider on each side in x (room for a pull): one window for every panel of a series."""
     _, pos, rad = _spheres()
     x0, x1 = (pos[:, 0] - rad).min(), (pos[:, 0] + rad).max()
-    for i in sample.wall_ids().values():
-        b = O.bodies[i]
-        x0, x1 = min(x0, b.state.pos[0] - b.shape.extents[0]), max(x1, b.state.pos[0] + b.shape.extents[0])
     d0 = _d0(d0)
+    for name, i in sample.wall_ids().items():
+        lo, hi = wall_slab(i, name, d0)
+        x0, x1 = min(x0, lo[0]), max(x1, hi[0])
     m = margin * d0
     return (x0 - m - stretch * d0, x1 + m + stretch * d0,
             (pos[:, 2] - rad).min() - m, (pos[:, 2] + rad).max() + m)
@@ -117,11 +133,10 @@ def png(path, title="", win=None, pixel=None, d0=None, unit=""):
     xs = x0 + (np.arange(img.shape[1]) + 0.5) * pixel
     zs = z0 + (np.arange(img.shape[0]) + 0.5) * pixel
     bulk_z = np.percentile(pos[:, 2], [1, 99]) + np.array([-1.0, 1.0]) * _d0(d0)
-    for i in sample.wall_ids().values():  # the walls: grey, behind nothing, as tall as the sample's bulk
-        b = O.bodies[i]
-        c, e = b.state.pos, b.shape.extents
-        inx = (xs >= c[0] - e[0]) & (xs <= c[0] + e[0])
-        inz = (zs >= max(c[2] - e[2], bulk_z[0])) & (zs <= min(c[2] + e[2], bulk_z[1]))
+    for name, i in sample.wall_ids().items():  # the walls: grey, behind nothing, as tall as the sample's bulk
+        lo, hi = wall_slab(i, name, _d0(d0))
+        inx = (xs >= lo[0]) & (xs <= hi[0])
+        inz = (zs >= max(lo[2], bulk_z[0])) & (zs <= min(hi[2], bulk_z[1]))
         img[np.ix_(inz, inx)] = 0.72
     seen = owner >= 0
     img[seen] = depth_colours(depth[owner[seen]]) * shade[seen][:, None]

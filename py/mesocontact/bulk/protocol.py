@@ -17,7 +17,8 @@ from .. import checks as _checks
 
 PACKINGS = ("full", "frictionless")   # the law while the gas is compacted: full, or without friction and adhesion
 DISTRIBUTIONS = ("gaussian", "uniform", "lognormal")  # the radii's, about d0/2 with relative std rel_std
-_LATER_DEFAULTS = {"distribution": "gaussian", "mixture": ()}
+WALL_KINDS = ("boxes", "facets")    # the mould's six walls: YADE boxes, or one large facet each
+_LATER_DEFAULTS = {"distribution": "gaussian", "mixture": (), "walls": "boxes"}
 GLUES = ("loading", "all", "sinter")   # adhesive walls: the two x walls after sintering, all six after, all six before
 TAG = "mesocontact.bulk"               # the O.tags key that carries the protocol with the scene
 REQUIRED = ("density", "k1", "kp", "kc", "phiF", "gammaN")  # MesoMat keywords the stages read
@@ -34,7 +35,9 @@ class Protocol:
     n, rel_std, gas_fraction, seed, aspect: n radii about d0/2 with this relative standard
     deviation, drawn from ``distribution`` (DISTRIBUTIONS: 'gaussian', cut at 2 sigma; 'uniform';
     'lognormal', cut at 2 sigma of its logarithm), placed at random at this solid fraction in a
-    box with these side ratios;
+    box with these side ratios; walls: the six walls of that box, YADE boxes ('boxes') or one
+    facet each ('facets': a triangle reaching well past its face, so that no sphere meets an
+    edge; the facet functor detects the gap where reversible adhesion pulls in);
     packing: 'full' compacts with the full law, 'frictionless' packs without friction, rolling,
     torsion and adhesion to rest at packing_stress first; glue: which walls become adhesive
     and when (GLUES); compaction_speed, sinter_speed: the walls' largest speed (default: a
@@ -73,6 +76,7 @@ class Protocol:
     units: str = ""
     distribution: str = "gaussian"
     mixture: tuple = ()
+    walls: str = "boxes"
 
     def __post_init__(self):
         # A value, not a view of the caller's objects: the material copied, sequences as tuples.
@@ -256,6 +260,8 @@ def _validate_choices(p):
         raise ValueError(f"packing = {p.packing!r} is invalid: one of {PACKINGS}")
     if p.glue not in GLUES:
         raise ValueError(f"glue = {p.glue!r} is invalid: one of {GLUES}")
+    if p.walls not in WALL_KINDS:
+        raise ValueError(f"walls = {p.walls!r} is invalid: one of {WALL_KINDS}")
     if p.distribution not in DISTRIBUTIONS:
         raise ValueError(f"distribution = {p.distribution!r} is invalid: one of {DISTRIBUTIONS}")
     # The release lowers the goal every 1000 steps: fewer would be one sudden drop.

@@ -1,9 +1,10 @@
 """A sintered bulk sample of any MesoMat, made in a box of six walls (inside ``yade``).
 
-The stages: a random gas of the particles in a box of six walls (YADE boxes, so that rolling and
-torsion act at the walls too), compacted by YADE's ``TriaxialStressController`` to the sintering
-stress p_s, sintered there with the full law until static, the loading walls (or all) made
-adhesive, released slowly to p_r and relaxed; then saved with its description::
+The stages: a random gas of the particles in a box of six walls (YADE boxes, or a facet each:
+Protocol.walls; either with ScGeom6D, so that rolling and torsion act at the walls too),
+compacted by YADE's ``TriaxialStressController`` to the sintering stress p_s, sintered there
+with the full law until static, the loading walls (or all) made adhesive, released slowly to p_r
+and relaxed; then saved with its description::
 
     from mesocontact import bulk
     from mesocontact.bulk import protocol
@@ -92,14 +93,23 @@ def contact_step(protocol, r_min):
     return min(steps)
 
 
+def _wall_functors(protocol):
+    """(Bo1, Ig2) of the protocol's walls: YADE's box functors, or the plugin's facet geometry."""
+    if resolve(protocol).walls == "facets":
+        return _w.Bo1_Facet_Aabb(), _w.Ig2_Facet_Sphere_MesoScGeom6D()
+    return _w.Bo1_Box_Aabb(), _w.Ig2_Box_Sphere_ScGeom6D()
+
+
 def engines(protocol, controller=None, extra=(), reference="lab"):
-    """The engine loop of a bulk sample: spheres and boxes, the meso law, background drag."""
+    """The engine loop of a bulk sample: spheres and walls (boxes or facets), the meso law,
+    background drag."""
+    bo1, ig2 = _wall_functors(protocol)
     loop = [
         _w.ForceResetter(),
-        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(), _w.Bo1_Box_Aabb()], label="collider"),
+        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(), bo1], label="collider"),
         _w.InteractionLoop(
             # The law reads no relative rotation of ScGeom6D (only the bodies' spins): YADE need not compute them.
-            [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False), _w.Ig2_Box_Sphere_ScGeom6D()],
+            [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False), ig2],
             [_w.Ip2_MesoMat_MesoMat_MesoPhys()],
             [_w.Law2_ScGeom_MesoPhys_Meso(label="law")]),
         background_damping(protocol, reference),
@@ -180,7 +190,10 @@ def build(protocol):
     for mat in materials:
         O.materials.append(mat)
     lo, hi = (0.0, 0.0, 0.0), tuple(sides)
-    O.bodies.append(_utils.aabbWalls([lo, hi], thickness=0.5 * p.d0, oversizeFactor=1.5, material="walls"))
+    if p.walls == "facets":
+        O.bodies.append(facet_walls(lo, hi, "walls"))
+    else:
+        O.bodies.append(_utils.aabbWalls([lo, hi], thickness=0.5 * p.d0, oversizeFactor=1.5, material="walls"))
     # cells at least a diameter wide, so that the 27 cells about one hold every sphere it can overlap
     # (1.2 d0 holds them for radii up to 0.6 d0: every preparation made so far, rel_std <= 0.1, unchanged)
     placed = _place(radii, sides, max(p.d0 * 1.2, 2.0 * max(radii)), rng)
@@ -195,7 +208,30 @@ def build(protocol):
                           for label, _, _ in p.materials()}
     if tuple(aspect) != (1, 1, 1):
         out["aspect"] = list(aspect)
+    if p.walls != "boxes":
+        out["walls"] = p.walls
     return out
+
+
+def facet_walls(lo, hi, material):
+    """The six faces of the box (lo, hi) as one fixed facet each, in WALLS' order: a triangle in the
+    face's plane that holds the face grown to three times its sides about its centre, so that a
+    sphere inside the box meets no edge while a test stretches the box or moves the faces."""
+    walls = []
+    for k, name in enumerate(WALLS):
+        axis = k // 2
+        a, b = [j for j in range(3) if j != axis]
+        plane = lo[axis] if k % 2 == 0 else hi[axis]
+        ca, cb = 0.5 * (lo[a] + hi[a]), 0.5 * (lo[b] + hi[b])
+        ha, hb = 1.5 * (hi[a] - lo[a]), 1.5 * (hi[b] - lo[b])  # half sides of the grown face
+        # the triangle (-2 ha, -hb), (2 ha, -hb), (0, 3 hb) about the centre holds the rectangle |u| <= ha, |v| <= hb
+        corners = []
+        for u, v in ((-2 * ha, -hb), (2 * ha, -hb), (0.0, 3 * hb)):
+            x = [0.0, 0.0, 0.0]
+            x[axis], x[a], x[b] = plane, ca + u, cb + v
+            corners.append(tuple(x))
+        walls.append(_utils.facet(corners, material=material, fixed=True))
+    return walls
 
 
 def sphere_ids():
@@ -203,21 +239,27 @@ def sphere_ids():
 
 
 def wall_ids():
-    """{'left': id, ...} of the walls still present."""
+    """{'left': id, ...} of the walls still present (boxes or facets)."""
     return {name: i for i, name in enumerate(WALLS) if i < len(O.bodies) and O.bodies[i] is not None
-            and isinstance(O.bodies[i].shape, _w.Box)}
+            and isinstance(O.bodies[i].shape, (_w.Box, _w.Facet))}
+
+
+def wall_face(i, name):
+    """The coordinate of wall ``name``'s (body ``i``) inner face along its axis: a box's face, a
+    facet's plane."""
+    b = O.bodies[i]
+    axis = WALLS.index(name) // 2
+    if isinstance(b.shape, _w.Facet):
+        return b.state.pos[axis]
+    return b.state.pos[axis] + (1 if WALLS.index(name) % 2 == 0 else -1) * b.shape.extents[axis]
 
 
 def inner_box():
     """(lo, hi) of the space between the walls present (inner faces; None where a wall is gone)."""
     lo, hi = [None] * 3, [None] * 3
     for name, i in wall_ids().items():
-        b = O.bodies[i]
         axis = WALLS.index(name) // 2
-        if WALLS.index(name) % 2 == 0:
-            lo[axis] = b.state.pos[axis] + b.shape.extents[axis]
-        else:
-            hi[axis] = b.state.pos[axis] - b.shape.extents[axis]
+        (lo if WALLS.index(name) % 2 == 0 else hi)[axis] = wall_face(i, name)
     return lo, hi
 
 

@@ -21,10 +21,12 @@ from .protocol import Protocol
 
 
 def controller(protocol, goal):
-    """YADE's TriaxialStressController holding all six walls at ``goal`` (compressive > 0)."""
+    """YADE's TriaxialStressController holding all six walls at ``goal`` (compressive > 0); it
+    reads the walls' centres, so ``thickness`` is the boxes' (a facet is its own face)."""
     return _w.TriaxialStressController(
         internalCompaction=False, stressMask=7, goal1=-goal, goal2=-goal, goal3=-goal,
-        thickness=0.5 * protocol.d0, max_vel=protocol.speeds()[1], stressDamping=0.25, label="triax")
+        thickness=0.5 * protocol.d0 if protocol.walls == "boxes" else 0.0, max_vel=protocol.speeds()[1],
+        stressDamping=0.25, label="triax")
 
 
 def _triax():
