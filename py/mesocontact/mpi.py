@@ -159,6 +159,9 @@ def split_slabs(mpy, keep=True):
     workers = mpy.numThreads - 1
     if workers < 1:
         raise ValueError(f"ranks = {workers + 1}: split_slabs needs a master and at least one worker")
+    if any(b is not None and isinstance(b.shape, w.Facet) for b in O.bodies):
+        raise ValueError("this scene has facets: split_slabs hands only box walls to the master (a sample made with "
+                         "Protocol(walls='facets') is not supported under MPI; use walls='boxes')")
     if keep:
         keep_contacts(mpy)
     check_labels()

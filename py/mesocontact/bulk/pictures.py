@@ -43,16 +43,18 @@ def depth_colours(depth):
 
 
 def wall_slab(i, name, d0):
-    """(lo, hi) corners of wall ``name`` (body ``i``) as drawn: a box itself; a facet's triangle
-    given a quarter d0 of thickness outside its plane."""
+    """(lo, hi) corners of wall ``name`` (body ``i``) as drawn: a box itself; a facet as its face
+    (the walls' inner box; the triangle reaches far beyond it), a quarter d0 thick outside its plane."""
     b = O.bodies[i]
     if not isinstance(b.shape, _w.Facet):
         c, e = b.state.pos, b.shape.extents
         return [c[k] - e[k] for k in range(3)], [c[k] + e[k] for k in range(3)]
     corners = [b.state.pos + b.state.ori * v for v in b.shape.vertices]
-    lo = [min(p[k] for p in corners) for k in range(3)]
-    hi = [max(p[k] for p in corners) for k in range(3)]
+    box_lo, box_hi = sample.inner_box()
+    lo = [min(p[k] for p in corners) if box_lo[k] is None else box_lo[k] for k in range(3)]
+    hi = [max(p[k] for p in corners) if box_hi[k] is None else box_hi[k] for k in range(3)]
     axis, outward = sample.WALLS.index(name) // 2, (1 if sample.WALLS.index(name) % 2 else -1)
+    lo[axis] = hi[axis] = b.state.pos[axis]
     (hi if outward > 0 else lo)[axis] += outward * 0.25 * d0
     return lo, hi
 

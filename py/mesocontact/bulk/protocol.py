@@ -37,7 +37,7 @@ class Protocol:
     'lognormal', cut at 2 sigma of its logarithm), placed at random at this solid fraction in a
     box with these side ratios; walls: the six walls of that box, YADE boxes ('boxes') or one
     facet each ('facets': a triangle reaching well past its face, so that no sphere meets an
-    edge; the facet functor detects the gap where reversible adhesion pulls in);
+    edge; contacts made in overlap, as with boxes; not under MPI);
     packing: 'full' compacts with the full law, 'frictionless' packs without friction, rolling,
     torsion and adhesion to rest at packing_stress first; glue: which walls become adhesive
     and when (GLUES); compaction_speed, sinter_speed: the walls' largest speed (default: a

@@ -94,10 +94,13 @@ def contact_step(protocol, r_min):
 
 
 def _wall_functors(protocol):
-    """(Bo1, Ig2) of the protocol's walls: YADE's box functors, or the plugin's facet geometry."""
+    """([Bo1], [Ig2]) of the protocol's walls: YADE's box functors, and with facet walls the plugin's
+    facet geometry too (boxes stay for the tools that add a box of their own: pair_cycles.Wall)."""
+    bo1, ig2 = [_w.Bo1_Box_Aabb()], [_w.Ig2_Box_Sphere_ScGeom6D()]
     if resolve(protocol).walls == "facets":
-        return _w.Bo1_Facet_Aabb(), _w.Ig2_Facet_Sphere_MesoScGeom6D()
-    return _w.Bo1_Box_Aabb(), _w.Ig2_Box_Sphere_ScGeom6D()
+        bo1.append(_w.Bo1_Facet_Aabb())
+        ig2.append(_w.Ig2_Facet_Sphere_MesoScGeom6D())
+    return bo1, ig2
 
 
 def engines(protocol, controller=None, extra=(), reference="lab"):
@@ -106,10 +109,10 @@ def engines(protocol, controller=None, extra=(), reference="lab"):
     bo1, ig2 = _wall_functors(protocol)
     loop = [
         _w.ForceResetter(),
-        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb(), bo1], label="collider"),
+        _w.InsertionSortCollider([_w.Bo1_Sphere_Aabb()] + bo1, label="collider"),
         _w.InteractionLoop(
             # The law reads no relative rotation of ScGeom6D (only the bodies' spins): YADE need not compute them.
-            [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False), ig2],
+            [_w.Ig2_Sphere_Sphere_ScGeom6D(updateRotations=False)] + ig2,
             [_w.Ip2_MesoMat_MesoMat_MesoPhys()],
             [_w.Law2_ScGeom_MesoPhys_Meso(label="law")]),
         background_damping(protocol, reference),
