@@ -10,7 +10,8 @@ What the law takes from where:
 - e(v): two meso-particles of that law (``compare.meso_collisions``) at each speed of the ensemble.
 
 Written: ensemble.json (speeds, n_blocks, n_directions, e_mean, e_sd over every block and direction
-of ``ensemble_report``'s primary measure, e_predicted, fitted_to, and the other measures' means),
+of ``ensemble_report``'s primary measure, e_predicted, fitted_to, the other measures' means, and the
+tension beyond the first touch against the fitted law's, ``tension.report``),
 ensemble.md (the table) and ensemble.png in ``out``.
 """
 import json
@@ -19,7 +20,7 @@ import statistics
 
 from mesocontact import outputs
 from mesocontact.outputs import read_csv
-from . import compare, ensemble_report, loss
+from . import compare, ensemble_report, loss, tension
 
 # The issue's measure: e along the normal impulse with the spin, at the contact point (e_contact). It is not
 # bounded at a rough, tilted contact (above 1 in 4 of the first 42 runs), and e_rigid (the rigid motion's
@@ -76,10 +77,13 @@ def predict(out, campaign, info, progress=True):
     res["by_measure"] = {m: {"e_mean": [tab[v][m]["mean"] for v in speeds], "e_sd": [tab[v][m]["sd"] for v in speeds],
                              "range": [[tab[v][m]["min"], tab[v][m]["max"]] for v in speeds]}
                          for m in ensemble_report.MEASURES}
+    res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
     outputs.write_atomic(os.path.join(out, "ensemble.json"), json.dumps(res, indent=1))
-    outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res))
+    outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res)
+                         + "\n\nThe tension, per unloading, against the fitted law (tension.py):\n\n"
+                         + res["tension"]["table"])
     return res
 
 
