@@ -7,9 +7,10 @@ a cycle or pull run (rows (iter, delta, F) and events as loss reads them), beyon
 (delta < delta_touch: where the faces had not met on the way in, a neck drawn out of the contact):
 
 - press_work: the work put in while loading to the turn;
-- held_beyond: the net work of the force beyond the first touch, -sum F d(delta) there (> 0 when
-  the pair held on; a ringing force's halves cancel, which a sum of the tensile parts alone would
-  count as tension);
+- held_beyond: the net work of the force beyond the first touch, sum F d(delta) along the
+  unloading there (delta decreasing: > 0 when the pair held on in tension; a ringing force's halves
+  cancel, which a sum of the tensile parts alone would count as tension). The unloadings end at
+  a fixed distance beyond the touch, maybe still in tension: then it is a lower bound;
 - plateau: the mean force over delta - delta_touch in ``band`` [d0] (< 0: tension);
 - end_d0, end_force: where the unloading ended (delta - delta_touch [d0]) and the force there;
 - with ``law`` (the fitted law's force along the same rows, compare.law_curve): its held_beyond and
@@ -84,7 +85,9 @@ def table(runs):
                                                             f"{u['law_plateau'] / peak:+.1e}")
             mis = (f"{u['misfit_beyond']:.3f} ({u['points_beyond']} of {u['points']} points)"
                    if u.get("misfit_beyond") is not None else "–")
-            lines.append(f"| {name} | {u['amplitude']:g} | {u['held_beyond'] / u['press_work']:+.3f} | {plateau} | "
+            held = (f"{u['held_beyond'] / u['press_work']:+.3f}" if u["press_work"] > 0 else
+                    f"– (press work {u['press_work']:.1e} ≤ 0: the caps' inertia)")
+            lines.append(f"| {name} | {u['amplitude']:g} | {held} | {plateau} | "
                          f"{law} | {mis} | {u['end_d0']:+.3f} d0, F = {u['end_force']:.2e} |")
     return "\n".join(lines)
 
