@@ -37,8 +37,11 @@ def _in_range(f):
             if str(e) == "math domain error":
                 fail(e)
             raise
-        values = [getattr(r, k) for k in r.__dataclass_fields__] if hasattr(r, "__dataclass_fields__") else [r]
-        if any(isinstance(v, float) and math.isnan(v) for v in values):
+        if isinstance(r, float):  # the common case first: a calibration's fit calls these millions of times
+            if math.isnan(r):
+                fail("the result is NaN")
+        elif hasattr(r, "__dataclass_fields__") and any(
+                isinstance(v, float) and math.isnan(v) for v in (getattr(r, k) for k in r.__dataclass_fields__)):
             fail("the result is NaN")
         return r
     return checked
