@@ -3,8 +3,8 @@ overlay of campaigns/tablet/chosen in which the tested sample's P480 tension run
 amplitude is replaced by the repeat's (repeat-x<f>-tension-Dx<a>-P480), then
 mesostudies.tablet.statements.statements(overlay). Prints the chosen campaign's verdicts and each
 factor's, for the statements named (default 10 11 12 15; 'all' for every one), and writes
-verdicts.json into the repeats' folder (REPEATS, default results/repeats; the second lane's runs in
-REPEATS + "2" are read too). Run from the repository:
+verdicts.json into the repeats' folder (REPEATS, default results/repeats; the other lanes' runs in
+REPEATS + "2" and REPEATS + "3" are read too). Run from the repository:
 
     PYTHONPATH=py:studies python3 studies/scripts/tablet_repeats.py [10 12 15 | all]
 """
@@ -20,13 +20,14 @@ from mesostudies.tablet import statements as S
 CHOSEN = os.path.abspath("campaigns/tablet/chosen")
 HERE = os.path.abspath(os.environ.get("REPEATS", "results/repeats"))
 OVERLAY = os.path.join(HERE, "overlay")
+LANES = ("", "2", "3")  # the lanes' folders: REPEATS, REPEATS2 (the second lane at 0.1, 0.2), REPEATS3 (0.3)
 
 
 def finished():
     """{factor: {amplitude: run directory}} of the complete repeats (a bundle holds its JSON)."""
     out = {}
-    for js in glob.glob(os.path.join(HERE, "runs", "repeat-x*-tension-Dx*-P480", "*.json")) + \
-            glob.glob(os.path.join(HERE + "2", "runs", "repeat-x*-tension-Dx*-P480", "*.json")):  # the second lane
+    pattern = os.path.join("runs", "repeat-x*-tension-Dx*-P480", "*.json")
+    for js in [j for lane in LANES for j in glob.glob(os.path.join(HERE + lane, pattern))]:
         m = re.match(r"repeat-x([0-9.]+)-tension-Dx([0-9.]+)-P480\.json$", os.path.basename(js))
         if m:
             out.setdefault(m.group(1), {})[float(m.group(2))] = os.path.dirname(js)
@@ -68,7 +69,7 @@ def main(argv):
     # peak / over their mean; one branch: both <= 5 %) at 0.1 and 0.2 (#15's 480 t_w entry; #10 itself reads
     # the 1920 t_w run), and #12's 480 t_w ratio (0.2's over the smaller amplitudes' largest; > 1.5).
     print("== P480 numbers: retrace 0.1 (first/mean), retrace 0.2 (first/mean), #12 ratio at 480, "
-          "cycle-2 peaks 0.1/0.2")
+          "cycle-2 peaks 0.1/0.2, retrace 0.3 (first/mean), #16's later-cycle change at 0.3")
     spread = {}
     for name, row in table.items():
         d = CHOSEN if name == "chosen" else os.path.join(OVERLAY, name)
@@ -77,10 +78,20 @@ def main(argv):
         ratio = r[0.2][1] / max(r[a][1] for a in (0.025, 0.05, 0.1))
         c2 = [runs[("tension", a, 480.0)][1][1]["peak"] for a in (0.1, 0.2)]
         row["p480"] = {"retrace_0.1": r[0.1], "retrace_0.2": r[0.2], "ratio_12": ratio, "cycle2_peak": c2}
+        # at 0.3: #15's 480 t_w entry and #16's later-cycle change, 1920 t_w against 480 t_w (the campaign's
+        # 1920 t_w run, not repeated)
+        slow, fast = runs[("tension", 0.3, 1920.0)][1], runs[("tension", 0.3, 480.0)][1]
+        r3 = S.retrace(fast)
+        later = max(abs(y["peak"] / x["peak"] - 1) for x, y in zip(fast[1:], slow[1:]))
+        row["p480"].update({"retrace_0.3": r3, "later_change_16": later})
         print(f"  {name:12s} {100 * r[0.1][0]:5.2f}/{100 * r[0.1][1]:5.2f} %  "
-              f"{100 * r[0.2][0]:5.2f}/{100 * r[0.2][1]:5.2f} %  {ratio:5.2f}  {c2[0]:.4f}/{c2[1]:.4f}")
-        for k, v in (("retrace_0.1_mean", r[0.1][1]), ("retrace_0.2_mean", r[0.2][1]), ("ratio_12", ratio)):
-            spread.setdefault(k, []).append(v)
+              f"{100 * r[0.2][0]:5.2f}/{100 * r[0.2][1]:5.2f} %  {ratio:5.2f}  {c2[0]:.4f}/{c2[1]:.4f}  "
+              f"{100 * r3[0]:5.2f}/{100 * r3[1]:5.2f} %  {100 * later:5.1f} %")
+        for k, v, a in (("retrace_0.1_mean", r[0.1][1], 0.1), ("retrace_0.2_mean", r[0.2][1], 0.2),
+                        ("ratio_12", ratio, 0.2), ("retrace_0.3_first", r3[0], 0.3), ("retrace_0.3_mean", r3[1], 0.3),
+                        ("later_change_16_at_0.3", later, 0.3)):
+            if name == "chosen" or a in row["amplitudes"]:  # a set that did not repeat a is the campaign's there
+                spread.setdefault(k, []).append(v)
     for k, v in spread.items():
         print(f"  {k}: min {min(v):.4g}, max {max(v):.4g} over {len(v)} (chosen included)")
     with open(os.path.join(HERE, "verdicts.json"), "w") as f:
