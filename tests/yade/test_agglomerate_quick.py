@@ -17,11 +17,13 @@ import tempfile
 
 import numpy as np
 from yade import O, Vector3
-from mesocontact.bulk import agglomerate
+from mesocontact.bulk import agglomerate, pair_cycles
 from mesocontact.bulk.collisions import Collision
 from mesostudies.agglomerate import compare, make, study
 from mesostudies.agglomerate.primaries import D0, SCALES
 from harness import check, finish
+
+pair_cycles.PROGRESS_EVERY = 2.0  # the long strokes' progress lines, in the log (a full run prints one a minute)
 
 out = tempfile.mkdtemp(prefix="agglomerate-")
 study.main(["all", "--quick", "--out", out])
@@ -211,7 +213,6 @@ for ad in summary["adhesion"]:
           f"after {ad['after_d0']} d0: the pair sticks below {vs:.3g} m/s and rebounds above")
 
 # 8. The library's agglomerate calls refuse bad arguments, naming them, before any work: the scene unchanged.
-from mesocontact.bulk import pair_cycles  # noqa: E402
 info = make.ensure(d, quick=True, progress=False)
 A, B = info["members"]
 radii = [g["radius"] for g in info["agglomerates"]]

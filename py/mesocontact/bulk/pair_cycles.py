@@ -43,6 +43,7 @@ from .uniaxial import before_newton
 
 BELOW_TOUCH = 0.2  # d0 below the first touch where an unloading turns
 MAX_PULL = 1.5     # d0 below the first touch at which the last stroke apart ends in any case
+PROGRESS_EVERY = 60.0  # s of wall clock between a long stroke's progress lines
 WALL_MATERIALS = {"own": "particles",   # the particles' own k, adhesion, friction; the law's sphere-wall a12 = 2 a_i
                   "smooth": "walls"}     # bulk.prepare's mould: the normal law without adhesion or friction, dominant
 
@@ -127,13 +128,18 @@ class Pair:
         if not callable(until):
             raise TypeError(f"until = {until!r} is invalid: a function of (delta, F)")
         _whole("limit_steps", limit_steps)
-        hit = []
+        hit, shown = [], [time.time()]
 
         def check():
             d, f = self.delta(), self.force()
             if until(d, f):
                 hit.append((d, f))
                 O.pause()
+            elif self.progress and time.time() - shown[0] > PROGRESS_EVERY:  # a long stroke (a pull apart) shows itself
+                shown[0] = time.time()
+                d0, kp = self.protocol.d0, self.protocol.kp
+                print(f"    stroke at {speed:+g}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (kp * d0):+.4e}  "
+                      f"{self.touching()} contacts across  ({O.iter} steps)", flush=True)
         self._move(speed)
         _loop.register("agg_check", check)
         try:
