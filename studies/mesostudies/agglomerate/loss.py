@@ -17,7 +17,8 @@ pair pushes the caps back. Units are the run's (mm and the study's force unit, 1
 D0 = 0.01  # mm, the primaries' d0
 
 
-def _work(rows):
+def work(rows):
+    """sum F d(delta) along rows (trapezoids): > 0 while pressing, < 0 while the pair pushes back."""
     return sum(0.5 * (a[2] + b[2]) * (b[1] - a[1]) for a, b in zip(rows, rows[1:]))
 
 
@@ -39,7 +40,7 @@ def loops(rows, events):
         if not e[0].startswith("loaded to") or k + 1 >= len(events):
             continue
         load, unload = _between(rows, events[k - 1][1], e[1]), _between(rows, e[1], events[k + 1][1])
-        w_in, w_back = _work(load), _work(unload)
+        w_in, w_back = work(load), work(unload)
         path = sum(abs(b[1] - a[1]) for a, b in list(zip(load, load[1:])) + list(zip(unload, unload[1:]))
                    if abs(a[2]) > 0.01 * scale)
         out.append({"amplitude": float(e[0].split()[2]), "w_in": w_in, "w_back": w_back, "loss": w_in + w_back,

@@ -38,7 +38,7 @@ def _work_below(rows, x):
         elif (a[1] - x) * (b[1] - x) < 0:
             f = a[2] + (b[2] - a[2]) * (x - a[1]) / (b[1] - a[1])
             cut.append(((a[0], x, f), b) if b[1] < x else (a, (b[0], x, f)))
-    return sum(loss._work([a, b]) for a, b in cut)
+    return sum(loss.work([a, b]) for a, b in cut)
 
 
 def _plateau(stroke, touch, d0, band):
@@ -58,7 +58,7 @@ def unloadings(rows, events, law=None, d0=D0, band=BAND):
         its = (events[k - 1][1], e[1], events[k + 1][1])
         idx = [j for j, r in enumerate(rows) if its[1] <= r[0] <= its[2]]
         stroke = [rows[j] for j in idx]
-        press = loss._work([r for r in rows if its[0] <= r[0] <= its[1]])
+        press = loss.work([r for r in rows if its[0] <= r[0] <= its[1]])
         one = {"amplitude": float(e[0].split()[2]), "press_work": press,
                "held_beyond": _work_below(stroke, touch), "plateau": _plateau(stroke, touch, d0, band),
                "end_d0": (stroke[-1][1] - touch) / d0, "end_force": stroke[-1][2]}
