@@ -113,6 +113,9 @@ check(abs(r["e"] - want) < 1e-3 and abs(r["e_contact"] - r["e"]) < 1e-9 and abs(
       f"e_rigid {r['e_rigid']:.6f}")
 check(r["final_gap_over_press"] > 3.0 and r["recontacts"] == 0 and r["bonds_before"] == 0,
       f"followed head-on pair: {r['final_gap_over_press']:.2f} presses apart, no re-contact, no bonds")
+# receding head-on without spin: the closest the two will come is where they are now
+check(r["recontact_ahead"] is False and abs(r["closest_gap_ahead_over_press"] / r["final_gap_over_press"] - 1) < 1e-12,
+      "followed head-on pair: no re-contact ahead, the closest gap ahead is the final gap")
 
 # A clump is refused as an agglomerate (its primaries move as one rigid body: cycles and collisions
 # need them free), naming the argument; free spheres are taken.
@@ -126,4 +129,34 @@ try:
 except ValueError as e:
     refused = str(e)
 check(refused.startswith("members[0] is invalid") and "clump" in refused, "a clump refused as an agglomerate", refused)
+# closest_approach: fragments moving on rigidly. (a) A sphere passing another at 3 between centres:
+# the smallest gap 1, at t = 10, then the bounding spheres part for good; sampled in steps of 0.05
+# r (a gap quadratic in t about its minimum: off by (0.05)^2/6 at most). (b) Aimed 0.5 off the
+# line of centres: they touch when the centres are 2 apart, at t = 10 - sqrt(3.75), found within
+# a step. (c) A dumbbell (spheres of 0.5 at +-2) spinning at 1 rad/s about its axis of symmetry's
+# normal z sweeps a sphere of 0.5 at rest at (0, 2.8): its arm touches it where the centres are 1
+# apart, sin(phi) = (4 + 7.84 - 1)/(2 x 2 x 2.8), at t = phi; not spinning, it never does.
+O.reset()
+a = O.bodies.append(utils.sphere((0, 0, 0), 1.0))
+b = O.bodies.append(utils.sphere((10, 3, 0), 1.0))
+O.bodies[b].state.vel = Vector3(-1, 0, 0)
+g, t, parted = impact.closest_approach([a], [b], max_time=100.0)
+check(abs(g - 1.0) < 1e-3 and abs(t - 10.0) < 0.05 and parted, "closest_approach: a passing sphere's smallest gap",
+      f"gap {g:.6f} at t = {t:.4f}, parted {parted}")
+O.bodies[b].state.pos = Vector3(10, 0.5, 0)
+g, t, parted = impact.closest_approach([a], [b], max_time=100.0)
+check(g <= 0 and 0 <= t - (10 - 3.75 ** 0.5) <= 0.05 and not parted, "closest_approach: an aimed sphere touches",
+      f"gap {g:.2e} at t = {t:.4f} (touch at {10 - 3.75 ** 0.5:.4f})")
+O.reset()
+arm = [O.bodies.append(utils.sphere((x, 0, 0), 0.5)) for x in (-2.0, 2.0)]
+ball = O.bodies.append(utils.sphere((0, 2.8, 0), 0.5))
+give(arm, (0, 0, 0), (0, 0, 1.0))
+g, t, parted = impact.closest_approach(arm, [ball], max_time=10.0)
+phi = np.arcsin((4 + 2.8 ** 2 - 1) / (2 * 2 * 2.8))
+check(g <= 0 and 0 <= t - phi <= 0.0101 and not parted, "closest_approach: a spinning dumbbell's arm sweeps a sphere",
+      f"touch at t = {t:.4f} (phi = {phi:.4f})")
+give(arm, (0, 0, 0), (0, 0, 0.0))
+g, t, parted = impact.closest_approach(arm, [ball], max_time=10.0)
+check(abs(g - (np.hypot(2, 2.8) - 1)) < 1e-12, "closest_approach: the same dumbbell at rest never touches",
+      f"gap {g:.6f}")
 finish()

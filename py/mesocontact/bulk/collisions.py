@@ -133,7 +133,8 @@ class Collision:
         largest fragments' surfaces are ``follow`` times the press apart (the press sets the
         collision's length scale at every speed: at low speeds the separation is slow, and the
         internal vibration small, in proportion), re-contacts counted, and the outcome also holds
-        the spin-aware measures and the broken bonds (``bulk.impact``)."""
+        the spin-aware measures, the broken bonds and whether the fragments, moving on rigidly,
+        would touch again (``recontact_ahead``; ``bulk.impact``)."""
         _checks.positive("v_rel", v_rel)
         _checks.positive("gap", gap)
         _checks.nonnegative("quiet", quiet)
@@ -247,6 +248,10 @@ class Collision:
         frags = self._fragments()
         if frags:
             out["final_gap_over_press"] = _surface_gap(*frags) / self._press()
+            # three presses part a slow pair by little (7e-5 d0 at 0.01 m/s): would the fragments, moving
+            # on rigidly, spinning as they do, touch again? (impact.closest_approach)
+            gap, _, _ = _impact.closest_approach(*frags, max_time=20.0 * (O.time - self.first))
+            out.update(closest_gap_ahead_over_press=gap / self._press(), recontact_ahead=bool(gap <= 0))
         return out
 
     def _energy_shares(self, ke0):
