@@ -7,7 +7,8 @@
 # and a spin that vanishes leaves e_contact the centres' normal restitution. bonds() and broken():
 # two touching spheres make one bond, which breaks when they are moved apart and a step is taken. A
 # followed head-on collision of two single meso-particles: e is the closed form's, e_contact = e_rigid = e.
-# A clump is refused as an agglomerate.
+# A clump is refused as an agglomerate. closest_approach (fragments moving on rigidly): a passing
+# sphere's smallest gap, an aimed one's touch, a spinning dumbbell sweeping a sphere, each by hand.
 import numpy as np
 from yade import O, Vector3, utils
 from yade import wrapper as w
