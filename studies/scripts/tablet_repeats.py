@@ -55,9 +55,30 @@ def overlay(factor, runs):
     return d
 
 
+def _rate_at(table, amplitude=0.3):
+    """The 4x slower run (one, the campaign's) against the fast runs at ``amplitude`` (the campaign's and
+    the repeats'), cycle by cycle: its peak over their mean, their range over it, how far beyond the
+    nearest fast run it lies, and z = (slow - mean)/sd (one new draw: |z| > 2.78 lies outside the 95 %
+    prediction interval of six)."""
+    import statistics
+    slow = S.runs_of(CHOSEN)[("tension", amplitude, 1920.0)][1]
+    fast = [S.runs_of(CHOSEN if name == "chosen" else os.path.join(OVERLAY, name))[("tension", amplitude, 480.0)][1]
+            for name, row in table.items() if name == "chosen" or amplitude in row["amplitudes"] and name != "x1"]
+    print(f"== the slow run at {amplitude} against {len(fast)} fast runs: cycle, slow/mean - 1, fast range/|mean|, "
+          "beyond the nearest fast run, z")
+    for k in range(1, len(slow)):
+        vals = [f[k]["peak"] for f in fast]
+        m, sd = statistics.mean(vals), statistics.stdev(vals)
+        near = min(abs(slow[k]["peak"] / v - 1) for v in vals)
+        inside = min(vals) <= slow[k]["peak"] <= max(vals)
+        where = "inside" if inside else f"{100 * near:.1f} % beyond"
+        print(f"  cycle {k + 1}: {100 * (slow[k]['peak'] / m - 1):+.1f} %  "
+              f"{100 * (max(vals) - min(vals)) / abs(m):.1f} %  {where}  z {(slow[k]['peak'] - m) / sd:+.1f}")
+
+
 def main(argv):
     numbers = None if argv == ["all"] else [int(x) for x in argv] or [10, 11, 12, 15]
-    table = {"chosen": {"amplitudes": [0.1, 0.2], "statements": S.statements(CHOSEN)}}
+    table = {"chosen": {"amplitudes": [0.1, 0.2, 0.3], "statements": S.statements(CHOSEN)}}
     for factor, runs in sorted(finished().items(), key=lambda kv: abs(float(kv[0]) - 1)):
         table["x" + factor] = {"amplitudes": sorted(runs), "statements": S.statements(overlay(factor, runs))}
     for name, row in table.items():
@@ -94,6 +115,7 @@ def main(argv):
                 spread.setdefault(k, []).append(v)
     for k, v in spread.items():
         print(f"  {k}: min {min(v):.4g}, max {max(v):.4g} over {len(v)} (chosen included)")
+    _rate_at(table)
     with open(os.path.join(HERE, "verdicts.json"), "w") as f:
         json.dump(table, f, indent=1, ensure_ascii=False)
 
