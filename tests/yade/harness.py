@@ -41,3 +41,16 @@ class Stderr:
         self.text = self.file.read()
         self.file.close()
         sys.stderr.write(self.text)
+
+
+def die_start(path):
+    """Loads the released sample at ``path`` and makes the die's start (bulk.uniaxial.make_confined):
+    returns (the walls' positions before, {name: id} of the four lateral walls, a uniaxial.Test)."""
+    from yade import O
+    from mesocontact.bulk import sample, uniaxial
+    O.reset()
+    O.load(path)
+    before = {k: tuple(O.bodies[i].state.pos) for k, i in sample.wall_ids().items()}
+    uniaxial.make_confined(progress=False)
+    lateral = {k: i for k, i in sample.wall_ids().items() if k not in ("left", "right")}
+    return before, lateral, uniaxial.Test(progress=False)

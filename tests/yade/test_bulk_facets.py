@@ -13,7 +13,7 @@ from yade import wrapper as w
 
 from mesocontact import bulk, mpi
 from mesocontact.bulk import pictures, sample, sintering, uniaxial
-from harness import check, finish
+from harness import check, die_start, finish
 
 USER = dict(density=2500.0, k1=125.0, kp=250.0, kc=25.0, phiF=0.05, gammaN=1.25e-5, frictionAngle=0.5,
             kt=50.0, gammaT=2.5e-6, kr=25.0, gammaR=1.25e-6, muR=0.1, ko=25.0, gammaO=1.25e-6, muO=0.1)
@@ -122,12 +122,7 @@ pictures.png(png, "facets", win=win, d0=D0)
 check(os.path.getsize(png) > 10000, "a picture of the sample between its facets")
 
 # 4. The die: the four lateral facets stay, the x facets press by 0.05 d0.
-O.reset()
-O.load(path)
-before = {k: tuple(O.bodies[i].state.pos) for k, i in sample.wall_ids().items()}
-uniaxial.make_confined(progress=False)
-lateral = {k: i for k, i in sample.wall_ids().items() if k not in ("left", "right")}
-die = uniaxial.Test(progress=False)
+before, lateral, die = die_start(path)
 s0 = sample.stats()["wall_stress"]
 die.compress(p.speeds()[1], until=0.05, every=2)
 s1 = sample.stats()["wall_stress"]

@@ -13,7 +13,7 @@ import tempfile
 from yade import O
 from mesocontact import bulk
 from mesocontact.bulk import sample, sintering, uniaxial
-from harness import check, finish
+from harness import check, die_start, finish
 
 # 100 um particles of 2500 kg/m^3, kc/kp = 0.1, the relative damping of Appendix F's (about 1 %).
 USER = dict(density=2500.0, k1=125.0, kp=250.0, kc=25.0, phiF=0.05, gammaN=1.25e-5, frictionAngle=0.5,
@@ -131,12 +131,7 @@ t.plot(os.path.join(out, "cycle.png"), "one tension cycle")
 check(os.path.getsize(os.path.join(out, "cycle.png")) > 10000, "a picture of the cycle")
 # 5. The die: the lateral walls stay (fixed), the x walls compact the sample by 0.05 d0 and pull back
 #    to 0.02 d0 beyond the start.
-O.reset()
-O.load(path)
-before = {k: tuple(O.bodies[i].state.pos) for k, i in sample.wall_ids().items()}
-uniaxial.make_confined(progress=False)
-lateral = {k: i for k, i in sample.wall_ids().items() if k not in ("left", "right")}
-die = uniaxial.Test(progress=False)
+before, lateral, die = die_start(path)
 lo, hi = sample.inner_box()
 area_die = (hi[1] - lo[1]) * (hi[2] - lo[2])
 s0 = sample.stats()["wall_stress"]
