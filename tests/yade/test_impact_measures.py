@@ -144,6 +144,9 @@ O.bodies[b].state.vel = Vector3(-1, 0, 0)
 g, t, parted = impact.closest_approach([a], [b], max_time=100.0)
 check(abs(g - 1.0) < 1e-3 and abs(t - 10.0) < 0.05 and parted, "closest_approach: a passing sphere's smallest gap",
       f"gap {g:.6f} at t = {t:.4f}, parted {parted}")
+O.bodies[b].state.pos = Vector3(1.5, 0, 0)  # overlapping now: touching at t = 0, whatever comes
+g, t, parted = impact.closest_approach([a], [b], max_time=100.0)
+check(abs(g + 0.5) < 1e-12 and t == 0.0 and not parted, "closest_approach: fragments touching now", f"gap {g:.3f}")
 O.bodies[b].state.pos = Vector3(10, 0.5, 0)
 g, t, parted = impact.closest_approach([a], [b], max_time=100.0)
 check(g <= 0 and 0 <= t - (10 - 3.75 ** 0.5) <= 0.05 and not parted, "closest_approach: an aimed sphere touches",

@@ -134,6 +134,8 @@ def closest_approach(first, second, max_time, resolution=0.05):
 
     r_min = min(float(p["r"].min()) for p in parts)
     t, best = 0.0, (gap(0.0), 0.0)
+    if best[0] <= 0:  # touching already
+        return best[0], 0.0, False
     while t < max_time:
         d = parts[1]["c"] + parts[1]["v"] * t - parts[0]["c"] - parts[0]["v"] * t
         if np.linalg.norm(d) > reach and d.dot(u) >= 0:  # apart and receding: never again
