@@ -9,7 +9,8 @@
 # components, e = e_speed cos(deflection); the same direction followed to its end (bonds, the
 # final gap, the spin's share); the sticking speed of the tension taken as adhesion; the
 # library's agglomerate calls (`bulk.agglomerate`, `bulk.pair_cycles`, `bulk.collisions`) refuse bad
-# arguments, naming them, and leave the scene as it was.
+# arguments, naming them, and leave the scene as it was; a pull apart saved on the way and loaded again
+# (Pair.pull_apart's checkpoint) gives the study's rows, every one.
 import json
 import math
 import os
@@ -280,6 +281,55 @@ check(js["holds"] == holds and cg.holds() == holds and js["material"]["k1"] == c
       f"coarse_grain: the verdicts {holds} follow from the e's; the JSON holds them and the material")
 check(all(os.path.getsize(os.path.join(cg_out, f)) > 1000 for f in ("cycles.csv", "coarse-grained.png")),
       "coarse_grain: cycles.csv and coarse-grained.png written")
+
+# 10. A pull apart saved on the way (Pair.pull_apart's checkpoint, as the hours-long pulls of issue #59 run),
+# on the agglomerate against the wall (its quick pull holds on for 380000 steps; the pair's parts in 10):
+# one cycle of 0.05 d0 and a pull to 0.6 d0 below the touch, run whole, then with a save every quarter of
+# the pull: every row and event the same (a save's pause changes nothing); then the pull loaded from its
+# first save (Pair.load, as a new process would) ends with the same rows again; the checkpoint's files
+# are removed at the end; a bad path is refused, naming it.
+import shutil  # noqa: E402
+
+
+def wall_pull(**kw):
+    info = make.ensure(d, quick=True, progress=False)
+    w = pair_cycles.Wall(info["members"], info["agglomerates"][0]["radius"], progress=False, protocol=SCALES)
+    return w, w.cycles((0.05,), study.CAP_SPEED, max_pull=0.6, **kw)
+
+
+whole, rows = wall_pull()
+pull_steps = whole.events[-1][1] - whole.events[-2][1]
+ck, kept, saves = os.path.join(out, "pull.checkpoint.yade.gz"), os.path.join(out, "kept.yade.gz"), []
+save = pair_cycles.Wall.save
+
+
+def save_and_keep(self, path):
+    save(self, path)
+    saves.append(O.iter)
+    if len(saves) == 1:
+        shutil.copy(path, kept)
+        shutil.copy(path + ".json", kept + ".json")
+
+
+pair_cycles.Wall.save = save_and_keep
+saved, rows_saved = wall_pull(checkpoint=ck, checkpoint_steps=max(1, pull_steps // 4))
+pair_cycles.Wall.save = save
+check(len(saves) >= 3 and rows_saved == rows and saved.events == whole.events,
+      f"checkpoint: {len(saves)} saves in a pull of {pull_steps} steps ({whole.events[-1][0]}), every one of "
+      f"{len(rows)} rows and the events as in the whole run")
+check(not os.path.exists(ck) and not os.path.exists(ck + ".json"), "checkpoint: its files removed at the end")
+resumed = pair_cycles.Wall.load(kept)
+check(O.iter == saves[0] and len(resumed.rows) < len(rows), f"checkpoint: loaded at step {O.iter}, the first save")
+again = resumed.pull_apart(study.CAP_SPEED, max_pull=0.6)
+check(again == rows and resumed.events == whole.events,
+      f"checkpoint: the pull loaded from its first save ends with the same {len(again)} rows and events")
+for bad in ("pull.xml", 3):
+    try:
+        resumed.save(bad)
+        refused = "no exception"
+    except ValueError as e:
+        refused = str(e)
+    check(refused.startswith("path"), f"save: a bad path {bad!r} refused, naming it", refused)
 
 for f in ("cycles.png", "wall-cycles.png", "restitution.png", "agglomerate-vs-meso.json"):
     check(os.path.getsize(os.path.join(d, f)) > 1000, f"{f} written")

@@ -24,7 +24,9 @@ until no contact joins the two (or MAX_PULL d0 below delta_touch). A stroke's en
 inside the loop every ``check`` steps and pauses it there. Lengths and forces are reported over
 the Protocol's d0 and kp d0 (the ``protocol`` argument, else the scene's).
 """
+import json
 import numbers
+import os
 import time
 
 try:
@@ -37,7 +39,9 @@ except ImportError as _exc:  # pragma: no cover - outside yade
 
 from .. import checks as _checks
 from .. import loop as _loop
+from .. import outputs
 from . import agglomerate
+from . import protocol as _protocol
 from . import sample
 from .uniaxial import before_newton
 
@@ -152,11 +156,13 @@ class Pair:
                                f"(delta = {self.delta():.4g}, F = {self.force():.4g})")
         return hit[0]
 
-    def cycles(self, amplitudes, speed, gap=0.05, max_steps=10 ** 7, final=True, max_pull=MAX_PULL):
+    def cycles(self, amplitudes, speed, gap=0.05, max_steps=10 ** 7, final=True, max_pull=MAX_PULL, checkpoint=None,
+               checkpoint_steps=200000):
         """The protocol of the module's docstring; amplitudes in d0 beyond the first touch, speed
         of each cap, gap: the surfaces' distance at the start [d0]. Returns the rows (iter, delta,
         F); ``events`` holds (what, iter, delta, F) at each turn; ``final``: pull apart at the end
-        (a rate check's run may leave it out), to ``max_pull`` d0 below the touch at most."""
+        (a rate check's run may leave it out), to ``max_pull`` d0 below the touch at most;
+        ``checkpoint``, ``checkpoint_steps``: that pull saved on the way (pull_apart)."""
         if isinstance(amplitudes, (str, bytes, dict)) or not hasattr(amplitudes, "__len__") or not len(amplitudes):
             raise ValueError(f"amplitudes = {amplitudes!r} is invalid: a sequence of amplitudes [d0]")
         for k, a in enumerate(amplitudes):
@@ -166,30 +172,99 @@ class Pair:
         _checks.positive("max_pull", max_pull)
         _whole("max_steps", max_steps)
         d0 = self.protocol.d0
-        kp = self.protocol.kp
-        t0 = time.time()
+        self._t0 = time.time()
         self.set_gap(gap * d0)
         self._record()
-
-        def note(what, d, f):
-            self.events.append((what, O.iter, d, f))
-            if self.progress:
-                print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (kp * d0):+.4e}  "
-                      f"({O.iter} steps, {time.time() - t0:.0f} s)", flush=True)
         d, f = self.stroke(speed, lambda d, f: self.touching() > 0, max_steps)
-        touch = d
-        note("touch", d, f)
+        self.touch = touch = d
+        self._note("touch", d, f)
         for a in amplitudes:
             d, f = self.stroke(speed, lambda d, f, a=a: d >= touch + a * d0, max_steps)
-            note(f"loaded to {a:g} d0", d, f)
+            self._note(f"loaded to {a:g} d0", d, f)
             d, f = self.stroke(-speed, lambda d, f: d <= touch - BELOW_TOUCH * d0, max_steps)
-            note("unloaded", d, f)
+            self._note("unloaded", d, f)
         if final:  # the last pull apart (a rate check's run may leave it out)
-            d, f = self.stroke(-speed, lambda d, f: self.touching() == 0 or d <= touch - max_pull * d0, max_steps)
-            note("apart" if self.touching() == 0 else f"still joined at {max_pull:g} d0", d, f)
+            return self.pull_apart(speed, max_pull, max_steps, checkpoint, checkpoint_steps)
         self._record()
-        self.touch = touch
         return self.rows
+
+    def elapsed(self):
+        """Seconds of wall clock since the cycles started, over every process a saved pull ran in."""
+        return time.time() - getattr(self, "_t0", time.time())
+
+    def _note(self, what, d, f):
+        self.events.append((what, O.iter, d, f))
+        if self.progress:
+            d0, kp = self.protocol.d0, self.protocol.kp
+            print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (kp * d0):+.4e}  "
+                  f"({O.iter} steps, {self.elapsed():.0f} s)", flush=True)
+
+    def pull_apart(self, speed, max_pull=MAX_PULL, max_steps=10 ** 7, checkpoint=None, checkpoint_steps=200000):
+        """The cycles' last stroke: each cap moves apart at ``speed`` until no contact joins the two
+        or delta is ``max_pull`` d0 below the touch; returns the rows. With ``checkpoint`` (a path
+        ending in .yade.gz) the stroke is saved there every ``checkpoint_steps`` steps (Pair.save), so
+        that a pull of hours survives its process: ``Pair.load(checkpoint).pull_apart(...)`` goes on
+        from the last save, row for row as if never stopped. The files are removed at the end."""
+        _checks.positive("speed", speed)
+        _checks.positive("max_pull", max_pull)
+        _whole("max_steps", max_steps)
+        _whole("checkpoint_steps", checkpoint_steps)
+        if checkpoint is not None and not (isinstance(checkpoint, str) and checkpoint.endswith(".yade.gz")):
+            raise ValueError(f"checkpoint = {checkpoint!r} is invalid: a path ending in .yade.gz, or None")
+        if not hasattr(self, "touch"):
+            raise RuntimeError("pull_apart: the pair has not touched yet (run cycles first)")
+        beyond = self.touch - max_pull * self.protocol.d0
+        while True:
+            until = O.iter + checkpoint_steps if checkpoint else None
+            d, f = self.stroke(-speed, lambda d, f: (self.touching() == 0 or d <= beyond
+                                                     or (until is not None and O.iter >= until)), max_steps)
+            if self.touching() == 0 or d <= beyond:
+                break
+            self.save(checkpoint)  # a pause at a check step: the next stroke goes on exactly as without it
+        self._note("apart" if self.touching() == 0 else f"still joined at {max_pull:g} d0", d, f)
+        self._record()
+        if checkpoint:
+            for p in (checkpoint, checkpoint + ".json"):
+                if os.path.exists(p):
+                    os.remove(p)
+        return self.rows
+
+    def save(self, path):
+        """The scene (O.save to ``path``, a .yade.gz) and this pair's state (``path``.json), each
+        replaced whole; Pair.load(path) makes the pair again in another process."""
+        if not (isinstance(path, str) and path.endswith(".yade.gz")):
+            raise ValueError(f"path = {path!r} is invalid: a path ending in .yade.gz")
+        state = {k: v for k, v in vars(self).items() if k not in ("_motion", "protocol", "_t0")}
+        state.update(iter=O.iter, protocol=self.protocol.to_json(), kind=type(self).__name__, elapsed=self.elapsed())
+        part = path[:-len(".yade.gz")] + ".part.yade.gz"
+        O.save(part)
+        os.replace(part, path)
+        outputs.write_atomic(path + ".json", json.dumps(state))
+
+    @classmethod
+    def load(cls, path):
+        """Loads a scene saved by ``save`` into O and returns its pair, the caps' engines and the
+        recorder bound to it again."""
+        with open(path + ".json") as f:
+            state = json.load(f)
+        if state.pop("kind") != cls.__name__:
+            raise ValueError(f"path = {path!r} is invalid: it holds a {state.get('kind')}, not a {cls.__name__}")
+        O.load(path)
+        if O.iter != state["iter"]:
+            raise ValueError(f"path = {path!r} is invalid: the scene is at step {O.iter}, its state at {state['iter']} "
+                             f"(a save interrupted between the two files)")
+        del state["iter"]
+        pair = cls.__new__(cls)
+        pair._t0 = time.time() - state.pop("elapsed")
+        pair.__dict__.update(state)
+        pair.protocol = _protocol.Protocol.from_json(state["protocol"])
+        pair.rows = [tuple(r) for r in pair.rows]
+        pair.events = [tuple(e) for e in pair.events]
+        labels = {e.label: e for e in O.engines}
+        pair._motion = [labels[f"cap{k}"] for k in range(len(pair.grips))]
+        _loop.register("agg_recorder", pair._record)
+        _loop.register("agg_check", lambda: None)
+        return pair
 
 
 class Wall(Pair):

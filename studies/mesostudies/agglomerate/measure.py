@@ -8,11 +8,11 @@
   touch): the tension's work and range against the press.
 
 Each run writes <name>.csv (iter, delta, F) and <name>.json (its events) in the pair's folder and
-is skipped when they exist.
+is skipped when they exist. A pull saves itself every CHECKPOINT_STEPS steps in its last stroke
+(<name>.checkpoint.yade.gz and .json) and a new process goes on from there, row for row.
 """
 import json
 import os
-import time
 
 from yade import O
 
@@ -26,6 +26,7 @@ RATE_AMPLITUDES = (0.1, 0.2)               # d0 beyond the touch, as the slow fi
 PULL_AMPLITUDES = (0.02, 0.05, 0.1, 0.2)   # d0 beyond the touch
 PULL_SPEED = 0.625                         # m/s per cap, the fit's run
 MAX_PULL = 8.0                             # d0 below the touch (the slow cycles were still joined at 1.5)
+CHECKPOINT_STEPS = 200000                  # a pull's saves (Pair.pull_apart): about 0.36 d0, 7 min of one core
 
 
 def _one(d, name, seed, quick, amplitudes, speed_m_s, final, max_pull=pair_cycles.MAX_PULL):
@@ -34,14 +35,21 @@ def _one(d, name, seed, quick, amplitudes, speed_m_s, final, max_pull=pair_cycle
         return
     info = make.ensure(d, quick=quick, seed=seed)
     print(f"{name}: amplitudes {amplitudes} d0, {speed_m_s:g} m/s per cap", flush=True)
-    t0, it0 = time.time(), O.iter
-    pair = pair_cycles.Pair(info["members"], [g["radius"] for g in info["agglomerates"]], protocol=SCALES)
-    rows = pair.cycles(amplitudes, speed_m_s / 1e3, final=final, max_pull=max_pull)
+    it0 = O.iter
+    checkpoint = base + ".checkpoint.yade.gz" if final else None  # a pull apart takes hours: saved on the way
+    if checkpoint and os.path.exists(checkpoint + ".json"):
+        pair = pair_cycles.Pair.load(checkpoint)
+        print(f"  resumed at step {O.iter} from {checkpoint}", flush=True)
+        rows = pair.pull_apart(speed_m_s / 1e3, max_pull, checkpoint=checkpoint, checkpoint_steps=CHECKPOINT_STEPS)
+    else:
+        pair = pair_cycles.Pair(info["members"], [g["radius"] for g in info["agglomerates"]], protocol=SCALES)
+        rows = pair.cycles(amplitudes, speed_m_s / 1e3, final=final, max_pull=max_pull, checkpoint=checkpoint,
+                           checkpoint_steps=CHECKPOINT_STEPS)
     outputs.write_atomic(base + ".csv", "iter,delta_mm,F\n" + "".join(f"{r[0]},{r[1]!r},{r[2]!r}\n" for r in rows))
     outputs.write_atomic(base + ".json", json.dumps(
         {"speed_per_cap_m_s": speed_m_s, "amplitudes_d0": list(amplitudes), "touch_delta_mm": pair.touch,
          "events": pair.events, "max_pull_d0": max_pull if final else None, "steps": O.iter - it0,
-         "wall_clock_s": time.time() - t0, "dt": O.dt, "units": "delta mm, F mg mm/us^2 (1e3 N)"}, indent=1))
+         "wall_clock_s": pair.elapsed(), "dt": O.dt, "units": "delta mm, F mg mm/us^2 (1e3 N)"}, indent=1))
 
 
 def rate(d, seed=1, quick=False, speeds=RATE_SPEEDS):
