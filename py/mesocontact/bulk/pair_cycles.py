@@ -24,9 +24,7 @@ until no contact joins the two (or MAX_PULL d0 below delta_touch). A stroke's en
 inside the loop every ``check`` steps and pauses it there. Lengths and forces are reported over
 the Protocol's d0 and kp d0 (the ``protocol`` argument, else the scene's).
 """
-import json
 import numbers
-import os
 import time
 
 try:
@@ -39,8 +37,8 @@ except ImportError as _exc:  # pragma: no cover - outside yade
 
 from .. import checks as _checks
 from .. import loop as _loop
-from .. import outputs
 from . import agglomerate
+from . import checkpoint as _checkpoint
 from . import protocol as _protocol
 from . import sample
 from .uniaxial import before_newton
@@ -209,8 +207,7 @@ class Pair:
         _checks.positive("max_pull", max_pull)
         _whole("max_steps", max_steps)
         _whole("checkpoint_steps", checkpoint_steps)
-        if checkpoint is not None and not (isinstance(checkpoint, str) and checkpoint.endswith(".yade.gz")):
-            raise ValueError(f"checkpoint = {checkpoint!r} is invalid: a path ending in .yade.gz, or None")
+        _checkpoint.check_path("checkpoint", checkpoint, none=True)
         if not hasattr(self, "touch"):
             raise RuntimeError("pull_apart: the pair has not touched yet (run cycles first)")
         beyond = self.touch - max_pull * self.protocol.d0
@@ -223,37 +220,23 @@ class Pair:
             self.save(checkpoint)  # a pause at a check step: the next stroke goes on exactly as without it
         self._note("apart" if self.touching() == 0 else f"still joined at {max_pull:g} d0", d, f)
         self._record()
-        if checkpoint:
-            for p in (checkpoint, checkpoint + ".json"):
-                if os.path.exists(p):
-                    os.remove(p)
+        _checkpoint.remove(checkpoint)
         return self.rows
 
     def save(self, path):
-        """The scene (O.save to ``path``, a .yade.gz) and this pair's state (``path``.json), each
-        replaced whole; Pair.load(path) makes the pair again in another process."""
-        if not (isinstance(path, str) and path.endswith(".yade.gz")):
-            raise ValueError(f"path = {path!r} is invalid: a path ending in .yade.gz")
+        """The scene and this pair's state (bulk.checkpoint.save); Pair.load(path) makes the pair
+        again in another process."""
         state = {k: v for k, v in vars(self).items() if k not in ("_motion", "protocol", "_t0")}
-        state.update(iter=O.iter, protocol=self.protocol.to_json(), kind=type(self).__name__, elapsed=self.elapsed())
-        part = path[:-len(".yade.gz")] + ".part.yade.gz"
-        O.save(part)
-        os.replace(part, path)
-        outputs.write_atomic(path + ".json", json.dumps(state))
+        _checkpoint.save(path, dict(state, protocol=self.protocol.to_json(), kind=type(self).__name__,
+                                    elapsed=self.elapsed()))
 
     @classmethod
     def load(cls, path):
         """Loads a scene saved by ``save`` into O and returns its pair, the caps' engines and the
         recorder bound to it again."""
-        with open(path + ".json") as f:
-            state = json.load(f)
+        state = _checkpoint.load(path)
         if state.pop("kind") != cls.__name__:
-            raise ValueError(f"path = {path!r} is invalid: it holds a {state.get('kind')}, not a {cls.__name__}")
-        O.load(path)
-        if O.iter != state["iter"]:
-            raise ValueError(f"path = {path!r} is invalid: the scene is at step {O.iter}, its state at {state['iter']} "
-                             f"(a save interrupted between the two files)")
-        del state["iter"]
+            raise ValueError(f"path = {path!r} is invalid: it holds another kind's state, not a {cls.__name__}'s")
         pair = cls.__new__(cls)
         pair._t0 = time.time() - state.pop("elapsed")
         pair.__dict__.update(state)

@@ -30,6 +30,8 @@ except ImportError as _exc:  # pragma: no cover - outside yade
 from .. import checks as _checks
 from .. import loop as _loop
 from .. import scene as _scene
+from . import checkpoint as _checkpoint
+from . import protocol as _protocol
 from . import records as _records
 from . import sample
 
@@ -255,6 +257,7 @@ class Test:
         self.progress = progress and records
         self.records = records
         self._run = run or (lambda n: O.run(n, True))
+        self._run_given = run is not None
         self._share = share or (lambda x: x)
         walls = sample.wall_ids()
         self.left, self.right = walls["left"], walls["right"]
@@ -359,16 +362,21 @@ class Test:
             self._on_record(self, row)
 
     def cycles(self, mode, amplitude, n_cycles=4, steps_per_cycle=None, period=40.0, every=None,
-               on_record=None, wall_speed=None):
+               on_record=None, wall_speed=None, checkpoint=None):
         """n_cycles cosine cycles of amplitude Dx = amplitude (in d0) in tension or compression.
         The period is ``steps_per_cycle`` steps, or the one at which the two walls' relative speed
         (twice each wall's) peaks at ``wall_speed`` (the scene's units: pi amplitude d0 / wall_speed;
         the period is a multiple of 8 steps, so the peak is up to 8/steps faster: at least 800 steps
         are required, 1 %), or ``period``
         elastic crossing times. Returns the rows (iter, Dx, F/(kp d0)) recorded every ``every``
-        steps (default: 400 per cycle)."""
+        steps (default: 400 per cycle). ``checkpoint`` (a .yade.gz path): saved there after every
+        quarter cycle (``save``), so that a run of hours survives its process: ``Test.load(path)
+        .resume(path)`` finishes it, row for row as if never stopped; the files go at the end."""
         sign = check_mode(mode)
         _cycle_arguments(amplitude, n_cycles, every)
+        _checkpoint.check_path("checkpoint", checkpoint, none=True)
+        if checkpoint and self._run_given:
+            raise ValueError("checkpoint is invalid under yade.mpy (a test with its own run()): a serial run only")
         if steps_per_cycle is not None and wall_speed is not None:
             raise ValueError("wall_speed is invalid together with steps_per_cycle: give one")
         if steps_per_cycle is not None:
@@ -395,20 +403,73 @@ class Test:
         self.steps_per_cycle = steps_per_cycle
         self._install(motion, every, on_record)
         self._record()
-        t0, total = time.time(), int(n_cycles) * steps_per_cycle
-        chunk = max(every, steps_per_cycle // 4 // every * every)
-        start = O.iter
-        while O.iter - start < total:
-            left = total - (O.iter - start)
+        total = int(n_cycles) * steps_per_cycle
+        self._cycling = {"mode": mode, "amplitude": amplitude, "n_cycles": int(n_cycles), "start": O.iter,
+                         "total": total, "chunk": max(every, steps_per_cycle // 4 // every * every)}
+        return self._cycle_on(checkpoint)
+
+    def _cycle_on(self, checkpoint):
+        """The cycles' steps from where they are, in chunks of a quarter cycle (a progress line and,
+        with ``checkpoint``, a save after each); then the walls halted."""
+        c, t0 = self._cycling, time.time()
+        while O.iter - c["start"] < c["total"]:
+            left = c["total"] - (O.iter - c["start"])
             # a short tail joins the last chunk: one last progress line
-            k = left if left < chunk + chunk // 2 else chunk
+            k = left if left < c["chunk"] + c["chunk"] // 2 else c["chunk"]
             self._run(k)
             Test.steps_run += k
             if self.progress:
-                print(f"  {mode} Dx={amplitude:g}: cycle {(O.iter - start) / steps_per_cycle:5.2f}/{n_cycles}"
-                      f"  Dx={self.dx():+.4f}  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
-        self._halt(motion)
+                done = (O.iter - c["start"]) / self.steps_per_cycle
+                print(f"  {c['mode']} Dx={c['amplitude']:g}: cycle {done:5.2f}/{c['n_cycles']}  Dx={self.dx():+.4f}"
+                      f"  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
+            if checkpoint and O.iter - c["start"] < c["total"]:
+                self.save(checkpoint)
+        self._halt(self._motion)
+        self._cycling = None
+        _checkpoint.remove(checkpoint)
         return self.rows
+
+    _UNSAVED = ("p", "_run", "_share", "_motion", "_on_record", "_work", "grip")
+
+    def save(self, path):
+        """The scene and this test's state while it cycles (bulk.checkpoint.save): Test.load(path)
+        gives it back in another process, and its ``resume()`` finishes the cycles."""
+        if getattr(self, "_cycling", None) is None:
+            raise RuntimeError("Test.save: only a test inside its cycles can be saved (cycles(..., checkpoint=...))")
+        if self._run_given:
+            raise ValueError("Test.save: a test with its own run() (yade.mpy) cannot be saved")
+        state = {k: v for k, v in vars(self).items() if k not in self._UNSAVED}
+        work = getattr(self, "_work", None)
+        state.update(protocol=self.p.to_json(), grip=[[k, v] for k, v in self.grip.items()],
+                     work=None if work is None else [work.walls, work.work, work.gross, work.e0])
+        _checkpoint.save(path, state)
+
+    @classmethod
+    def load(cls, path, on_record=None):
+        """Loads a test saved inside its cycles (``save``) into O; ``on_record`` as in cycles()."""
+        state = _checkpoint.load(path)
+        test = cls.__new__(cls)
+        test.p = _protocol.Protocol.from_json(state.pop("protocol"))
+        test.grip = {k: v for k, v in state.pop("grip")}
+        work = state.pop("work")
+        test.__dict__.update(state)
+        for key in ("rows", "branches", "energy"):
+            setattr(test, key, [tuple(r) for r in getattr(test, key)])
+        test._run, test._share, test._on_record = (lambda n: O.run(n, True)), (lambda x: x), on_record
+        test._motion = [e for e in O.engines if e.label in (f"cycle_{test.left}", f"cycle_{test.right}")]
+        _loop.register("recorder", test._record)
+        if work is not None:
+            test._work = _WallWork(tuple(work[0]))
+            test._work.work, test._work.gross, test._work.e0 = work[1:]
+            _loop.register("wallwork", test._work)
+        return test
+
+    def resume(self, checkpoint=None):
+        """Finishes the cycles of a loaded test (``load``), saving on to ``checkpoint``; returns the rows."""
+        if getattr(self, "_cycling", None) is None:
+            raise RuntimeError("Test.resume: this test is not inside its cycles (Test.load a saved one)")
+        _checkpoint.check_path("checkpoint", checkpoint, none=True)
+        return self._cycle_on(checkpoint)
 
     def force_cycles(self, amplitude, n_cycles=4, period=480.0, every=None, on_record=None, max_strokes_steps=None,
                      mode="tension"):
