@@ -202,7 +202,10 @@ class Pair:
         or delta is ``max_pull`` d0 below the touch; returns the rows. With ``checkpoint`` (a path
         ending in .yade.gz) the stroke is saved there every ``checkpoint_steps`` steps (Pair.save), so
         that a pull of hours survives its process: ``Pair.load(checkpoint).pull_apart(...)`` goes on
-        from the last save, row for row as if never stopped. The files are removed at the end."""
+        from the last save. The run itself goes on from each save as loaded from the file, so that it
+        is the same row for row whether or not its process died (a load renews the collider's
+        order of new contacts, which moves a run without saves by rounding). The files are removed
+        at the end."""
         _checks.positive("speed", speed)
         _checks.positive("max_pull", max_pull)
         _whole("max_steps", max_steps)
@@ -217,7 +220,8 @@ class Pair:
                                                      or (until is not None and O.iter >= until)), max_steps)
             if self.touching() == 0 or d <= beyond:
                 break
-            self.save(checkpoint)  # a pause at a check step: the next stroke goes on exactly as without it
+            self.save(checkpoint)
+            self._reload(checkpoint)  # go on from the file, as a new process would: where it dies changes nothing
         self._note("apart" if self.touching() == 0 else f"still joined at {max_pull:g} d0", d, f)
         self._record()
         _checkpoint.remove(checkpoint)
@@ -238,16 +242,25 @@ class Pair:
         if state.pop("kind") != cls.__name__:
             raise ValueError(f"path = {path!r} is invalid: it holds another kind's state, not a {cls.__name__}'s")
         pair = cls.__new__(cls)
-        pair._t0 = time.time() - state.pop("elapsed")
-        pair.__dict__.update(state)
-        pair.protocol = _protocol.Protocol.from_json(state["protocol"])
-        pair.rows = [tuple(r) for r in pair.rows]
-        pair.events = [tuple(e) for e in pair.events]
-        labels = {e.label: e for e in O.engines}
-        pair._motion = [labels[f"cap{k}"] for k in range(len(pair.grips))]
-        _loop.register("agg_recorder", pair._record)
-        _loop.register("agg_check", lambda: None)
+        pair._bind(state)
         return pair
+
+    def _reload(self, path):
+        """Loads the scene just saved to ``path`` and binds this pair to it again."""
+        state = _checkpoint.load(path)
+        del state["kind"]
+        self._bind(state)
+
+    def _bind(self, state):
+        self._t0 = time.time() - state.pop("elapsed")
+        self.__dict__.update(state)
+        self.protocol = _protocol.Protocol.from_json(state["protocol"])
+        self.rows = [tuple(r) for r in self.rows]
+        self.events = [tuple(e) for e in self.events]
+        labels = {e.label: e for e in O.engines}
+        self._motion = [labels[f"cap{k}"] for k in range(len(self.grips))]
+        _loop.register("agg_recorder", self._record)
+        _loop.register("agg_check", lambda: None)
 
 
 class Wall(Pair):

@@ -371,7 +371,9 @@ class Test:
         elastic crossing times. Returns the rows (iter, Dx, F/(kp d0)) recorded every ``every``
         steps (default: 400 per cycle). ``checkpoint`` (a .yade.gz path): saved there after every
         quarter cycle (``save``), so that a run of hours survives its process: ``Test.load(path)
-        .resume(path)`` finishes it, row for row as if never stopped; the files go at the end."""
+        .resume(path)`` finishes it. The run goes on from each save as loaded from the file, so it
+        is the same row for row whether or not its process died (a load renews the collider's order
+        of new contacts, which moves a run without saves by rounding); the files go at the end."""
         sign = check_mode(mode)
         _cycle_arguments(amplitude, n_cycles, every)
         _checkpoint.check_path("checkpoint", checkpoint, none=True)
@@ -424,6 +426,7 @@ class Test:
                       f"  F/(kp d0)={self.force():+.4e}  ({time.time() - t0:.0f} s)", flush=True)
             if checkpoint and O.iter - c["start"] < c["total"]:
                 self.save(checkpoint)
+                self._bind(_checkpoint.load(checkpoint), self._on_record)  # on from the file, as a new process
         self._halt(self._motion)
         self._cycling = None
         _checkpoint.remove(checkpoint)
@@ -447,22 +450,25 @@ class Test:
     @classmethod
     def load(cls, path, on_record=None):
         """Loads a test saved inside its cycles (``save``) into O; ``on_record`` as in cycles()."""
-        state = _checkpoint.load(path)
         test = cls.__new__(cls)
-        test.p = _protocol.Protocol.from_json(state.pop("protocol"))
-        test.grip = {k: v for k, v in state.pop("grip")}
-        work = state.pop("work")
-        test.__dict__.update(state)
-        for key in ("rows", "branches", "energy"):
-            setattr(test, key, [tuple(r) for r in getattr(test, key)])
-        test._run, test._share, test._on_record = (lambda n: O.run(n, True)), (lambda x: x), on_record
-        test._motion = [e for e in O.engines if e.label in (f"cycle_{test.left}", f"cycle_{test.right}")]
-        _loop.register("recorder", test._record)
-        if work is not None:
-            test._work = _WallWork(tuple(work[0]))
-            test._work.work, test._work.gross, test._work.e0 = work[1:]
-            _loop.register("wallwork", test._work)
+        test._bind(_checkpoint.load(path), on_record)
         return test
+
+    def _bind(self, state, on_record):
+        self.p = _protocol.Protocol.from_json(state.pop("protocol"))
+        self.grip = {k: v for k, v in state.pop("grip")}
+        work = state.pop("work")
+        self.__dict__.update(state)
+        for key in ("rows", "branches", "energy"):
+            setattr(self, key, [tuple(r) for r in getattr(self, key)])
+        self._run, self._share, self._on_record = (lambda n: O.run(n, True)), (lambda x: x), on_record
+        self._motion = [e for e in O.engines if e.label in (f"cycle_{self.left}", f"cycle_{self.right}")]
+        _loop.register("recorder", self._record)
+        self._work = None
+        if work is not None:
+            self._work = _WallWork(tuple(work[0]))
+            self._work.work, self._work.gross, self._work.e0 = work[1:]
+            _loop.register("wallwork", self._work)
 
     def resume(self, checkpoint=None):
         """Finishes the cycles of a loaded test (``load``), saving on to ``checkpoint``; returns the rows."""
