@@ -256,6 +256,64 @@ kcs = {round(I.phys.dict()["kc"] / tablet.KP, 12) for I in O.interactions if I.i
 check(run["tensile_stiffness"]["was"] == 0.2 and kcs == {0.5, 20.0},
       f"{name}: kc/kp 0.2 -> {sorted(kcs)} (particles, loading walls)")
 
+# 4c. A run saved on the way (run_cycles' checkpoint, for runs of hours): one killed after its second
+#     save (an exception from the save, as a dying process leaves its files) and started again goes on
+#     from that save; its CSV is the one of the same run never stopped, byte for byte; against the run
+#     without saves of section 4 the same to rounding (a load renews the collider's order of new
+#     contacts). The checkpoint's files are gone at the end; a variant with saves is refused.
+from mesocontact.bulk import uniaxial  # noqa: E402
+
+
+class Killed(Exception):
+    pass
+
+
+saves = []
+save = uniaxial.Test.save
+
+
+def dying_save(self, path):
+    save(self, path)
+    saves.append(O.iter)
+    if len(saves) == 2:
+        raise Killed()
+
+
+uniaxial.Test.save = dying_save
+try:
+    campaign.run_cycles(out, "tension", 0.05, P, quick=True, progress=False, prefix="ck-killed-", checkpoint=True)
+    killed = "no exception"
+except Killed:
+    killed = "killed"
+finally:
+    uniaxial.Test.save = save
+name_k, name_w = ("ck-killed-" + campaign.run_name("tension", 0.05, P),
+                  "ck-whole-" + campaign.run_name("tension", 0.05, P))
+where_k = campaign.run_dir(out, name_k, quick=True)
+ck_file = os.path.join(os.path.dirname(where_k), name_k + ".checkpoint.yade.gz")
+check(killed == "killed" and os.path.exists(ck_file + ".json") and not outputs.complete(where_k),
+      f"checkpoint: a run killed after its second save (step {saves[-1]}) leaves its save and no result")
+info_k, rows_k = campaign.run_cycles(out, "tension", 0.05, P, quick=True, progress=False, prefix="ck-killed-",
+                                     checkpoint=True)
+info_w, rows_w = campaign.run_cycles(out, "tension", 0.05, P, quick=True, progress=False, prefix="ck-whole-",
+                                     checkpoint=True)
+csv = [open(os.path.join(campaign.run_dir(out, n, quick=True), n + ".csv")).read() for n in (name_k, name_w)]
+plain = campaign.read_csv(os.path.join(campaign.run_dir(out, campaign.run_name("tension", 0.05, P), quick=True),
+                                       campaign.run_name("tension", 0.05, P) + ".csv"))
+scale = max(abs(r[2]) for r in plain)
+off = max(abs(a[2] - b[2]) for a, b in zip(rows_w, plain)) / scale
+check(info_k["resumed_at_step"] == saves[-1] and csv[0] == csv[1] and len(rows_w) == len(plain) and off < 1e-9
+      and not os.path.exists(ck_file) and not os.path.exists(ck_file + ".json"),
+      f"checkpoint: started again, it went on from step {info_k['resumed_at_step']}; its CSV is the unstopped run's, "
+      f"byte for byte; the run without saves differs by {off:.1e} of the force scale; the save is gone")
+try:
+    campaign.run_cycles(out, "tension", 0.05, P, quick=True, progress=False, prefix="ck-", checkpoint=True,
+                        kc_over_kp=0.5)
+    refused = "no exception"
+except ValueError as e:
+    refused = str(e)
+check(refused.startswith("checkpoint"), "checkpoint: refused for a variant", refused)
+
 # 5. The monotonic pull: snapshots, the first visible crack, the last contact chain, and no
 #    force on the walls once the halves are apart (no drag on a half moving with its wall).
 # 3x faster: the protocol, not the figure

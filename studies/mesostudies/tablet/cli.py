@@ -87,6 +87,10 @@ OPTIONS = (
      dict(default="contacts", choices=("contacts", "lab"),
           help="factors: the background drag's reference in the pull")),
     ("--table", dict(action="store_true", help="factors: only gather the table of the runs made")),
+    ("--checkpoint", dict(action="store_true",
+                          help="repeats: save each run every quarter cycle beside its bundle; started again, a run "
+                               "goes on from its save (the same bit for bit wherever it stopped; to rounding the "
+                               "same as a run without saves)")),
     ("--report", dict(default=None, metavar="DOCS",
                       help="factors: copy the study's files to DOCS/factors/ and write the table there from them")),
     ("--mpi", dict(type=int, default=None, metavar="N",
@@ -249,7 +253,8 @@ JOBS = Registry([
         "compression to large strain with snapshots (Fig. 19).", cost=large_compression_steps),
     Job("factors", _factors, "one pull of the factor study (a preparation), then its table."),
     Job("repeats", lambda a, amps, slow, periods: repeats(a.out, amps or REPEAT_AMPLITUDES,
-                                                          a.factors or REPEAT_FACTORS, periods, a.quick),
+                                                          a.factors or REPEAT_FACTORS, periods, a.quick,
+                                                          checkpoint=a.checkpoint),
         "the tested sample's tension cycles with the campaign's step perturbed by 1e-6 .. 5e-6 (issue #60): the "
         "spread of single runs' post-peak verdicts."),
     Job("affine", lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),

@@ -54,7 +54,8 @@ def variant_prefix(returns="length", kc_over_kp=None, grips=None):
 
 
 def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, prefix="", dt_factor=None,
-               energy=False, cycles=None, protocol=None, returns="length", kc_over_kp=None, grips=None):
+               energy=False, cycles=None, protocol=None, returns="length", kc_over_kp=None, grips=None,
+               checkpoint=False):
     """One cyclic run (the campaign's cycle count, period in crossing times) from the unconfined
     start: writes ``<name>.csv`` (iter, Dx, F/(kp d0)) and ``<name>.json`` (the run's
     description, peaks per cycle) in the bundle runs/<name>/. A complete bundle made from the
@@ -66,10 +67,17 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
     that turn back at the start's force (uniaxial.Test.force_cycles) instead of at Dx = 0;
     ``kc_over_kp``, the particles' kc/kp changed on the unconfined start, every contact keeping
     its history (sample.set_tensile_stiffness); ``grips``, loaded through glued particles of this
-    thickness [d0] instead of the flat walls (uniaxial.Test.use_grips). Returns (description, rows)."""
+    thickness [d0] instead of the flat walls (uniaxial.Test.use_grips). ``checkpoint``: the cycles
+    saved after every quarter cycle beside the bundle (<name>.checkpoint.yade.gz; uniaxial.Test's
+    checkpoint), and a run found saved there goes on from its save; such a run is the same bit for
+    bit wherever its processes stopped, and the same to rounding as one without saves (serial
+    cosine cycles only). Returns (description, rows)."""
     proto = dict(PROTOCOL, **(protocol or {}))
     if returns == "force" and (mode != "tension" or _mpy() is not None):
         raise ValueError("returns = 'force': tension cycles only, without yade.mpy")
+    if checkpoint and (returns == "force" or _mpy() is not None or kc_over_kp is not None or grips is not None):
+        raise ValueError("checkpoint: the plain cosine cycles in one process only (not returns = 'force', "
+                         "kc_over_kp, grips, yade.mpy)")
     prefix = variant_prefix(returns, kc_over_kp, grips) + prefix
     name = run_name(mode, amplitude, period, prefix)
     where = run_dir(outdir, name, quick)
@@ -83,8 +91,12 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
                   flush=True)
     n_cycles = cycles or (QUICK if quick else FULL)["cycles"]
     t0 = time.time()
-    prepare(outdir, quick, progress and is_master(), **(protocol or {}))
     dt_factor = DT_FACTORS[mode] if dt_factor is None else dt_factor
+    saved = os.path.join(os.path.dirname(where), name + ".checkpoint.yade.gz") if checkpoint else None
+    if saved and os.path.exists(saved + ".json"):
+        return _resumed(saved, name, where, mode, amplitude, period, quick, n_cycles, dt_factor, proto, energy,
+                        progress, t0)
+    prepare(outdir, quick, progress and is_master(), **(protocol or {}))
     O.dt *= dt_factor
     bundle = _out.Bundle(where) if is_master() else None
     variant = {}
@@ -96,7 +108,9 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             variant["grips"] = test.grips
         if energy:
             test.track_energy()
-        if returns == "force":
+        if saved:
+            rows = test.cycles(mode, amplitude, n_cycles=n_cycles, period=period, checkpoint=saved)
+        elif returns == "force":
             rows = test.force_cycles(amplitude, n_cycles=n_cycles, period=period)
             variant["returns"] = "force"
             variant["turns"] = test.turns
@@ -109,7 +123,20 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
         if bundle is not None:
             bundle.discard()
         raise
-    info = {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": n_cycles,
+    info = _description(name, mode, amplitude, period, quick, n_cycles, test, rows, t0, dt_factor, proto, variant,
+                        returns)
+    if saved:
+        info["checkpoint"] = "saved every quarter cycle"
+    if energy:
+        info["energy_balance"] = test.energy_balance()
+    if bundle is None:
+        return info, rows
+    return _written(bundle, name, info, rows, test, progress)
+
+
+def _description(name, mode, amplitude, period, quick, n_cycles, test, rows, t0, dt_factor, proto, variant,
+                 returns="length"):
+    return {"name": name, "mode": mode, "amplitude": amplitude, "period_crossings": period, "cycles": n_cycles,
             "quick": quick, "steps_per_cycle": test.steps_per_cycle, "dt": O.dt, "t_cross": test.t_cross,
             "L0": test.L0, "final_Dx": rows[-1][1], "max_abs_Dx": max(abs(r[1]) for r in rows),
             "F_range": [min(r[2] for r in rows), max(r[2] for r in rows)],
@@ -119,10 +146,25 @@ def run_cycles(outdir, mode, amplitude, period, quick=False, progress=True, pref
             "steps": O.iter - rows[0][0], "ms_per_step": 1e3 * (time.time() - t0) / max(1, O.iter - rows[0][0]),
             "mpi_ranks": _mpy().numThreads if _mpy() else 1, "dt_factor": dt_factor, "final_F": rows[-1][2],
             "protocol": proto, **variant}
+
+
+def _resumed(saved, name, where, mode, amplitude, period, quick, n_cycles, dt_factor, proto, energy, progress, t0):
+    """A run_cycles run found saved (its checkpoint): loaded, finished, written as run_cycles does."""
+    test = _uni.Test.load(saved)
+    test.progress = progress
+    if progress:
+        print(f"{name}: resumed at step {O.iter} from {saved}", flush=True)
+    it = O.iter
+    rows = test.resume(saved)
+    info = _description(name, mode, amplitude, period, quick, n_cycles, test, rows, t0, dt_factor, proto, {})
+    info.update(checkpoint="saved every quarter cycle", resumed_at_step=it,
+                wall_clock_s_note="of the last process only (from its resume)")
     if energy:
         info["energy_balance"] = test.energy_balance()
-    if bundle is None:
-        return info, rows
+    return _written(_out.Bundle(where), name, info, rows, test, progress)
+
+
+def _written(bundle, name, info, rows, test, progress):
     with bundle:
         bundle.write_text(name + ".csv", csv_text(rows))
         bundle.write_text(name + "-branches.csv", csv_text(test.branches, "iter,Dx," + ",".join(_scene.BRANCHES)))
@@ -337,16 +379,17 @@ REPEAT_AMPLITUDES = (0.2, 0.1)
 
 
 def repeats(outdir, amplitudes=REPEAT_AMPLITUDES, factors=REPEAT_FACTORS, periods=PERIODS["tension"][:1], quick=False,
-            progress=True):
+            progress=True, checkpoint=False):
     """The campaign's tension cycles (run_cycles) at each factor, amplitude and period, the step
     DT_FACTORS['tension'] x factor, each named repeat-x<factor>-tension-Dx<a>-P<period> (complete
-    runs are read back). Returns {name: description}."""
+    runs are read back); ``checkpoint``: each saved on the way (run_cycles). Returns {name: description}."""
     out = {}
     for factor in factors:
         for amplitude in amplitudes:
             for period in periods:
                 info, _ = run_cycles(outdir, "tension", amplitude, period, quick, progress,
-                                     prefix=f"repeat-x{factor:.10g}-", dt_factor=DT_FACTORS["tension"] * factor)
+                                     prefix=f"repeat-x{factor:.10g}-", dt_factor=DT_FACTORS["tension"] * factor,
+                                     checkpoint=checkpoint)
                 out[info["name"]] = info
     return out
 
