@@ -64,6 +64,22 @@ class Loops(unittest.TestCase):
                         ("unloaded", line(a, 0, lambda d: k * d))])
         self.assertEqual(loss.viscous_gamma(slow, loss.loops(rows, ev), 0.5, 2.0), [None])
 
+    def test_dissipated(self):
+        # Two loops; O.energy's terms at each turn written by hand: each loop's change per term
+        # (from the turn before its loading to the unloading after it), the terms' sum over the
+        # dissipating ones only, and a term that appears only later counted from zero.
+        ev = [("touch", 10, 0.0, 0.0), ("loaded to 0.1 d0", 20, 0.1, 1.0), ("unloaded", 30, -0.2, 0.0),
+              ("loaded to 0.2 d0", 40, 0.2, 2.0), ("unloaded", 50, -0.2, 0.0)]
+        en = [{"mesoPlastic": 0.0, "mesoElastic": 0.0}, {"mesoPlastic": 1.0, "mesoElastic": 5.0},
+              {"mesoPlastic": 1.5, "mesoElastic": 0.5, "mesoSliding": 0.25},
+              {"mesoPlastic": 2.0, "mesoElastic": 9.0, "mesoSliding": 0.5},
+              {"mesoPlastic": 4.0, "mesoElastic": 1.0, "mesoSliding": 1.25, "mesoViscous": 0.125}]
+        a, b = loss.dissipated(ev, en)
+        self.assertEqual((a["amplitude"], b["amplitude"]), (0.1, 0.2))
+        self.assertEqual((a["mesoPlastic"], a["mesoSliding"], a["mesoElastic"], a["total"]), (1.5, 0.25, 0.5, 1.75))
+        self.assertEqual((b["mesoPlastic"], b["mesoSliding"], b["mesoViscous"], b["mesoElastic"], b["total"]),
+                         (2.5, 1.0, 0.125, 0.5, 3.625))
+
 
 if __name__ == "__main__":
     unittest.main()

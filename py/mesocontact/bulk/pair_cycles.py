@@ -158,7 +158,8 @@ class Pair:
                checkpoint_steps=200000):
         """The protocol of the module's docstring; amplitudes in d0 beyond the first touch, speed
         of each cap, gap: the surfaces' distance at the start [d0]. Returns the rows (iter, delta,
-        F); ``events`` holds (what, iter, delta, F) at each turn; ``final``: pull apart at the end
+        F); ``events`` holds (what, iter, delta, F) at each turn (with O.trackEnergy on, ``event_energy``
+        O.energy's terms and the members' kinetic energy there); ``final``: pull apart at the end
         (a rate check's run may leave it out), to ``max_pull`` d0 below the touch at most;
         ``checkpoint``, ``checkpoint_steps``: that pull saved on the way (pull_apart)."""
         if isinstance(amplitudes, (str, bytes, dict)) or not hasattr(amplitudes, "__len__") or not len(amplitudes):
@@ -192,6 +193,13 @@ class Pair:
 
     def _note(self, what, d, f):
         self.events.append((what, O.iter, d, f))
+        if O.trackEnergy:  # where the work went, at each turn (O.energy's terms and the particles' kinetic energy)
+            if not hasattr(self, "event_energy"):
+                self.event_energy = []
+            kinetic = sum(0.5 * b.state.mass * b.state.vel.squaredNorm()
+                          + 0.5 * sum(w * w * j for w, j in zip(b.state.angVel, b.state.inertia))
+                          for m in self.members for b in (O.bodies[i] for i in m))
+            self.event_energy.append(dict(O.energy.items(), particles_kinetic=kinetic))
         if self.progress:
             d0, kp = self.protocol.d0, self.protocol.kp
             print(f"  {what}: delta = {d / d0:+.4f} d0  F/(kp d0) = {f / (kp * d0):+.4e}  "

@@ -65,3 +65,22 @@ def viscous_gamma(slow, fast, v_slow, v_fast):
     no work (the force read on the caps is then their inertia's, not the contact's)."""
     return [(f["loss"] - s["loss"]) / (v_fast - v_slow) / s["path"] if f["w_in"] > 0 else None
             for s, f in zip(slow, fast) if s["amplitude"] == f["amplitude"] and s["path"] > 0]
+
+
+LOSS_TERMS = ("mesoPlastic", "mesoRolling", "mesoSliding", "mesoTorsion", "mesoViscous")  # dissipated for good
+
+
+def dissipated(events, event_energy, terms=LOSS_TERMS):
+    """Per loop (from the turn before a loading to the unloading after it), the change of each
+    dissipation term of O.energy read at the turns (Pair.event_energy), their sum ``total``, and
+    the change of the other terms (stored, drag, kinetic) beside them: [{amplitude, by term}]."""
+    out = []
+    for k, e in enumerate(events):
+        if not e[0].startswith("loaded to") or k + 1 >= len(events):
+            continue
+        a, b = event_energy[k - 1], event_energy[k + 1]
+        row = {"amplitude": float(e[0].split()[2])}
+        row.update({t: b.get(t, 0.0) - a.get(t, 0.0) for t in sorted(set(a) | set(b))})
+        row["total"] = sum(row.get(t, 0.0) for t in terms)
+        out.append(row)
+    return out

@@ -334,6 +334,10 @@ JOBS = Registry([
                                        a.quick, a.speeds or measure.RATE_SPEEDS),
         "issue #59: the pair's cycles with the caps at collision-like speeds (--speeds, m/s per cap), in the "
         "ensemble's block folder (--seeds' first). Not part of 'all'."),
+    Job("rate-energy", lambda a: measure.rate_energy(ensemble.block_dir(a.out, (a.seeds or (1,))[0]),
+                                                     (a.seeds or (1,))[0], a.quick, a.speeds or measure.ENERGY_SPEEDS),
+        "issue #59: the pair's cycles at 0.625 to 40 m/s per cap (--speeds) with the law's energy tracked: the "
+        "loss per loop by term (loss.dissipated). Not part of 'all'."),
     Job("pulls", lambda a: measure.pulls(ensemble.block_dir(a.out, (a.seeds or (1,))[0]), (a.seeds or (1,))[0],
                                          a.quick, a.amplitudes or measure.PULL_AMPLITUDES),
         "issue #59: a fresh pair pressed once to each --amplitudes and pulled fully apart, slowly. Not part of 'all'."),
