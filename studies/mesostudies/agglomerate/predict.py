@@ -79,12 +79,14 @@ def predict(out, campaign, info, progress=True):
                              "range": [[tab[v][m]["min"], tab[v][m]["max"]] for v in speeds]}
                          for m in ensemble_report.MEASURES}
     res["gamma_scan"] = gamma_scan(params, info, speeds, res["by_measure"], gamma)
+    res["rate_energy"] = rate_energy(os.path.join(out, "block-s1"))
     res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
     outputs.write_atomic(os.path.join(out, "ensemble.json"), json.dumps(res, indent=1))
     outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res)
                          + "\n\n" + _scan_table(res["gamma_scan"])
+                         + "\n\n" + _energy_table(res["rate_energy"])
                          + "\n\nThe tension, per unloading, against the fitted law (tension.py):\n\n"
                          + res["tension"]["table"])
     return res
@@ -107,6 +109,41 @@ def gamma_scan(params, info, speeds, by_measure, gamma, factors=SCAN):
         rows.append({"factor": f, "gammaN": f * gamma, "e": e, "worst": worst})
     best = {m: min(rows, key=lambda r: r["worst"][m])["factor"] for m in by_measure}
     return {"speeds": [speeds[k] for k in at], "rows": rows, "best_factor": best}
+
+
+def rate_energy(block):
+    """The energy-cycles-v<m/s per cap> runs in ``block`` (measure.rate_energy), slowest first: per
+    loop the law's dissipation by term (loss.dissipated), its sum over the contacts' terms, the
+    background drag's beside it, and the sum over that of the slowest run at the same amplitude."""
+    runs = []
+    for name in sorted(f[:-5] for f in os.listdir(block) if f.startswith("energy-cycles-v") and f.endswith(".json")):
+        with open(os.path.join(block, name + ".json")) as f:
+            info = json.load(f)
+        runs.append({"speed_per_cap_m_s": info["speed_per_cap_m_s"],
+                     "loops": loss.dissipated(info["events"], info["event_energy"])})
+    runs.sort(key=lambda r: r["speed_per_cap_m_s"])
+    if runs:
+        base = {lp["amplitude"]: lp["total"] for lp in runs[0]["loops"]}
+        for r in runs:
+            for lp in r["loops"]:
+                lp["over_slowest"] = lp["total"] / base[lp["amplitude"]] if base.get(lp["amplitude"]) else None
+    return runs
+
+
+def _energy_table(runs):
+    terms = [t[4:] for t in loss.LOSS_TERMS]
+    lines = ["The pair's cycles with the law's energy (rate-energy): each loop's dissipation inside the agglomerates "
+             "[1e-7 J], by term; the background drag beside it; the contacts' sum over the slowest run's",
+             "", "| cap speed [m/s] | loop to [d0] | " + " | ".join(terms)
+             + " | contacts' sum | drag | over the slowest |",
+             "|---|---|" + "---|" * (len(terms) + 3)]
+    for r in runs:
+        for lp in r["loops"]:
+            cells = [f"{lp.get(t, 0.0) * 1e7:.2f}" for t in loss.LOSS_TERMS]
+            ratio = "–" if lp["over_slowest"] is None else f"{lp['over_slowest']:.2f}"
+            lines.append(f"| {r['speed_per_cap_m_s']:g} | {lp['amplitude']:g} | " + " | ".join(cells)
+                         + f" | {lp['total'] * 1e7:.2f} | {lp.get('mesoBackground', 0.0) * 1e7:.2f} | {ratio} |")
+    return "\n".join(lines) if runs else "(no rate-energy runs yet)"
 
 
 def _scan_table(scan):
