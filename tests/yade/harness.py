@@ -54,3 +54,29 @@ def die_start(path):
     uniaxial.make_confined(progress=False)
     lateral = {k: i for k, i in sample.wall_ids().items() if k not in ("left", "right")}
     return before, lateral, uniaxial.Test(progress=False)
+
+
+class FirstSaveKept:
+    """Within the block, ``cls.save`` (a checkpointing class's: Pair, Test) also records each save's
+    step in ``self.steps`` and copies the first save's two files to ``kept`` (a .yade.gz path): the
+    state a new process would have found had the first one died there."""
+
+    def __init__(self, cls, kept):
+        self.cls, self.kept, self.steps = cls, kept, []
+
+    def __enter__(self):
+        import shutil
+        from yade import O
+        save = self.save = self.cls.save
+
+        def save_and_keep(obj, path):
+            save(obj, path)
+            self.steps.append(O.iter)
+            if len(self.steps) == 1:
+                shutil.copy(path, self.kept)
+                shutil.copy(path + ".json", self.kept + ".json")
+        self.cls.save = save_and_keep
+        return self
+
+    def __exit__(self, *exc):
+        self.cls.save = self.save

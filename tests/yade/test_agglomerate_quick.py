@@ -22,7 +22,7 @@ from mesocontact.bulk import agglomerate, pair_cycles
 from mesocontact.bulk.collisions import Collision
 from mesostudies.agglomerate import compare, make, study
 from mesostudies.agglomerate.primaries import D0, SCALES
-from harness import check, finish
+from harness import FirstSaveKept, check, finish
 
 pair_cycles.PROGRESS_EVERY = 2.0  # the long strokes' progress lines, in the log (a full run prints one a minute)
 
@@ -289,7 +289,6 @@ check(all(os.path.getsize(os.path.join(cg_out, f)) > 1000 for f in ("cycles.csv"
 # collider's order of new contacts; here none form, and it is the same bit for bit); then the pull
 # loaded from its first save (Pair.load, as a new process would), saving on: every row and event the
 # saved run's, bit for bit; the checkpoint's files are removed at the end; a bad path is refused.
-import shutil  # noqa: E402
 
 
 def wall_pull(**kw):
@@ -300,21 +299,10 @@ def wall_pull(**kw):
 
 whole, rows = wall_pull()
 pull_steps = whole.events[-1][1] - whole.events[-2][1]
-ck, kept, saves = os.path.join(out, "pull.checkpoint.yade.gz"), os.path.join(out, "kept.yade.gz"), []
-save = pair_cycles.Wall.save
-
-
-def save_and_keep(self, path):
-    save(self, path)
-    saves.append(O.iter)
-    if len(saves) == 1:
-        shutil.copy(path, kept)
-        shutil.copy(path + ".json", kept + ".json")
-
-
-pair_cycles.Wall.save = save_and_keep
-saved, rows_saved = wall_pull(checkpoint=ck, checkpoint_steps=max(1, pull_steps // 4))
-pair_cycles.Wall.save = save
+ck, kept = os.path.join(out, "pull.checkpoint.yade.gz"), os.path.join(out, "kept.yade.gz")
+with FirstSaveKept(pair_cycles.Wall, kept) as first:
+    saved, rows_saved = wall_pull(checkpoint=ck, checkpoint_steps=max(1, pull_steps // 4))
+saves = first.steps
 check(len(saves) >= 3 and rows_saved == rows and saved.events == whole.events,
       f"checkpoint: {len(saves)} saves in a pull of {pull_steps} steps ({whole.events[-1][0]}), every one of "
       f"{len(rows)} rows and the events as in the whole run")
