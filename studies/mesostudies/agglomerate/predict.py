@@ -133,16 +133,19 @@ def rate_energy(block):
 def _energy_table(runs):
     terms = [t[4:] for t in loss.LOSS_TERMS]
     lines = ["The pair's cycles with the law's energy (rate-energy): each loop's dissipation inside the agglomerates "
-             "[1e-7 J], by term; the background drag beside it; the contacts' sum over the slowest run's",
+             "[1e-7 J], by term; the background drag and the change of the particles' kinetic energy beside it (a "
+             "fast start leaves the free parts moving, and that energy is dissipated in the loops that follow); the "
+             "contacts' sum over the slowest run's",
              "", "| cap speed [m/s] | loop to [d0] | " + " | ".join(terms)
-             + " | contacts' sum | drag | over the slowest |",
-             "|---|---|" + "---|" * (len(terms) + 3)]
+             + " | contacts' sum | drag | kinetic change | over the slowest |",
+             "|---|---|" + "---|" * (len(terms) + 4)]
     for r in runs:
         for lp in r["loops"]:
             cells = [f"{lp.get(t, 0.0) * 1e7:.2f}" for t in loss.LOSS_TERMS]
             ratio = "–" if lp["over_slowest"] is None else f"{lp['over_slowest']:.2f}"
             lines.append(f"| {r['speed_per_cap_m_s']:g} | {lp['amplitude']:g} | " + " | ".join(cells)
-                         + f" | {lp['total'] * 1e7:.2f} | {lp.get('mesoBackground', 0.0) * 1e7:.2f} | {ratio} |")
+                         + f" | {lp['total'] * 1e7:.2f} | {lp.get('mesoBackground', 0.0) * 1e7:.2f} | "
+                         f"{lp.get('particles_kinetic', 0.0) * 1e7:+.2f} | {ratio} |")
     return "\n".join(lines) if runs else "(no rate-energy runs yet)"
 
 
