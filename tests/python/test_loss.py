@@ -80,6 +80,18 @@ class Loops(unittest.TestCase):
         self.assertEqual((b["mesoPlastic"], b["mesoSliding"], b["mesoViscous"], b["mesoElastic"], b["total"]),
                          (2.5, 1.0, 0.125, 0.5, 3.625))
 
+    def test_viscous_gamma_dissipated(self):
+        # The contacts' extra dissipation over the slow run's path and the relative speeds' difference,
+        # by hand; the drag (not among the contacts' terms) is left out; a fast loop whose loading took
+        # no work by the caps' reading gives None; a loop of another amplitude is skipped.
+        slow_l = [{"amplitude": 0.1, "path": 0.5, "w_in": 1.0}, {"amplitude": 0.2, "path": 2.0, "w_in": 1.0}]
+        fast_l = [{"amplitude": 0.1, "path": 9.0, "w_in": -1.0}, {"amplitude": 0.2, "path": 9.0, "w_in": 1.0}]
+        slow_d = [{"total": 1.0}, {"total": 3.0, "mesoBackground": 1.0}]
+        fast_d = [{"total": 5.0}, {"total": 7.0, "mesoBackground": 4.0}]
+        self.assertEqual(loss.viscous_gamma_dissipated(slow_l, slow_d, fast_l, fast_d, 1.0, 3.0), [None, 1.0])
+        other = [{"amplitude": 0.3, "path": 9.0, "w_in": 1.0}]
+        self.assertEqual(loss.viscous_gamma_dissipated(slow_l[:1], slow_d[:1], other, fast_d[:1], 1.0, 3.0), [])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -84,3 +84,17 @@ def dissipated(events, event_energy, terms=LOSS_TERMS):
         row["total"] = sum(row.get(t, 0.0) for t in terms)
         out.append(row)
     return out
+
+
+def viscous_gamma_dissipated(slow_loops, slow_dissipated, fast_loops, fast_dissipated, v_slow, v_fast):
+    """viscous_gamma on the law's own bookkeeping: the contacts' dissipation per loop (dissipated()'s
+    ``total``, the background drag left out, as in a collision) instead of the caps' loop, whose
+    F d(delta) misses the work of caps that the free parts lag behind; over the slow run's path.
+    None where the fast loop's loading takes no work by the caps' reading (a start dominated by
+    the caps' inertia, as viscous_gamma)."""
+    out = []
+    for sl, sd, fl, fd in zip(slow_loops, slow_dissipated, fast_loops, fast_dissipated):
+        if sl["amplitude"] != fl["amplitude"] or sl["path"] <= 0:
+            continue
+        out.append((fd["total"] - sd["total"]) / (v_fast - v_slow) / sl["path"] if fl["w_in"] > 0 else None)
+    return out

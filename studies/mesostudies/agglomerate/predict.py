@@ -80,6 +80,7 @@ def predict(out, campaign, info, progress=True):
                          for m in ensemble_report.MEASURES}
     res["gamma_scan"] = gamma_scan(params, info, speeds, res["by_measure"], gamma)
     res["rate_energy"] = rate_energy(os.path.join(out, "block-s1"))
+    res["energy_prediction"] = energy_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
     res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
@@ -87,6 +88,7 @@ def predict(out, campaign, info, progress=True):
     outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res)
                          + "\n\n" + _scan_table(res["gamma_scan"])
                          + "\n\n" + _energy_table(res["rate_energy"])
+                         + "\n\n" + _energy_prediction_table(res["energy_prediction"], res)
                          + "\n\nThe tension, per unloading, against the fitted law (tension.py):\n\n"
                          + res["tension"]["table"])
     return res
@@ -128,6 +130,43 @@ def rate_energy(block):
             for lp in r["loops"]:
                 lp["over_slowest"] = lp["total"] / base[lp["amplitude"]] if base.get(lp["amplitude"]) else None
     return runs
+
+
+def energy_prediction(block, params, info, speeds, res):
+    """A second prediction from cycles alone: gammaN from the energy-tracked cycles
+    (loss.viscous_gamma_dissipated, each faster run against the slowest; the median), and e of the
+    meso pair with it at every speed; None without two energy runs."""
+    runs = {}
+    for name in sorted(f[:-5] for f in os.listdir(block) if f.startswith("energy-cycles-v") and f.endswith(".json")):
+        rows, info_run = _run(block, name)
+        runs[info_run["speed_per_cap_m_s"]] = (loss.loops(rows, info_run["events"]),
+                                               loss.dissipated(info_run["events"], info_run["event_energy"]))
+    if len(runs) < 2:
+        return None
+    slow = min(runs)
+    per = {f"{v:g} against {slow:g} m/s per cap": loss.viscous_gamma_dissipated(*runs[slow], *runs[v], 2 * slow / 1e3,
+                                                                                2 * v / 1e3)
+           for v in sorted(runs) if v != slow}
+    values = [g for gs in per.values() for g in gs if g is not None]
+    gamma = statistics.median(values)
+    e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=gamma)
+    return {"gammaN": gamma, "gammaN_per_run": per, "slowest_cap_m_s": slow, "e_predicted": e,
+            "difference": [None if m is None else p - m for m, p in zip(res["e_mean"], e)],
+            "fitted_to": "k1, kp, kc, phiF: the slow cycles' fit; gammaN: the energy-tracked cycles' contact "
+                         "dissipation per loop (drag left out) over the slowest's; nothing from a collision"}
+
+
+def _energy_prediction_table(ep, res):
+    if ep is None:
+        return "(no second prediction: fewer than two energy-tracked cycle runs)"
+    per = "; ".join(f"{k}: " + ", ".join("–" if g is None else f"{g:.3g}" for g in gs)
+                    for k, gs in ep["gammaN_per_run"].items())
+    lines = [f"The second prediction from cycles alone: gammaN = {ep['gammaN']:.3g} kg/s from the energy-tracked "
+             f"cycles (the median of {per})",
+             "", f"| v [m/s] | {res['measure']} mean | predicted | difference |", "|---|---|---|---|"]
+    for v, m, p, d in zip(res["speeds"], res["e_mean"], ep["e_predicted"], ep["difference"]):
+        lines.append(f"| {v:g} | {m:.3f} | {p:.3f} | {d:+.3f} |" if m is not None else f"| {v:g} | – | {p:.3f} | – |")
+    return "\n".join(lines)
 
 
 def _energy_table(runs):
