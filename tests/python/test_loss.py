@@ -92,6 +92,17 @@ class Loops(unittest.TestCase):
         other = [{"amplitude": 0.3, "path": 9.0, "w_in": 1.0}]
         self.assertEqual(loss.viscous_gamma_dissipated(slow_l[:1], slow_d[:1], other, fast_d[:1], 1.0, 3.0), [])
 
+    def test_caps_work(self):
+        # A constant F = 2 over a loading of 10 steps and an unloading of 10 steps, caps at speed 0.5
+        # each, dt 0.1: the caps approach by 2 x 0.5 x 0.1 x 10 = 1 and part by as much, so the loop's
+        # work is 2 x 1 - 2 x 1 = 0 whatever delta does. With F = 3 on the way in (rows 0-9) the loading
+        # takes 0.1 x (9 x 3 + 2.5) = 2.95 (the last interval's trapezoid is (3 + 2)/2): the loop 0.95.
+        ev = [("touch", 0, 0.0, 0.0), ("loaded to 0.1 d0", 10, 0.0, 0.0), ("unloaded", 20, 0.0, 0.0)]
+        rows = [(i, 0.3 * (i % 3), 2.0) for i in range(21)]   # delta wanders: it must not enter
+        self.assertAlmostEqual(loss.caps_work(rows, ev, 0.5, 0.1)[0], 0.0, places=12)
+        rows = [(i, 0.0, 3.0 if i < 10 else 2.0) for i in range(21)]
+        self.assertAlmostEqual(loss.caps_work(rows, ev, 0.5, 0.1)[0], 0.95, places=12)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -246,20 +246,15 @@ class Pair:
     def load(cls, path):
         """Loads a scene saved by ``save`` into O and returns its pair, the caps' engines and the
         recorder bound to it again."""
-        state = _checkpoint.load(path)
-        if state.pop("kind") != cls.__name__:
-            raise ValueError(f"path = {path!r} is invalid: it holds another kind's state, not a {cls.__name__}'s")
         pair = cls.__new__(cls)
-        pair._bind(state)
+        pair._reload(path)
         return pair
 
     def _reload(self, path):
-        """Loads the scene just saved to ``path`` and binds this pair to it again."""
+        """Loads the scene saved to ``path`` and binds this pair to it (again)."""
         state = _checkpoint.load(path)
-        del state["kind"]
-        self._bind(state)
-
-    def _bind(self, state):
+        if state.pop("kind") != type(self).__name__:
+            raise ValueError(f"path = {path!r} is invalid: it holds another kind's state, not a {type(self).__name__}")
         self._t0 = time.time() - state.pop("elapsed")
         self.__dict__.update(state)
         self.protocol = _protocol.Protocol.from_json(state["protocol"])

@@ -98,3 +98,20 @@ def viscous_gamma_dissipated(slow_loops, slow_dissipated, fast_loops, fast_dissi
             continue
         out.append((fd["total"] - sd["total"]) / (v_fast - v_slow) / sl["path"] if fl["w_in"] > 0 else None)
     return out
+
+
+def caps_work(rows, events, cap_speed, dt):
+    """Per loop (as loops()), the caps' own work: F times the caps' approach, each cap moving at
+    ``cap_speed`` (> 0) for (iter_b - iter_a) steps of ``dt`` between rows, towards the other while
+    loading and away while unloading. Unlike loops()' F d(delta), it holds when the free parts lag
+    behind the caps (delta is then not the caps' displacement)."""
+    out = []
+    for k, e in enumerate(events):
+        if not e[0].startswith("loaded to") or k + 1 >= len(events):
+            continue
+        work = 0.0
+        for i0, i1, sign in ((events[k - 1][1], e[1], 1.0), (e[1], events[k + 1][1], -1.0)):
+            part = _between(rows, i0, i1)
+            work += sign * sum(0.5 * (a[2] + b[2]) * 2 * cap_speed * dt * (b[0] - a[0]) for a, b in zip(part, part[1:]))
+        out.append(work)
+    return out

@@ -113,17 +113,28 @@ def gamma_scan(params, info, speeds, by_measure, gamma, factors=SCAN):
     return {"speeds": [speeds[k] for k in at], "rows": rows, "best_factor": best}
 
 
-def rate_energy(block):
-    """The energy-cycles-v<m/s per cap> runs in ``block`` (measure.rate_energy), slowest first: per
-    loop the law's dissipation by term (loss.dissipated), its sum over the contacts' terms, the
-    background drag's beside it, and the sum over that of the slowest run at the same amplitude."""
-    runs = []
+def _energy_runs(block):
+    """{cap speed [m/s]: (rows, description)} of the energy-cycles-v<m/s per cap> runs in ``block``."""
+    runs = {}
     for name in sorted(f[:-5] for f in os.listdir(block) if f.startswith("energy-cycles-v") and f.endswith(".json")):
-        with open(os.path.join(block, name + ".json")) as f:
-            info = json.load(f)
-        runs.append({"speed_per_cap_m_s": info["speed_per_cap_m_s"],
-                     "loops": loss.dissipated(info["events"], info["event_energy"])})
-    runs.sort(key=lambda r: r["speed_per_cap_m_s"])
+        rows, info = _run(block, name)
+        runs[info["speed_per_cap_m_s"]] = (rows, info)
+    return runs
+
+
+def rate_energy(block):
+    """The energy-cycles runs in ``block`` (measure.rate_energy), slowest first: per loop the law's
+    dissipation by term (loss.dissipated), its sum over the contacts' terms, the background drag's
+    beside it, the sum over that of the slowest run at the same amplitude, and the loop's work three
+    ways: the caps' own (loss.caps_work), O.energy's whole change, and F d(delta) (loss.loops)."""
+    runs = []
+    for v, (rows, info) in sorted(_energy_runs(block).items()):
+        loops = loss.dissipated(info["events"], info["event_energy"])
+        caps = loss.caps_work(rows, info["events"], v / 1e3, info["dt"])
+        for lp, w, fd in zip(loops, caps, loss.loops(rows, info["events"])):
+            whole = sum(x for t, x in lp.items() if t not in ("amplitude", "total", "kinetic", "gravWork"))
+            lp.update(caps_work=w, f_ddelta=fd["loss"], energy_sum=whole)
+        runs.append({"speed_per_cap_m_s": v, "loops": loops})
     if runs:
         base = {lp["amplitude"]: lp["total"] for lp in runs[0]["loops"]}
         for r in runs:
@@ -136,11 +147,8 @@ def energy_prediction(block, params, info, speeds, res):
     """A second prediction from cycles alone: gammaN from the energy-tracked cycles
     (loss.viscous_gamma_dissipated, each faster run against the slowest; the median), and e of the
     meso pair with it at every speed; None without two energy runs."""
-    runs = {}
-    for name in sorted(f[:-5] for f in os.listdir(block) if f.startswith("energy-cycles-v") and f.endswith(".json")):
-        rows, info_run = _run(block, name)
-        runs[info_run["speed_per_cap_m_s"]] = (loss.loops(rows, info_run["events"]),
-                                               loss.dissipated(info_run["events"], info_run["event_energy"]))
+    runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
+            for v, (rows, i) in _energy_runs(block).items()}
     if len(runs) < 2:
         return None
     slow = min(runs)
@@ -174,17 +182,19 @@ def _energy_table(runs):
     lines = ["The pair's cycles with the law's energy (rate-energy): each loop's dissipation inside the agglomerates "
              "[1e-7 J], by term; the background drag and the change of the particles' kinetic energy beside it (a "
              "fast start leaves the free parts moving, and that energy is dissipated in the loops that follow); the "
-             "contacts' sum over the slowest run's",
+             "contacts' sum over the slowest run's; the loop's work as the caps' own, as O.energy's whole change "
+             "and as F d(delta)",
              "", "| cap speed [m/s] | loop to [d0] | " + " | ".join(terms)
-             + " | contacts' sum | drag | kinetic change | over the slowest |",
-             "|---|---|" + "---|" * (len(terms) + 4)]
+             + " | contacts' sum | drag | kinetic change | over the slowest | caps' work | O.energy sum | F d(delta) |",
+             "|---|---|" + "---|" * (len(terms) + 7)]
     for r in runs:
         for lp in r["loops"]:
             cells = [f"{lp.get(t, 0.0) * 1e7:.2f}" for t in loss.LOSS_TERMS]
             ratio = "–" if lp["over_slowest"] is None else f"{lp['over_slowest']:.2f}"
             lines.append(f"| {r['speed_per_cap_m_s']:g} | {lp['amplitude']:g} | " + " | ".join(cells)
                          + f" | {lp['total'] * 1e7:.2f} | {lp.get('mesoBackground', 0.0) * 1e7:.2f} | "
-                         f"{lp.get('particles_kinetic', 0.0) * 1e7:+.2f} | {ratio} |")
+                         f"{lp.get('particles_kinetic', 0.0) * 1e7:+.2f} | {ratio} | {lp['caps_work'] * 1e7:.2f} | "
+                         f"{lp['energy_sum'] * 1e7:.2f} | {lp['f_ddelta'] * 1e7:.2f} |")
     return "\n".join(lines) if runs else "(no rate-energy runs yet)"
 
 
