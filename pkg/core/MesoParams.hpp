@@ -101,7 +101,7 @@ struct PairParams {
 	bool            slidingActs = false, rollingActs = false, torsionActs = false; // which elements act (setMechanisms())
 	Adhesion        adhesion        = Adhesion::None;
 	K2Interpolation k2Interpolation = K2Interpolation::Linear;
-	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0;
+	double          k1 = 0, kp = 0, kc = 0, fa = 0, kca = 0, gammaN = 0, gammaN2 = 0;
 	double          deltaA        = 0;         // range of the non-contact force -fa/kca (<= 0) [m]
 	double          delta0PerMaxP = 0;         // delta0P/deltaMaxP = 1 - k1/kp (Eqs. 10, 11) [-]
 	ElementParams   sliding, rolling, torsion; // Luding 2008 tangential elements

@@ -111,7 +111,7 @@ MESO_HOT NormalForce normalForce(const PairParams& p, const PairGeometry& g, Nor
 	NormalForce f;
 	f.hysteretic = hystereticForce(p, g, h, delta);
 	f.adhesive   = adhesiveForce(p, h, delta);
-	f.viscous    = delta > 0 ? p.gammaN * vn : 0.0;
+	f.viscous    = delta > 0 ? (p.gammaN + p.gammaN2 * std::abs(vn)) * vn : 0.0; // gammaN2 = 0: gammaN vn exactly
 	return f;
 }
 

@@ -23,6 +23,8 @@ namespace yade {
 
 // A number of MesoParamTable.hpp as a MesoMat attribute; every assignment is validated (postLoad).
 #define MESO_MAT_ATTR(name, def, unit, ok, rule, mix, dest, doc) ((Real, name, def, Attr::triggerPostLoad, doc " [" unit "]."))
+// An added parameter: saved by serialize(MesoMat) below, after the rest, so that older files load.
+#define MESO_MAT_ADDED_ATTR(name, def, unit, ok, rule, mix, dest, doc) ((Real, name, def, (Attr::triggerPostLoad | Attr::noSave), doc " [" unit "]."))
 
 class MesoMat : public FrictMat {
 	meso::MaterialParams valid;               // the attributes parsed and validated: what contacts are made from
@@ -65,6 +67,7 @@ public:
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
 		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
+		MESO_ADDED_PARAMS(MESO_MAT_ADDED_ATTR)
 		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion, one of " MESO_ADHESION_MODES(MESO_ADHESION_DOC) "``adhesionModes()`` lists them."))
 		((std::string,k2Interpolation,"linear",Attr::triggerPostLoad,"Interpolation of $k_2(\\delta_{max})$ between $k_1$ and $k_p$: 'linear' (Eq. 9) or 'sqrt' (Eq. D.1)."))
 		MESO_TANGENTIAL_PARAMS(MESO_MAT_ATTR)
@@ -82,6 +85,19 @@ public:
 	REGISTER_CLASS_INDEX(MesoMat, FrictMat);
 };
 REGISTER_SERIALIZABLE(MesoMat);
+
+// MesoMat's saved layout: YADE's attributes (the added parameters are noSave there), then, from
+// class version 1 on, the added parameters; a file of version 0 leaves them at their defaults.
+// Found by ADL in place of boost's generic serialize; the material is checked again once they are read.
+template <class Ar> void serialize(Ar& ar, MesoMat& m, const unsigned int version)
+{
+	boost::serialization::access::serialize(ar, m, version);
+#define MESO_SERIALIZE_ADDED(name, ...)                                                                                                                        \
+	if (version >= 1) ar& boost::serialization::make_nvp(#name, m.name);
+	MESO_ADDED_PARAMS(MESO_SERIALIZE_ADDED)
+#undef MESO_SERIALIZE_ADDED
+	if (Ar::is_loading::value) m.postLoad(m);
+}
 
 // The parameters of one material pair, shared by all its contacts (Ip2_MesoMat_MesoMat_MesoPhys
 // makes one per pair of materials and geometry kind); saved once per file, shared again on load.
@@ -319,7 +335,8 @@ REGISTER_SERIALIZABLE(Law2_ScGeom_MesoPhys_Meso);
 // boost::serialization of the core structs (they live in MesoPhys as hidden attributes).
 namespace boost {
 namespace serialization {
-	// Version 1 added phiD (version 0 files: recovered from the elements, which hold it as muD/muS).
+	// Version 1 added phiD (version 0 files: recovered from the elements, which hold it as muD/muS);
+	// version 2 the added parameters (older files: their defaults, which leave the law as it was).
 	// The tags of the flags and of the torsion element are those of the first files.
 	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int version)
 	{
@@ -341,6 +358,12 @@ namespace serialization {
 					break;
 				}
 		}
+#define MESO_SERIALIZE(name, def, unit, ok, rule, mix, dest, doc)                                                                                              \
+	if (version >= 2) ar& make_nvp(#name, p.dest);                                                                                                         \
+	else                                                                                                                                                   \
+		p.dest = def;
+		MESO_ADDED_PARAMS(MESO_SERIALIZE)
+#undef MESO_SERIALIZE
 		p.adhesion        = static_cast<meso::Adhesion>(adhesion);
 		p.k2Interpolation = static_cast<meso::K2Interpolation>(interp);
 	}
@@ -368,5 +391,6 @@ namespace serialization {
 	}
 }
 } // namespace boost::serialization
-BOOST_CLASS_VERSION(meso::PairParams, 1)
+BOOST_CLASS_VERSION(meso::PairParams, 2)
 BOOST_CLASS_VERSION(meso::PairGeometry, 1)
+BOOST_CLASS_VERSION(yade::MesoMat, 1) // 1: the added parameters saved (serialize(MesoMat) above)

@@ -87,6 +87,7 @@ Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters(const boost::python::object& m1, c
 	boost::python::dict d;
 #define MESO_ENTRY(name, ...) d[#name] = p.name;
 	MESO_NORMAL_PARAMS(MESO_ENTRY)
+	MESO_ADDED_PARAMS(MESO_ENTRY)
 #undef MESO_ENTRY
 	d["phiD"]            = p.phiD;
 	d["deltaA"]          = p.deltaA;

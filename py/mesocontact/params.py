@@ -348,7 +348,7 @@ def _why_not(grid, restitution, contact_time):
 # scale_material: how each MesoMat attribute goes with the particles' size (x s) and density (x r) when
 # the approach speeds are kept: times then go x s, masses x r s^3 and every force x r s^2 (m v^2/L).
 _SCALED = {**{k: (1, 1) for k in ("k1", "kp", "kc", "kca", "kt", "kr", "ko")},   # N/m: x r s
-           **{k: (1, 2) for k in ("fa", "gammaN", "gammaT", "gammaR", "gammaO")},  # N and kg/s: x r s^2
+           **{k: (1, 2) for k in ("fa", "gammaN", "gammaN2", "gammaT", "gammaR", "gammaO")},  # N, kg/s, kg/m: x r s^2
            "density": (1, 0), "young": (1, 0)}                                     # kg/m^3, Pa: x r
 _KEPT = ("phiF", "phiD", "muR", "muO", "frictionAngle", "poisson", "adhesion", "k2Interpolation", "dominant", "label")
 

@@ -203,6 +203,33 @@ TEST(Viscous, OnlyInMechanicalContact)
 	EXPECT_EQ(normalForce(p, g, h, -1e-6, 0.5).viscous, 0.0);
 }
 
+TEST(Viscous, QuadraticDashpotGrowsWithTheSquareAndOpposesTheMotion)
+{
+	// gammaN2 |vn| vn beside gammaN vn: 2e-3 x 0.5 + 4e-2 x 0.25 = 1.1e-2 N approaching, the opposite leaving.
+	MaterialParams m;
+	m.gammaN                           = 2e-3;
+	m.gammaN2                          = 4e-2;
+	[[maybe_unused]] const auto [p, g] = pairOf(m);
+	NormalHistory h;
+	EXPECT_DOUBLE_EQ(normalForce(p, g, h, 1e-6, 0.5).viscous, 1.1e-2);
+	EXPECT_DOUBLE_EQ(normalForce(p, g, h, 1e-6, -0.5).viscous, -1.1e-2);
+	EXPECT_EQ(normalForce(p, g, h, -1e-6, 0.5).viscous, 0.0);
+	m.gammaN                            = 0;
+	[[maybe_unused]] const auto [q, g2] = pairOf(m);
+	EXPECT_DOUBLE_EQ(normalForce(q, g2, h, 1e-6, 2.0).viscous, 4 * normalForce(q, g2, h, 1e-6, 1.0).viscous);
+}
+
+TEST(Viscous, WithoutTheQuadraticDashpotTheForceIsTheLinearOneBitForBit)
+{
+	// gammaN2 = 0 (the default) must leave every earlier result as it was: gammaN vn to the last bit.
+	MaterialParams m;
+	m.gammaN                           = 1.2345678901234567e-3;
+	[[maybe_unused]] const auto [p, g] = pairOf(m);
+	NormalHistory h;
+	for (const double vn : { 0.3, -7.77, 1e-9, 123.456 })
+		EXPECT_EQ(normalForce(p, g, h, 1e-6, vn).viscous, 1.2345678901234567e-3 * vn) << vn;
+}
+
 TEST(Viscous, NotInTheNonContactRange)
 {
 	// Reversible adhesion acts down to deltaA = -fa/kca = -1e-6 m; the dashpot only in contact. A
@@ -246,6 +273,28 @@ TEST(Energy, ViscousDissipationOfAHarmonicPathIsItsIntegral)
 		prevElastic = storedElastic(p, g, h, f.hysteretic);
 	}
 	EXPECT_LT(rel(viscous, 2e-3 * A * A * w * M_PI / 4), 1e-5);
+}
+
+TEST(Energy, QuadraticDashpotDissipationOfAHarmonicPathIsItsIntegral)
+{
+	// The same path with gammaN2 alone: int gammaN2 vn^3 dt over the quarter period = gammaN2 A^3 w^2 (2/3).
+	MaterialParams m;
+	m.gammaN2                          = 5e-2;
+	[[maybe_unused]] const auto [p, g] = pairOf(m);
+	const double  D = 2e-5, A = 1e-5, w = 1e3, T = M_PI / (2 * w);
+	const int     n = 1000;
+	NormalHistory h;
+	NormalForce   prev    = normalForce(p, g, h, D, A * w);
+	double        viscous = 0, prevDelta = D, prevElastic = storedElastic(p, g, h, prev.hysteretic);
+	for (int i = 1; i <= n; ++i) {
+		const double      t = T * i / n, d = D + A * std::sin(w * t);
+		const NormalForce f = normalForce(p, g, h, d, A * w * std::cos(w * t));
+		viscous += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).viscous;
+		prev        = f;
+		prevDelta   = d;
+		prevElastic = storedElastic(p, g, h, f.hysteretic);
+	}
+	EXPECT_LT(rel(viscous, 5e-2 * A * A * A * w * w * 2 / 3), 1e-5);
 }
 
 TEST(Energy, LoopDissipationEqualsEnclosedArea)

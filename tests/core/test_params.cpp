@@ -42,6 +42,7 @@ TEST(Validate, EachRuleNamesItsParameter)
 		  "kca" },
 		{ [](MaterialParams& m) { m.fa= -1; }, "fa" },
 		{ [](MaterialParams& m) { m.gammaN= -1; }, "gammaN" },
+		{ [](MaterialParams& m) { m.gammaN2= -1; }, "gammaN2" },
 		{ [](MaterialParams& m) {
 		         m.fa= 1e-3;
 		         m.kca= 1;

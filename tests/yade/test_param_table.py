@@ -3,7 +3,7 @@
 # reaches its contacts by the rule the docs state, written out here independently (harmonic,
 # arithmetic or smaller mean), `muD = phiD muS`, is refused by name when invalid, kept by
 # `O.save`/`O.load` in both formats, and a file of the first `PairParams` layout
-# (`tests/yade/golden/pairparams_v0.*`, written by 20d0512) loads with `phiD` recovered.
+# (`tests/yade/golden/pairparams_v0.*`, written by 20d0512) loads with `phiD` recovered and `gammaN2` 0.
 import json
 import math
 import os
@@ -24,7 +24,8 @@ def harmonic(x, y):
 # name -> (rule, value of material A, value of material B); A's and B's values all differ.
 RULES = {"k1": (harmonic, 100.0, 150.0), "kp": (harmonic, 500.0, 650.0), "kc": (harmonic, 50.0, 80.0),
          "phiF": (lambda x, y: 0.5 * (x + y), 0.1, 0.3), "fa": (harmonic, 1e-4, 3e-4), "kca": (harmonic, 100.0, 40.0),
-         "gammaN": (harmonic, 1e-3, 3e-3), "phiD": (min, 0.9, 0.6), "kt": (harmonic, 40.0, 70.0),
+         "gammaN": (harmonic, 1e-3, 3e-3), "gammaN2": (harmonic, 2e-2, 5e-2), "phiD": (min, 0.9, 0.6),
+         "kt": (harmonic, 40.0, 70.0),
          "gammaT": (harmonic, 1e-3, 4e-3), "kr": (harmonic, 20.0, 35.0), "gammaR": (harmonic, 5e-4, 2e-3),
          "muR": (min, 0.3, 0.1), "ko": (harmonic, 25.0, 10.0), "gammaO": (harmonic, 6e-4, 1e-3),
          "muO": (min, 0.05, 0.2)}
@@ -75,6 +76,9 @@ q = O.interactions[0, 1].phys
 diff = [k for k, v in ref["contact"].items() if (list(getattr(q, k)) if isinstance(v, list) else getattr(q, k)) != v]
 check(not diff, f"a version-0 file (written by {ref['written_by']}) loads with its contact as saved", f"differ: {diff}")
 check(abs(q.phiD - ref["phiD_of_the_pair"]) < 1e-15, "a version-0 file: phiD recovered from muD/muS", repr(q.phiD))
+# Written before gammaN2 (MesoMat version 0, PairParams version 0): both read it as 0, the law of then
+check(q.gammaN2 == 0.0 and all(m.gammaN2 == 0.0 for m in O.materials), "a version-0 file: gammaN2 = 0 in the contact "
+      "and every material", f"{q.gammaN2!r}, {[m.gammaN2 for m in O.materials]}")
 O.run(10, True)
 check(O.interactions[0, 1].isReal, "a version-0 file runs on")
 finish()

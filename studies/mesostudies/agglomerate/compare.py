@@ -131,24 +131,28 @@ def adhesion_consequence(params, info, plateau, touch, speeds, d0=0.01, below=0.
             "sticks_below_m_s": stick, "fa_sticking_slowest_N": least, "slowest_m_s": slowest}
 
 
-def meso_material(params, radius, mass, gammaN=0.0):
+def meso_material(params, radius, mass, gammaN=0.0, gammaN2=0.0):
     """MesoMat keywords (SI) of one meso-particle: the fitted normal law, the agglomerate's mass
-    (density from its outer radius), viscosity gammaN [kg/s] (0: the cycles' law), no friction or
-    rolling (head-on collisions)."""
+    (density from its outer radius), viscosity gammaN [kg/s] (0: the cycles' law) and the quadratic
+    dashpot gammaN2 [kg/m] (given only when > 0), no friction or rolling (head-on collisions)."""
     density = mass / (4.0 / 3.0 * math.pi * radius ** 3)
-    return dict(density=density, k1=params["k1"], kp=params["kp"], kc=params["kc"], phiF=params["phiF"],
-                gammaN=gammaN, frictionAngle=0.0)
+    kw = dict(density=density, k1=params["k1"], kp=params["kp"], kc=params["kc"], phiF=params["phiF"],
+              gammaN=gammaN, frictionAngle=0.0)
+    if gammaN2 > 0:
+        kw["gammaN2"] = gammaN2
+    return kw
 
 
-def meso_collisions(params, info, speeds, progress=True, gammaN=0.0):
+def meso_collisions(params, info, speeds, progress=True, gammaN=0.0, gammaN2=0.0):
     """e of two meso-particles of the fitted law (YADE, mesocontact.pair) at each relative speed
-    [mm/us], with viscosity gammaN [kg/s]; replaces the scene in O."""
+    [mm/us], with viscosity gammaN [kg/s] and the quadratic dashpot gammaN2 [kg/m]; replaces the
+    scene in O."""
     from mesocontact import pair
     from yade import wrapper as _w
     a12, m_r, radii, masses = geometry(info)
     out = []
     for v in speeds:
-        mats = [_w.MesoMat(**meso_material(params, r, m, gammaN)) for r, m in zip(radii, masses)]
+        mats = [_w.MesoMat(**meso_material(params, r, m, gammaN, gammaN2)) for r, m in zip(radii, masses)]
         s = pair.build(radii[0], v * SPEED, material=mats[0], radius2=radii[1], material2=mats[1])
         out.append(pair.collide(s).e)
         if progress:

@@ -100,6 +100,38 @@ def viscous_gamma_dissipated(slow_loops, slow_dissipated, fast_loops, fast_dissi
     return out
 
 
+def extra_loss_points(slow_loops, slow_dissipated, fast_loops, fast_dissipated, v_slow, v_fast):
+    """Per loop as viscous_gamma_dissipated: (v_slow, v_fast, the contacts' extra dissipation over the
+    slow run's per length of the slow run's path in contact [force]); None for a fast loop whose
+    loading takes no work. What a rate law of the contact must lose on that path at v_fast."""
+    return [(v_slow, v_fast, (fd["total"] - sd["total"]) / sl["path"]) if fl["w_in"] > 0 else None
+            for sl, sd, fl, fd in zip(slow_loops, slow_dissipated, fast_loops, fast_dissipated)
+            if sl["amplitude"] == fl["amplitude"] and sl["path"] > 0]
+
+
+def rate_dashpots(points):
+    """(gammaN, gammaN2, residuals): the linear and the quadratic dashpot, each >= 0, whose loss along
+    a path run at constant speed, gammaN v + gammaN2 v^2 per length, meets the points' extra loss
+    y = gammaN (v_fast - v_slow) + gammaN2 (v_fast^2 - v_slow^2) in least squares (points from
+    extra_loss_points; None skipped). Residuals y - fit, per point given."""
+    pts = [p for p in points if p is not None]
+    if len(pts) < 2:
+        raise ValueError(f"rate_dashpots: {len(pts)} usable point(s); two are needed for two dashpots")
+    cols = [(vf - vs, vf * vf - vs * vs, y) for vs, vf, y in pts]
+
+    def one(k):  # the best with the other dashpot at 0
+        return max(sum(c[k] * c[2] for c in cols) / sum(c[k] * c[k] for c in cols), 0.0)
+
+    s11, s12, s22 = (sum(c[0] * c[0] for c in cols), sum(c[0] * c[1] for c in cols), sum(c[1] * c[1] for c in cols))
+    r1, r2 = sum(c[0] * c[2] for c in cols), sum(c[1] * c[2] for c in cols)
+    det = s11 * s22 - s12 * s12
+    g1, g2 = (r1 * s22 - r2 * s12) / det, (s11 * r2 - s12 * r1) / det
+    if g1 < 0 or g2 < 0:  # the least squares lie on a bound: the better of the two one-dashpot fits
+        cands = [(one(0), 0.0), (0.0, one(1))]
+        g1, g2 = min(cands, key=lambda g: sum((c[2] - g[0] * c[0] - g[1] * c[1]) ** 2 for c in cols))
+    return g1, g2, [c[2] - g1 * c[0] - g2 * c[1] for c in cols]
+
+
 def caps_work(rows, events, cap_speed, dt):
     """Per loop (as loops()), the caps' own work: F times the caps' approach, each cap moving at
     ``cap_speed`` (> 0) for (iter_b - iter_a) steps of ``dt`` between rows, towards the other while

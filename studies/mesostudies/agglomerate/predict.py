@@ -81,6 +81,7 @@ def predict(out, campaign, info, progress=True):
     res["gamma_scan"] = gamma_scan(params, info, speeds, res["by_measure"], gamma)
     res["rate_energy"] = rate_energy(os.path.join(out, "block-s1"))
     res["energy_prediction"] = energy_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
+    res["rate_law_prediction"] = rate_law_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
     res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
@@ -89,6 +90,7 @@ def predict(out, campaign, info, progress=True):
                          + "\n\n" + _scan_table(res["gamma_scan"])
                          + "\n\n" + _energy_table(res["rate_energy"])
                          + "\n\n" + _energy_prediction_table(res["energy_prediction"], res)
+                         + "\n\n" + _rate_law_table(res["rate_law_prediction"], res)
                          + "\n\nThe tension, per unloading, against the fitted law (tension.py):\n\n"
                          + res["tension"]["table"])
     return res
@@ -162,6 +164,51 @@ def energy_prediction(block, params, info, speeds, res):
             "difference": [None if m is None else p - m for m, p in zip(res["e_mean"], e)],
             "fitted_to": "k1, kp, kc, phiF: the slow cycles' fit; gammaN: the energy-tracked cycles' contact "
                          "dissipation per loop (drag left out) over the slowest's; nothing from a collision"}
+
+
+def rate_law_prediction(block, params, info, speeds, res):
+    """A third prediction from cycles alone, with the law's rate feature (issue #59, item 4): the
+    linear and the quadratic dashpot, gammaN v + gammaN2 v^2 (MesoMat.gammaN2), fitted together to the
+    energy-tracked cycles' extra contact dissipation per length of path over the slowest run's
+    (loss.extra_loss_points, loss.rate_dashpots: least squares over every loop kept by the rule of
+    energy_prediction), and e of the meso pair with both at every speed; None without two energy runs."""
+    runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
+            for v, (rows, i) in _energy_runs(block).items()}
+    if len(runs) < 2:
+        return None
+    slow = min(runs)
+    points, labels = [], []
+    for v in sorted(runs):
+        if v == slow:
+            continue
+        for lp, pt in zip(runs[v][0], loss.extra_loss_points(*runs[slow], *runs[v], 2 * slow, 2 * v)):
+            if pt is not None:  # SI: relative speeds [m/s], extra loss per metre of path [N]
+                points.append((pt[0], pt[1], pt[2] / 1e-3))
+                labels.append(f"{v:g} m/s per cap, loop to {lp['amplitude']:g} d0")
+    g1, g2, resid = loss.rate_dashpots(points)
+    e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=g1, gammaN2=g2)
+    return {"gammaN": g1, "gammaN2": g2, "slowest_cap_m_s": slow,
+            "points": [{"loop": lab, "v_slow": p[0], "v_fast": p[1], "extra_loss_per_m": p[2], "residual": r}
+                       for lab, p, r in zip(labels, points, resid)],
+            "e_predicted": e, "difference": [None if m is None else x - m for m, x in zip(res["e_mean"], e)],
+            "fitted_to": "k1, kp, kc, phiF: the slow cycles' fit; gammaN and gammaN2: least squares to the "
+                         "energy-tracked cycles' contact dissipation per loop (drag left out) over the slowest's, "
+                         "per length of its path in contact; nothing from a collision"}
+
+
+def _rate_law_table(rp, res):
+    if rp is None:
+        return "(no third prediction: fewer than two energy-tracked cycle runs)"
+    lines = [f"The third prediction from cycles alone, with the quadratic dashpot: gammaN = {rp['gammaN']:.3g} kg/s "
+             f"and gammaN2 = {rp['gammaN2']:.3g} kg/m, least squares to the energy-tracked cycles' extra loss per "
+             "metre of path over the slowest run's", "", "| loop | relative speed [m/s] | extra loss per metre [N] | "
+             "fit's residual [N] |", "|---|---|---|---|"]
+    for p in rp["points"]:
+        lines.append(f"| {p['loop']} | {p['v_fast']:g} | {p['extra_loss_per_m']:.3g} | {p['residual']:+.3g} |")
+    lines += ["", f"| v [m/s] | {res['measure']} mean | predicted | difference |", "|---|---|---|---|"]
+    for v, m, x, d in zip(res["speeds"], res["e_mean"], rp["e_predicted"], rp["difference"]):
+        lines.append(f"| {v:g} | {m:.3f} | {x:.3f} | {d:+.3f} |" if m is not None else f"| {v:g} | – | {x:.3f} | – |")
+    return "\n".join(lines)
 
 
 def _energy_prediction_table(ep, res):
