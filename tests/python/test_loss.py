@@ -92,6 +92,30 @@ class Loops(unittest.TestCase):
         other = [{"amplitude": 0.3, "path": 9.0, "w_in": 1.0}]
         self.assertEqual(loss.viscous_gamma_dissipated(slow_l[:1], slow_d[:1], other, fast_d[:1], 1.0, 3.0), [])
 
+    def test_extra_loss_points(self):
+        # The same loops: (v_slow, v_fast, extra loss over the slow path), None where loading took no work.
+        slow_l = [{"amplitude": 0.1, "path": 0.5, "w_in": 1.0}, {"amplitude": 0.2, "path": 2.0, "w_in": 1.0}]
+        fast_l = [{"amplitude": 0.1, "path": 9.0, "w_in": -1.0}, {"amplitude": 0.2, "path": 9.0, "w_in": 1.0}]
+        slow_d, fast_d = [{"total": 1.0}, {"total": 3.0}], [{"total": 5.0}, {"total": 7.0}]
+        self.assertEqual(loss.extra_loss_points(slow_l, slow_d, fast_l, fast_d, 1.0, 3.0), [None, (1.0, 3.0, 2.0)])
+
+    def test_rate_dashpots(self):
+        # Points made from gammaN = 2, gammaN2 = 0.5 exactly: y = 2 (v - 1) + 0.5 (v^2 - 1) at v = 2, 3, 5
+        # (6.5/2 ... by hand: 3.5, 8, 20) give both back and zero residuals; None is skipped.
+        pts = [(1.0, 2.0, 3.5), None, (1.0, 3.0, 8.0), (1.0, 5.0, 20.0)]
+        g1, g2, res = loss.rate_dashpots(pts)
+        self.assertAlmostEqual(g1, 2.0, places=12)
+        self.assertAlmostEqual(g2, 0.5, places=12)
+        self.assertTrue(all(abs(r) < 1e-12 for r in res))
+        # Points that would need a negative gammaN (y = v^2 - 1 - 0.5 (v - 1)): the bound, gammaN = 0, and the
+        # least squares of gammaN2 alone: sum (v^2-1) y / sum (v^2-1)^2 with v^2 - 1 = 3, 8, 24 and y = 2.5, 7, 21
+        pts = [(1.0, 2.0, 2.5), (1.0, 3.0, 7.0), (1.0, 5.0, 21.0)]
+        g1, g2, _ = loss.rate_dashpots(pts)
+        self.assertEqual(g1, 0.0)
+        self.assertAlmostEqual(g2, (3 * 2.5 + 8 * 7 + 24 * 21) / (9 + 64 + 576), places=12)
+        with self.assertRaisesRegex(ValueError, "two are needed"):
+            loss.rate_dashpots([(1.0, 2.0, 3.5), None])
+
     def test_caps_work(self):
         # A constant F = 2 over a loading of 10 steps and an unloading of 10 steps, caps at speed 0.5
         # each, dt 0.1: the caps approach by 2 x 0.5 x 0.1 x 10 = 1 and part by as much, so the loop's
