@@ -81,7 +81,7 @@ def predict(out, campaign, info, progress=True):
     res["gamma_scan"] = gamma_scan(params, info, speeds, res["by_measure"], gamma)
     res["rate_energy"] = rate_energy(os.path.join(out, "block-s1"))
     res["energy_prediction"] = energy_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
-    res["rate_law_prediction"] = rate_law_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
+    res["rate_law_prediction"] = rate_law_prediction(out, params, info, speeds, res)
     res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
@@ -166,43 +166,61 @@ def energy_prediction(block, params, info, speeds, res):
                          "dissipation per loop (drag left out) over the slowest's; nothing from a collision"}
 
 
-def rate_law_prediction(block, params, info, speeds, res):
-    """A third prediction from cycles alone, with the law's rate feature (issue #59, item 4): the
-    linear and the quadratic dashpot, gammaN v + gammaN2 v^2 (MesoMat.gammaN2), fitted together to the
-    energy-tracked cycles' extra contact dissipation per length of path over the slowest run's
-    (loss.extra_loss_points, loss.rate_dashpots: least squares over every loop kept by the rule of
-    energy_prediction), and e of the meso pair with both at every speed; None without two energy runs."""
+def _extra_loss_points(block):
+    """[(label, (v_slow, v_fast, extra loss per metre))] of ``block``'s energy-tracked runs, each faster
+    run's loops against its slowest run's (SI: relative speeds [m/s], loss per metre of path [N])."""
     runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
             for v, (rows, i) in _energy_runs(block).items()}
     if len(runs) < 2:
-        return None
-    slow = min(runs)
-    points, labels = [], []
+        return []
+    slow, out = min(runs), []
     for v in sorted(runs):
         if v == slow:
             continue
         for lp, pt in zip(runs[v][0], loss.extra_loss_points(*runs[slow], *runs[v], 2 * slow, 2 * v)):
-            if pt is not None:  # SI: relative speeds [m/s], extra loss per metre of path [N]
-                points.append((pt[0], pt[1], pt[2] / 1e-3))
-                labels.append(f"{v:g} m/s per cap, loop to {lp['amplitude']:g} d0")
-    g1, g2, resid = loss.rate_dashpots(points)
+            if pt is not None:
+                out.append((f"{os.path.basename(block)}: {v:g} against {slow:g} m/s per cap, loop to "
+                            f"{lp['amplitude']:g} d0", (pt[0], pt[1], pt[2] / 1e-3)))
+    return out
+
+
+def rate_law_prediction(out, params, info, speeds, res):
+    """A third prediction from cycles alone, with the law's rate feature (issue #59, item 4): the
+    linear and the quadratic dashpot, gammaN v + gammaN2 v^2 (MesoMat.gammaN2), fitted together to the
+    energy-tracked cycles' extra contact dissipation per length of path over the slowest run's of the
+    same pair (loss.extra_loss_points, loss.rate_dashpots: least squares over every loop kept by the
+    rule of energy_prediction), every block's loops pooled (each block's own fit reported beside),
+    and e of the meso pair with both at every speed; None without a block with two energy runs."""
+    blocks = sorted(os.path.join(out, b) for b in os.listdir(out)
+                    if b.startswith("block-s") and os.path.isdir(os.path.join(out, b)))
+    per_block = {os.path.basename(b): _extra_loss_points(b) for b in blocks}
+    pooled = [x for pts in per_block.values() for x in pts]
+    if not pooled:
+        return None
+    g1, g2, resid = loss.rate_dashpots([p for _, p in pooled])
+    fits = {}
+    for b, pts in per_block.items():
+        if len(pts) >= 2:
+            fits[b] = dict(zip(("gammaN", "gammaN2"), loss.rate_dashpots([p for _, p in pts])[:2]))
     e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=g1, gammaN2=g2)
-    return {"gammaN": g1, "gammaN2": g2, "slowest_cap_m_s": slow,
+    return {"gammaN": g1, "gammaN2": g2, "per_block": fits,
             "points": [{"loop": lab, "v_slow": p[0], "v_fast": p[1], "extra_loss_per_m": p[2], "residual": r}
-                       for lab, p, r in zip(labels, points, resid)],
+                       for (lab, p), r in zip(pooled, resid)],
             "e_predicted": e, "difference": [None if m is None else x - m for m, x in zip(res["e_mean"], e)],
             "fitted_to": "k1, kp, kc, phiF: the slow cycles' fit; gammaN and gammaN2: least squares to the "
-                         "energy-tracked cycles' contact dissipation per loop (drag left out) over the slowest's, "
-                         "per length of its path in contact; nothing from a collision"}
+                         "energy-tracked cycles' contact dissipation per loop (drag left out) over the slowest's "
+                         "of the same pair, per length of its path in contact, every block pooled; nothing from "
+                         "a collision"}
 
 
 def _rate_law_table(rp, res):
     if rp is None:
         return "(no third prediction: fewer than two energy-tracked cycle runs)"
+    each = "; ".join(f"{b}: {f['gammaN']:.3g} kg/s, {f['gammaN2']:.3g} kg/m" for b, f in rp["per_block"].items())
     lines = [f"The third prediction from cycles alone, with the quadratic dashpot: gammaN = {rp['gammaN']:.3g} kg/s "
              f"and gammaN2 = {rp['gammaN2']:.3g} kg/m, least squares to the energy-tracked cycles' extra loss per "
-             "metre of path over the slowest run's", "", "| loop | relative speed [m/s] | extra loss per metre [N] | "
-             "fit's residual [N] |", "|---|---|---|---|"]
+             f"metre of path over the slowest run's of the same pair, every block pooled (each alone: {each})",
+             "", "| loop | relative speed [m/s] | extra loss per metre [N] | fit's residual [N] |", "|---|---|---|---|"]
     for p in rp["points"]:
         lines.append(f"| {p['loop']} | {p['v_fast']:g} | {p['extra_loss_per_m']:.3g} | {p['residual']:+.3g} |")
     lines += ["", f"| v [m/s] | {res['measure']} mean | predicted | difference |", "|---|---|---|---|"]
