@@ -16,8 +16,9 @@
 // Relations beyond "the value and the ones before it" (kca > 0 when fa > 0; fa needs an adhesion
 // mode) are checked in validate(). The first two lists are apart because MesoMat's text attributes
 // (adhesion, k2Interpolation) lie between them in its saved layout. A new entry goes into the third
-// list, which MesoMat and PairParams save after everything else under a raised class version, so
-// that files of earlier versions still load (MesoContact.hpp).
+// list, which MesoMat and PairParams save after everything else, each entry from the class versions
+// given for it below (raise both classes' versions in MesoContact.hpp to them), so that files of
+// earlier versions still load, with the entry at its default.
 #pragma once
 
 // clang-format off
@@ -46,12 +47,15 @@
 // clang-format on
 
 // clang-format off
-// Added after the first saved layout (saved last; MesoMat and PairParams version 2 and later).
-// gammaN2: a dashpot whose force grows with the square of the normal speed, for a loss per cycle that
-// grows faster than the loading rate (docs/model.md §5).
+// Added after the first saved layout, saved last. Each entry needs MESO_SINCE_MAT_<name> and
+// MESO_SINCE_PAIR_<name>: the MesoMat and PairParams versions that first save it (a missing one does
+// not compile). gammaN2: a dashpot whose force grows with the square of the normal speed, for a loss
+// per cycle that grows faster than the loading rate (docs/model.md §5).
 #define MESO_ADDED_PARAMS(X) \
 	X(gammaN2, 0, "kg/m", v >= 0, "the quadratic viscous damping must be >= 0", harmonic, gammaN2, "Quadratic normal dashpot $\\gamma_2\\geq 0$: the force $\\gamma_2|v_n|v_n$ acts in mechanical contact beside $\\gamma_0 v_n$ (0: off)")
 // clang-format on
+#define MESO_SINCE_MAT_gammaN2 1
+#define MESO_SINCE_PAIR_gammaN2 2
 
 // Every list, in MesoMat's attribute order apart from the text attributes.
 #define MESO_ALL_PARAMS(X) MESO_NORMAL_PARAMS(X) MESO_TANGENTIAL_PARAMS(X) MESO_ADDED_PARAMS(X)

@@ -65,7 +65,7 @@ public:
 		postLoad(*this);
 	}
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$) and linear viscous damping $\\gamma_0$. Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(MesoMat,FrictMat,"Material of the adhesive, visco-elasto-plastic meso-particle contact model [Singh2014]_ after [Luding2008]_: hysteretic normal force with loading stiffness $k_1$, un-/re-loading stiffness $k_2(\\delta_{max})$ interpolated up to the limit stiffness $k_p$, tensile branch $-k_c\\delta$, non-contact adhesion ($f_a$, $k_{ca}$), linear viscous damping $\\gamma_0$ and, optionally, the quadratic dashpot $\\gamma_2$ (saved after the other attributes, although YADE lists it as noSave). Use with :yref:`Ip2_MesoMat_MesoMat_MesoPhys` and :yref:`Law2_ScGeom_MesoPhys_Meso`.\n\nEvery assignment is checked; an invalid value raises ``ValueError`` naming the parameter and is not kept. Parameters that constrain each other ($k_p\\geq k_1$; $k_{ca}>0$ when $f_a>0$) are best given together in the constructor, which checks them after applying all keywords. ``young`` is not used by the law (YADE's :yref:`PWaveTimeStep` reads it, but it sees none of the law's stiffnesses: use ``mesocontact.scene.time_step()``).",
 		MESO_NORMAL_PARAMS(MESO_MAT_ATTR)
 		MESO_ADDED_PARAMS(MESO_MAT_ADDED_ATTR)
 		((std::string,adhesion,"none",Attr::triggerPostLoad,"Non-contact adhesion, one of " MESO_ADHESION_MODES(MESO_ADHESION_DOC) "``adhesionModes()`` lists them."))
@@ -86,14 +86,14 @@ public:
 };
 REGISTER_SERIALIZABLE(MesoMat);
 
-// MesoMat's saved layout: YADE's attributes (the added parameters are noSave there), then, from
-// class version 1 on, the added parameters; a file of version 0 leaves them at their defaults.
+// MesoMat's saved layout: YADE's attributes (the added parameters are noSave there), then the added
+// parameters, each from its MESO_SINCE_MAT version on; an older file leaves it at its default.
 // Found by ADL in place of boost's generic serialize; the material is checked again once they are read.
 template <class Ar> void serialize(Ar& ar, MesoMat& m, const unsigned int version)
 {
 	boost::serialization::access::serialize(ar, m, version);
 #define MESO_SERIALIZE_ADDED(name, ...)                                                                                                                        \
-	if (version >= 1) ar& boost::serialization::make_nvp(#name, m.name);
+	if (version >= MESO_SINCE_MAT_##name) ar& boost::serialization::make_nvp(#name, m.name);
 	MESO_ADDED_PARAMS(MESO_SERIALIZE_ADDED)
 #undef MESO_SERIALIZE_ADDED
 	if (Ar::is_loading::value) m.postLoad(m);
@@ -275,7 +275,7 @@ public:
 		((Real,stableDt,std::numeric_limits<Real>::infinity(),(Attr::readonly|Attr::noSave),"Smallest stable time step of the contacts this functor has made [s]: per contact the leapfrog bound $(2/\\omega)(\\sqrt{1+\\zeta^2}-\\zeta)$ of its stiffest element (normal $k_p$ with $\\gamma_0$ on the reduced mass; sliding, rolling and torsion with the spins' inertia). When O.dt exceeds it at a new contact, a warning names the contact, once per functor.")),
 		/*ctor*/,
 		.def("stableStep",&Ip2_MesoMat_MesoMat_MesoPhys::stableStepFor,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("radius1"),boost::python::arg("radius2")=0,boost::python::arg("rotations")=true),"The stable time step [s] of a contact between a free sphere of ``material1`` and radius ``radius1`` and a free sphere of ``material2`` and ``radius2`` (0: a fixed wall, box or facet), masses and inertia from the materials' densities: the bound :yref:`stableDt<Ip2_MesoMat_MesoMat_MesoPhys.stableDt>` applies to each contact, from the same code, before any contact exists. ``mesocontact.scene.time_step`` takes its minimum over a scene.")
-		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'torsion' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
+		.def("mixedParameters",&Ip2_MesoMat_MesoMat_MesoPhys::mixedParameters,(boost::python::arg("material1"),boost::python::arg("material2"),boost::python::arg("rotations")=true),"The parameters the contacts between two :yref:`MesoMat` get (the mixing rules above, ``dominant`` included; ``rotations``: whether the geometry is :yref:`ScGeom6D`), as a dict: 'k1', 'kp', 'kc', 'phiF', 'fa', 'kca', 'gammaN', 'gammaN2', 'phiD', 'deltaA' (range $-f_a/k_{ca}$ of the non-contact force, $\\leq 0$), 'adhesion', 'k2Interpolation', 'leverFactor', and 'sliding', 'rolling', 'torsion' (dicts of 'k', 'gamma', 'muS', 'muD', 'acts'). The same code as the contacts use: scripts need not repeat the rules.")
 		.def("adoptMaterials",&Ip2_MesoMat_MesoMat_MesoPhys::adoptMaterials,(boost::python::arg("interaction")),"Gives a live contact (a real interaction with :yref:`MesoPhys`) the parameters of its bodies' present materials while keeping its history ($\\delta_{max}$, $\\delta_0$, springs): for a material changed during a run, e.g. loading walls made adhesive for a test after the sample was prepared against smooth walls (a contact remade by setting ``phys = None`` would start afresh). The hysteretic normal law ($k_1$, $k_p$, $\\phi_f$, $k_2$ interpolation) and the tangential mechanisms must stay as they are, so that the force stays continuous; otherwise ``ValueError`` names what differs.");
 		pychecks::checked(_classObj, "leverArm", &Ip2_MesoMat_MesoMat_MesoPhys::leverArm);
 		pychecks::guard(_classObj)
@@ -313,7 +313,7 @@ public:
 	bool                          go(shared_ptr<IGeom>& ig, shared_ptr<IPhys>& ip, Interaction* I) override;
 	void                          pyHandleCustomCtorArgs(boost::python::tuple&, boost::python::dict& kw) override { pychecks::ctorKeywords(*this, kw); }
 	// clang-format off
-	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $\\gamma_0 v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
+	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(Law2_ScGeom_MesoPhys_Meso,LawFunctor,"The normal force of the meso-particle contact model [Singh2014]_: hysteretic contact force (plastic loading $k_1\\delta$, un-/re-loading $k_2(\\delta-\\delta_0)$, limit branch $k_p(\\delta-\\phi_f a_{12})$, tensile limit $-k_c\\delta$ with the exact history update), plus the non-contact adhesion of :yref:`MesoMat.adhesion` and the viscous force $(\\gamma_0+\\gamma_2|v_n|)v_n$ in contact. The interaction is kept while the non-contact force can act ($\\delta>-f_a/k_{ca}$) and erased beyond; the collider and :yref:`Ig2_Sphere_Sphere_ScGeom.interactionDetectionFactor` must detect pairs at that gap (``mesocontact.pair`` sets them).\n\nWith :yref:`O.trackEnergy<Omega.trackEnergy>`, ``O.energy`` holds 'mesoElastic' (stored elastic energy, consistent with the leapfrog kinetic energy), 'mesoPlastic' (hysteretic dissipation), 'mesoAdhesive' (work absorbed by the adhesive force; negative while it binds) and 'mesoViscous' (viscous dissipation); with tangential mechanisms also 'mesoSprings' (energy stored in the sliding, rolling and torsion springs) and 'mesoSliding', 'mesoRolling', 'mesoTorsion' (their dissipation, slip and dashpot, including what a spring holds when the contact opens) [J].\n\nSliding, rolling and torsion follow [Luding2008]_: one spring-dashpot-Coulomb element each, the spring advanced by the relative velocity first, trial force $-k\\xi-\\gamma v$, static limit $\\mu_s(f_n+k_c\\delta)$ to start sliding and dynamic limit $\\mu_d(f_n+k_c\\delta)$ for the force while sliding and to go on sliding with $f_n$ the contact part of the normal force (hysteretic plus viscous, without the non-contact $f_a$ term) measured from the adhesive branch, spring reset to $-(f+\\gamma v)/k$ on slip, springs rotated with the contact. Sliding acts at the contact point (force and torques); rolling and torsion only as torques.",
 		((int,elasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoElastic' in O.energy"))
 		((int,plasticIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoPlastic' in O.energy"))
 		((int,adhesiveIx,-1,(Attr::hidden|Attr::noSave),"Index of 'mesoAdhesive' in O.energy"))
@@ -336,7 +336,8 @@ REGISTER_SERIALIZABLE(Law2_ScGeom_MesoPhys_Meso);
 namespace boost {
 namespace serialization {
 	// Version 1 added phiD (version 0 files: recovered from the elements, which hold it as muD/muS);
-	// version 2 the added parameters (older files: their defaults, which leave the law as it was).
+	// the added parameters from their MESO_SINCE_PAIR versions (older files: their defaults, which
+	// leave the law as it was).
 	// The tags of the flags and of the torsion element are those of the first files.
 	template <class Ar> void serialize(Ar& ar, meso::PairParams& p, const unsigned int version)
 	{
@@ -359,7 +360,7 @@ namespace serialization {
 				}
 		}
 #define MESO_SERIALIZE(name, def, unit, ok, rule, mix, dest, doc)                                                                                              \
-	if (version >= 2) ar& make_nvp(#name, p.dest);                                                                                                         \
+	if (version >= MESO_SINCE_PAIR_##name) ar& make_nvp(#name, p.dest);                                                                                    \
 	else                                                                                                                                                   \
 		p.dest = def;
 		MESO_ADDED_PARAMS(MESO_SERIALIZE)

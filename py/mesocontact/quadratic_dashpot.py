@@ -109,7 +109,10 @@ def restitution(v_i, k1, kp, phiF, a12, m_r, gammaN2, interpolation="linear"):
         raise ValueError(f"interpolation = {interpolation!r} is invalid: must be one of {K2_INTERPOLATIONS}")
     a = 2.0 * gammaN2 / m_r
     dmp = delta_max_p(k1, kp, phiF, a12)
-    c1 = k1 * m_r / (2.0 * gammaN2 ** 2)
+    c1 = k1 * m_r / (2.0 * gammaN2 ** 2) if gammaN2 > 1e-150 else math.inf
+    if not math.isfinite(c1 * kp / k1):
+        raise ValueError(f"gammaN2 = {gammaN2!r} is too small for this closed form (its scale k m_r/(2 gammaN2^2) "
+                         "leaves floating point): use theory.pair_collision, the limit gammaN2 -> 0")
     x_max = _turn(v_i * v_i / c1, 0.0) / a
     limit = x_max > dmp
     if limit:  # on to the limit branch kp (x - phiF a12) from dmp, where u is the k1 branch's

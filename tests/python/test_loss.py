@@ -113,8 +113,10 @@ class Loops(unittest.TestCase):
         g1, g2, _ = loss.rate_dashpots(pts)
         self.assertEqual(g1, 0.0)
         self.assertAlmostEqual(g2, (3 * 2.5 + 8 * 7 + 24 * 21) / (9 + 64 + 576), places=12)
-        with self.assertRaisesRegex(ValueError, "two are needed"):
-            loss.rate_dashpots([(1.0, 2.0, 3.5), None])
+        # One pair of speeds, however many points, fixes only gammaN dv + gammaN2 d(v^2): refused
+        for pts in ([(1.0, 2.0, 3.5), None], [(1.25, 80.0, 0.25), (1.25, 80.0, 0.43)]):
+            with self.assertRaisesRegex(ValueError, "two pairs"):
+                loss.rate_dashpots(pts)
 
     def test_caps_work(self):
         # A constant F = 2 over a loading of 10 steps and an unloading of 10 steps, caps at speed 0.5

@@ -10,7 +10,7 @@ from mesocontact import quadratic_dashpot as qd, theory
 K1, KP, PHIF, A12, M = 1e5, 5e5, 0.1, 1e-3, 1e-3  # v_p = 1.25 m/s
 
 
-def integrate(v, c, n, kp=KP):
+def integrate(v, c, n, kp=KP, sqrt=False):
     """e of the pair by classical Runge-Kutta in time, n steps per pi sqrt(m/k1), phase by phase so
     that every phase is smooth (loading on k1, on the limit branch, unloading on the k2 line to its
     force-free overlap, the dashpot alone to x = 0); each phase ends where its step is cut, by
@@ -40,7 +40,8 @@ def integrate(v, c, n, kp=KP):
     x, u = phase(0.0, v, lambda x, u: -(K1 * x + c * u * u) / M, lambda x, u: u <= 0 or x >= dmp)
     if u > 0:  # on along the limit branch kp (x - phiF a12)
         x, u = phase(x, u, lambda x, u: -(kp * (x - PHIF * A12) + c * u * u) / M, lambda x, u: u <= 0)
-    k2, d0 = (kp, PHIF * A12) if x >= dmp else (K1 + (kp - K1) * x / dmp, (1 - K1 / (K1 + (kp - K1) * x / dmp)) * x)
+    k2 = kp if x >= dmp else K1 + (kp - K1) * (math.sqrt(x / dmp) if sqrt else x / dmp)
+    d0 = PHIF * A12 if x >= dmp else (1 - K1 / k2) * x
     x, u = phase(x, 0.0, lambda x, u: -(k2 * (x - d0) - c * u * u) / M, lambda x, u: x <= d0)
     x, u = phase(x, u, lambda x, u: c * u * u / M, lambda x, u: x <= 0)
     return -u / v
@@ -108,8 +109,17 @@ class Restitution(unittest.TestCase):
         for v, e in zip(speeds, es):
             self.assertAlmostEqual(e, integrate(v, 1.0, 2000, kp=K1), delta=2e-11, msg=v)
 
+    def test_sqrt_interpolation(self):
+        # k2(deltaMax) by Eq. D.1: the closed form reads it at deltaMax; the reference with the same rule
+        v_p = theory.plastic_limit_velocity(K1, KP, PHIF, A12, M)
+        for chi in (0.3, 0.9):
+            r = qd.restitution(chi * v_p, K1, KP, PHIF, A12, M, 1.0, interpolation="sqrt")
+            self.assertAlmostEqual(r.e, integrate(chi * v_p, 1.0, 2000, sqrt=True), delta=2e-11, msg=chi)
+            self.assertNotAlmostEqual(r.e, qd.restitution(chi * v_p, K1, KP, PHIF, A12, M, 1.0).e, delta=1e-3)
+
     def test_refuses(self):
-        for kw, name in ((dict(gammaN2=0.0), "gammaN2"), (dict(gammaN2=-1.0), "gammaN2"), (dict(v_i=0.0), "v_i"),
+        for kw, name in ((dict(gammaN2=0.0), "gammaN2"), (dict(gammaN2=-1.0), "gammaN2"),
+                         (dict(gammaN2=1e-160), "gammaN2"), (dict(gammaN2=1e-300), "gammaN2"), (dict(v_i=0.0), "v_i"),
                          (dict(m_r=0.0), "m_r"), (dict(interpolation="cubic"), "interpolation")):
             args = dict(v_i=1.0, k1=K1, kp=KP, phiF=PHIF, a12=A12, m_r=M, gammaN2=1.0)
             args.update(kw)

@@ -73,12 +73,13 @@ class ScaleMaterial(unittest.TestCase):
                         self.assertAlmostEqual(step / s, 1.0, places=12)  # the stable step x s
 
     def test_what_it_does_to_each_attribute(self):
-        mat = dict(MATERIALS["jumpIn"], gammaN=1e-6, kt=10.0, gammaT=1e-7, kr=5.0, gammaR=1e-8, ko=5.0, gammaO=1e-8,
+        mat = dict(MATERIALS["jumpIn"], gammaN=1e-6, gammaN2=3e-5,
+                   kt=10.0, gammaT=1e-7, kr=5.0, gammaR=1e-8, ko=5.0, gammaO=1e-8,
                    muR=0.1, muO=0.1, phiD=0.8, frictionAngle=0.5, young=1e9, poisson=0.3, dominant=False, label="a")
         big = params.scale_material(mat, 10.0, 2.0)
         for k in ("k1", "kp", "kc", "kca", "kt", "kr", "ko"):
             self.assertAlmostEqual(big[k] / mat[k], 20.0, places=12, msg=k)
-        for k in ("fa", "gammaN", "gammaT", "gammaR", "gammaO"):
+        for k in ("fa", "gammaN", "gammaN2", "gammaT", "gammaR", "gammaO"):
             self.assertAlmostEqual(big[k] / mat[k], 200.0, places=12, msg=k)
         for k in ("density", "young"):
             self.assertAlmostEqual(big[k] / mat[k], 2.0, places=12, msg=k)

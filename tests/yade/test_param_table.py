@@ -3,7 +3,8 @@
 # reaches its contacts by the rule the docs state, written out here independently (harmonic,
 # arithmetic or smaller mean), `muD = phiD muS`, is refused by name when invalid, kept by
 # `O.save`/`O.load` in both formats, and a file of the first `PairParams` layout
-# (`tests/yade/golden/pairparams_v0.*`, written by 20d0512) loads with `phiD` recovered and `gammaN2` 0.
+# (`tests/yade/golden/pairparams_v0.*`, written by 20d0512) loads with `phiD` recovered and `gammaN2` 0;
+# one of the layout just before `gammaN2` (`pairparams_v1.*`, add2ac8) loads as saved, `gammaN2` 0.
 import json
 import math
 import os
@@ -81,4 +82,18 @@ check(q.gammaN2 == 0.0 and all(m.gammaN2 == 0.0 for m in O.materials), "a versio
       "and every material", f"{q.gammaN2!r}, {[m.gammaN2 for m in O.materials]}")
 O.run(10, True)
 check(O.interactions[0, 1].isReal, "a version-0 file runs on")
+
+# The layout just before gammaN2 (PairParams version 1, MesoMat version 0): everything as saved, gammaN2 = 0
+with open(os.path.join(HERE, "golden", "pairparams_v1.json")) as f:
+    ref = json.load(f)
+O.load(os.path.join(HERE, "golden", "pairparams_v1.yade.gz"))
+q = O.interactions[0, 1].phys
+diff = [k for k, v in ref["contact"].items() if (list(getattr(q, k)) if isinstance(v, list) else getattr(q, k)) != v]
+diff += [f"material {i}: {k}" for i, m in enumerate(ref["materials"]) for k, v in m.items()
+         if getattr(O.materials[i], k) != v]
+check(not diff, f"a version-1 file (written by {ref['written_by']}) loads with its contact and materials as saved",
+      f"differ: {diff}")
+check(q.gammaN2 == 0.0 and all(m.gammaN2 == 0.0 for m in O.materials), "a version-1 file: gammaN2 = 0")
+O.run(10, True)
+check(O.interactions[0, 1].isReal, "a version-1 file runs on")
 finish()

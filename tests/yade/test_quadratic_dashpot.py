@@ -3,7 +3,8 @@
 # forms, below and beyond the plastic limit, equal and unlike materials (gammaN2 mixes harmonically);
 # the energy: the impact's kinetic energy lost = mesoPlastic + mesoViscous, to 1e-3 of it; gammaN2
 # survives O.save / O.load in the material and in a contact, and a collision saved halfway goes on
-# bit for bit; a negative value is refused naming it; gammaN2 = 0 and gammaN2 absent run the same bits.
+# bit for bit; a negative value is refused naming it. (That gammaN2 = 0 leaves the force gammaN vn to
+# the last bit is the core test's, Viscous.WithoutTheQuadraticDashpot...)
 import math
 import os
 import tempfile
@@ -88,10 +89,4 @@ try:
 except ValueError as e:
     check("gammaN2" in str(e), "gammaN2 = -1 refused, naming it", str(e))
 
-# the default: gammaN2 = 0 given and not given run the same bits (with the linear dashpot on)
-runs = []
-for extra in ({}, {"gammaN2": 0.0}):
-    s, res = collide(2.0 * v_p, dict(LAW, gammaN=0.1 * c_crit, **extra))
-    runs.append((res.e, [(tuple(b.state.pos), tuple(b.state.vel)) for b in O.bodies]))
-check(runs[0] == runs[1], "gammaN2 = 0 and absent: the same bits", f"e = {runs[0][0]!r}, {runs[1][0]!r}")
 finish()

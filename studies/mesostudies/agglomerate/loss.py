@@ -113,10 +113,13 @@ def rate_dashpots(points):
     """(gammaN, gammaN2, residuals): the linear and the quadratic dashpot, each >= 0, whose loss along
     a path run at constant speed, gammaN v + gammaN2 v^2 per length, meets the points' extra loss
     y = gammaN (v_fast - v_slow) + gammaN2 (v_fast^2 - v_slow^2) in least squares (points from
-    extra_loss_points; None skipped). Residuals y - fit, per point given."""
+    extra_loss_points; None skipped), unweighted: the largest losses (the fastest loops) weigh most.
+    Residuals y - fit, per point given. ValueError with fewer than two distinct speed pairs."""
     pts = [p for p in points if p is not None]
-    if len(pts) < 2:
-        raise ValueError(f"rate_dashpots: {len(pts)} usable point(s); two are needed for two dashpots")
+    pairs = {(vs, vf) for vs, vf, _ in pts}
+    if len(pairs) < 2:
+        raise ValueError(f"rate_dashpots: {len(pts)} usable point(s) from {len(pairs)} pair(s) of speeds; two pairs "
+                         "are needed for two dashpots (one pair fixes only their sum there)")
     cols = [(vf - vs, vf * vf - vs * vs, y) for vs, vf, y in pts]
 
     def one(k):  # the best with the other dashpot at 0

@@ -190,18 +190,20 @@ def rate_law_prediction(out, params, info, speeds, res):
     energy-tracked cycles' extra contact dissipation per length of path over the slowest run's of the
     same pair (loss.extra_loss_points, loss.rate_dashpots: least squares over every loop kept by the
     rule of energy_prediction), every block's loops pooled (each block's own fit reported beside),
-    and e of the meso pair with both at every speed; None without a block with two energy runs."""
+    and e of the meso pair with both at every speed; None with fewer than two pairs of speeds."""
     blocks = sorted(os.path.join(out, b) for b in os.listdir(out)
                     if b.startswith("block-s") and os.path.isdir(os.path.join(out, b)))
     per_block = {os.path.basename(b): _extra_loss_points(b) for b in blocks}
     pooled = [x for pts in per_block.values() for x in pts]
-    if not pooled:
+
+    def pairs(pts):
+        return len({p[:2] for _, p in pts})
+
+    if pairs(pooled) < 2:  # two dashpots need two pairs of speeds (loss.rate_dashpots)
         return None
     g1, g2, resid = loss.rate_dashpots([p for _, p in pooled])
-    fits = {}
-    for b, pts in per_block.items():
-        if len(pts) >= 2:
-            fits[b] = dict(zip(("gammaN", "gammaN2"), loss.rate_dashpots([p for _, p in pts])[:2]))
+    fits = {b: dict(zip(("gammaN", "gammaN2"), loss.rate_dashpots([p for _, p in pts])[:2]))
+            for b, pts in per_block.items() if pairs(pts) >= 2}
     e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=g1, gammaN2=g2)
     return {"gammaN": g1, "gammaN2": g2, "per_block": fits,
             "points": [{"loop": lab, "v_slow": p[0], "v_fast": p[1], "extra_loss_per_m": p[2], "residual": r}
@@ -215,7 +217,7 @@ def rate_law_prediction(out, params, info, speeds, res):
 
 def _rate_law_table(rp, res):
     if rp is None:
-        return "(no third prediction: fewer than two energy-tracked cycle runs)"
+        return "(no third prediction: the energy-tracked cycles give fewer than two pairs of speeds)"
     each = "; ".join(f"{b}: {f['gammaN']:.3g} kg/s, {f['gammaN2']:.3g} kg/m" for b, f in rp["per_block"].items())
     lines = [f"The third prediction from cycles alone, with the quadratic dashpot: gammaN = {rp['gammaN']:.3g} kg/s "
              f"and gammaN2 = {rp['gammaN2']:.3g} kg/m, least squares to the energy-tracked cycles' extra loss per "
