@@ -251,50 +251,41 @@ TEST(Viscous, NotInTheNonContactRange)
 	}
 }
 
-TEST(Energy, ViscousDissipationOfAHarmonicPathIsItsIntegral)
+// delta = D + A sin(w t), vn = A w cos(w t) over a quarter period, in n steps: what energyStep books as viscous.
+constexpr double kD = 2e-5, kA = 1e-5, kW = 1e3;
+double           viscousAlongQuarterPeriod(const MaterialParams& m, int n = 1000)
 {
-	// delta = D + A sin(w t), vn = A w cos(w t) over a quarter period: the dashpot dissipates
-	// int gammaN vn d(delta) = gammaN A^2 w pi/4. The trapezoid of energyStep is exact to O(h^2)
-	// (4.1e-7 here, n = 1000); a rectangle rule is off by O(h), 5.0e-4.
-	MaterialParams m;
-	m.gammaN                           = 2e-3;
 	[[maybe_unused]] const auto [p, g] = pairOf(m);
-	const double  D = 2e-5, A = 1e-5, w = 1e3, T = M_PI / (2 * w);
-	const int     n = 1000;
+	const double  T                    = M_PI / (2 * kW);
 	NormalHistory h;
-	NormalForce   prev    = normalForce(p, g, h, D, A * w);
-	double        viscous = 0, prevDelta = D, prevElastic = storedElastic(p, g, h, prev.hysteretic);
+	NormalForce   prev    = normalForce(p, g, h, kD, kA * kW);
+	double        viscous = 0, prevDelta = kD, prevElastic = storedElastic(p, g, h, prev.hysteretic);
 	for (int i = 1; i <= n; ++i) {
-		const double      t = T * i / n, d = D + A * std::sin(w * t);
-		const NormalForce f = normalForce(p, g, h, d, A * w * std::cos(w * t));
+		const double      t = T * i / n, d = kD + kA * std::sin(kW * t);
+		const NormalForce f = normalForce(p, g, h, d, kA * kW * std::cos(kW * t));
 		viscous += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).viscous;
 		prev        = f;
 		prevDelta   = d;
 		prevElastic = storedElastic(p, g, h, f.hysteretic);
 	}
-	EXPECT_LT(rel(viscous, 2e-3 * A * A * w * M_PI / 4), 1e-5);
+	return viscous;
+}
+
+TEST(Energy, ViscousDissipationOfAHarmonicPathIsItsIntegral)
+{
+	// The dashpot dissipates int gammaN vn d(delta) = gammaN A^2 w pi/4. The trapezoid of energyStep is
+	// exact to O(h^2) (4.1e-7 here, n = 1000); a rectangle rule is off by O(h), 5.0e-4.
+	MaterialParams m;
+	m.gammaN = 2e-3;
+	EXPECT_LT(rel(viscousAlongQuarterPeriod(m), 2e-3 * kA * kA * kW * M_PI / 4), 1e-5);
 }
 
 TEST(Energy, QuadraticDashpotDissipationOfAHarmonicPathIsItsIntegral)
 {
 	// The same path with gammaN2 alone: int gammaN2 vn^3 dt over the quarter period = gammaN2 A^3 w^2 (2/3).
 	MaterialParams m;
-	m.gammaN2                          = 5e-2;
-	[[maybe_unused]] const auto [p, g] = pairOf(m);
-	const double  D = 2e-5, A = 1e-5, w = 1e3, T = M_PI / (2 * w);
-	const int     n = 1000;
-	NormalHistory h;
-	NormalForce   prev    = normalForce(p, g, h, D, A * w);
-	double        viscous = 0, prevDelta = D, prevElastic = storedElastic(p, g, h, prev.hysteretic);
-	for (int i = 1; i <= n; ++i) {
-		const double      t = T * i / n, d = D + A * std::sin(w * t);
-		const NormalForce f = normalForce(p, g, h, d, A * w * std::cos(w * t));
-		viscous += energyStep(p, g, prevDelta, prevElastic, h, prev, f, d).viscous;
-		prev        = f;
-		prevDelta   = d;
-		prevElastic = storedElastic(p, g, h, f.hysteretic);
-	}
-	EXPECT_LT(rel(viscous, 5e-2 * A * A * A * w * w * 2 / 3), 1e-5);
+	m.gammaN2 = 5e-2;
+	EXPECT_LT(rel(viscousAlongQuarterPeriod(m), 5e-2 * kA * kA * kA * kW * kW * 2 / 3), 1e-5);
 }
 
 TEST(Energy, LoopDissipationEqualsEnclosedArea)
