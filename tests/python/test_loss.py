@@ -93,11 +93,11 @@ class Loops(unittest.TestCase):
         self.assertEqual(loss.viscous_gamma_dissipated(slow_l[:1], slow_d[:1], other, fast_d[:1], 1.0, 3.0), [])
 
     def test_extra_loss_points(self):
-        # The same loops: (v_slow, v_fast, extra loss over the slow path), None where loading took no work.
+        # The same loops: (v_slow, v_fast, extra loss over the slow path, amplitude), None where loading took no work.
         slow_l = [{"amplitude": 0.1, "path": 0.5, "w_in": 1.0}, {"amplitude": 0.2, "path": 2.0, "w_in": 1.0}]
         fast_l = [{"amplitude": 0.1, "path": 9.0, "w_in": -1.0}, {"amplitude": 0.2, "path": 9.0, "w_in": 1.0}]
         slow_d, fast_d = [{"total": 1.0}, {"total": 3.0}], [{"total": 5.0}, {"total": 7.0}]
-        self.assertEqual(loss.extra_loss_points(slow_l, slow_d, fast_l, fast_d, 1.0, 3.0), [None, (1.0, 3.0, 2.0)])
+        self.assertEqual(loss.extra_loss_points(slow_l, slow_d, fast_l, fast_d, 1.0, 3.0), [None, (1.0, 3.0, 2.0, 0.2)])
 
     def test_rate_dashpots(self):
         # Points made from gammaN = 2, gammaN2 = 0.5 exactly: y = 2 (v - 1) + 0.5 (v^2 - 1) at v = 2, 3, 5

@@ -102,25 +102,27 @@ def viscous_gamma_dissipated(slow_loops, slow_dissipated, fast_loops, fast_dissi
 
 def extra_loss_points(slow_loops, slow_dissipated, fast_loops, fast_dissipated, v_slow, v_fast):
     """Per loop as viscous_gamma_dissipated: (v_slow, v_fast, the contacts' extra dissipation over the
-    slow run's per length of the slow run's path in contact [force]); None for a fast loop whose
-    loading takes no work. What a rate law of the contact must lose on that path at v_fast."""
-    return [(v_slow, v_fast, (fd["total"] - sd["total"]) / sl["path"]) if fl["w_in"] > 0 else None
+    slow run's per length of the slow run's path in contact [force], the loop's amplitude); None for a
+    fast loop whose loading takes no work. What a rate law of the contact must lose on that path at v_fast."""
+    return [(v_slow, v_fast, (fd["total"] - sd["total"]) / sl["path"], sl["amplitude"]) if fl["w_in"] > 0 else None
             for sl, sd, fl, fd in zip(slow_loops, slow_dissipated, fast_loops, fast_dissipated)
             if sl["amplitude"] == fl["amplitude"] and sl["path"] > 0]
 
 
-def rate_dashpots(points):
+def rate_dashpots(points, relative=False):
     """(gammaN, gammaN2, residuals): the linear and the quadratic dashpot, each >= 0, whose loss along
     a path run at constant speed, gammaN v + gammaN2 v^2 per length, meets the points' extra loss
     y = gammaN (v_fast - v_slow) + gammaN2 (v_fast^2 - v_slow^2) in least squares (points from
     extra_loss_points; None skipped), unweighted: the largest losses (the fastest loops) weigh most.
-    Residuals y - fit, per point given. ValueError with fewer than two distinct speed pairs."""
+    Residuals y - fit, per point given. ValueError with fewer than two distinct speed pairs.
+    relative: each point weighted by 1/|y| instead (its relative miss counts), a diagnostic."""
     pts = [p for p in points if p is not None]
-    pairs = {(vs, vf) for vs, vf, _ in pts}
+    pairs = {p[:2] for p in pts}
     if len(pairs) < 2:
         raise ValueError(f"rate_dashpots: {len(pts)} usable point(s) from {len(pairs)} pair(s) of speeds; two pairs "
                          "are needed for two dashpots (one pair fixes only their sum there)")
-    cols = [(vf - vs, vf * vf - vs * vs, y) for vs, vf, y in pts]
+    raw = [(vf - vs, vf * vf - vs * vs, y) for vs, vf, y, *_ in pts]
+    cols = [(a / abs(y), b / abs(y), y / abs(y)) for a, b, y in raw] if relative else raw
 
     def one(k):  # the best with the other dashpot at 0
         return max(sum(c[k] * c[2] for c in cols) / sum(c[k] * c[k] for c in cols), 0.0)
@@ -132,7 +134,7 @@ def rate_dashpots(points):
     if g1 < 0 or g2 < 0:  # the least squares lie on a bound: the better of the two one-dashpot fits
         cands = [(one(0), 0.0), (0.0, one(1))]
         g1, g2 = min(cands, key=lambda g: sum((c[2] - g[0] * c[0] - g[1] * c[1]) ** 2 for c in cols))
-    return g1, g2, [c[2] - g1 * c[0] - g2 * c[1] for c in cols]
+    return g1, g2, [c[2] - g1 * c[0] - g2 * c[1] for c in raw]
 
 
 def caps_work(rows, events, cap_speed, dt):

@@ -166,21 +166,23 @@ def energy_prediction(block, params, info, speeds, res):
                          "dissipation per loop (drag left out) over the slowest's; nothing from a collision"}
 
 
-def _extra_loss_points(block):
+def _extra_loss_points(block, reference=None):
     """[(label, (v_slow, v_fast, extra loss per metre))] of ``block``'s energy-tracked runs, each faster
-    run's loops against its slowest run's (SI: relative speeds [m/s], loss per metre of path [N])."""
+    run's loops against its slowest run's, or against the run at ``reference`` m/s per cap (SI:
+    relative speeds [m/s], loss per metre of path [N])."""
     runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
             for v, (rows, i) in _energy_runs(block).items()}
-    if len(runs) < 2:
+    slow = min(runs) if reference is None and runs else reference
+    if slow not in runs or len(runs) < 2:
         return []
-    slow, out = min(runs), []
+    out = []
     for v in sorted(runs):
-        if v == slow:
+        if v <= slow:
             continue
-        for lp, pt in zip(runs[v][0], loss.extra_loss_points(*runs[slow], *runs[v], 2 * slow, 2 * v)):
+        for pt in loss.extra_loss_points(*runs[slow], *runs[v], 2 * slow, 2 * v):
             if pt is not None:
                 out.append((f"{os.path.basename(block)}: {v:g} against {slow:g} m/s per cap, loop to "
-                            f"{lp['amplitude']:g} d0", (pt[0], pt[1], pt[2] / 1e-3)))
+                            f"{pt[3]:g} d0", (pt[0], pt[1], pt[2] / 1e-3)))
     return out
 
 
@@ -205,7 +207,10 @@ def rate_law_prediction(out, params, info, speeds, res):
     fits = {b: dict(zip(("gammaN", "gammaN2"), loss.rate_dashpots([p for _, p in pts])[:2]))
             for b, pts in per_block.items() if pairs(pts) >= 2}
     e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=g1, gammaN2=g2)
-    return {"gammaN": g1, "gammaN2": g2, "per_block": fits,
+    by_measure = {m: [None if x is None else y - x for x, y in zip(res["by_measure"][m]["e_mean"], e)]
+                  for m in res["by_measure"]}
+    return {"gammaN": g1, "gammaN2": g2, "per_block": fits, "difference_by_measure": by_measure,
+            "sensitivity": _rate_law_sensitivity(blocks, per_block, params, info, speeds, res),
             "points": [{"loop": lab, "v_slow": p[0], "v_fast": p[1], "extra_loss_per_m": p[2], "residual": r}
                        for (lab, p), r in zip(pooled, resid)],
             "e_predicted": e, "difference": [None if m is None else x - m for m, x in zip(res["e_mean"], e)],
@@ -213,6 +218,24 @@ def rate_law_prediction(out, params, info, speeds, res):
                          "energy-tracked cycles' contact dissipation per loop (drag left out) over the slowest's "
                          "of the same pair, per length of its path in contact, every block pooled; nothing from "
                          "a collision"}
+
+
+def _rate_law_sensitivity(blocks, per_block, params, info, speeds, res):
+    """The third prediction's choices varied (diagnostics, not the rule): each block alone, every block
+    against its 2.5 m/s run, and the least squares weighted by 1/|extra loss|: gammaN, gammaN2 and
+    e_predicted - e_mean per speed for each."""
+    variants = {f"{os.path.basename(b)} alone": (per_block[os.path.basename(b)], False) for b in blocks}
+    variants["every block against its 2.5 m/s run"] = ([x for b in blocks for x in _extra_loss_points(b, 2.5)], False)
+    variants["weighted by 1/|extra loss|"] = ([x for pts in per_block.values() for x in pts], True)
+    out = {}
+    for name, (pts, relative) in variants.items():
+        if len({p[:2] for _, p in pts}) < 2:
+            continue
+        g1, g2, _ = loss.rate_dashpots([p for _, p in pts], relative=relative)
+        e = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=False, gammaN=g1, gammaN2=g2)
+        out[name] = {"gammaN": g1, "gammaN2": g2,
+                     "difference": [None if m is None else x - m for m, x in zip(res["e_mean"], e)]}
+    return out
 
 
 def _rate_law_table(rp, res):
@@ -225,9 +248,19 @@ def _rate_law_table(rp, res):
              "", "| loop | relative speed [m/s] | extra loss per metre [N] | fit's residual [N] |", "|---|---|---|---|"]
     for p in rp["points"]:
         lines.append(f"| {p['loop']} | {p['v_fast']:g} | {p['extra_loss_per_m']:.3g} | {p['residual']:+.3g} |")
-    lines += ["", f"| v [m/s] | {res['measure']} mean | predicted | difference |", "|---|---|---|---|"]
-    for v, m, x, d in zip(res["speeds"], res["e_mean"], rp["e_predicted"], rp["difference"]):
-        lines.append(f"| {v:g} | {m:.3f} | {x:.3f} | {d:+.3f} |" if m is not None else f"| {v:g} | – | {x:.3f} | – |")
+    by = rp["difference_by_measure"]
+    lines += ["", f"| v [m/s] | {res['measure']} mean | predicted | difference | "
+              + " | ".join(f"difference, {m}" for m in by) + " |", "|---|---|---|---|" + "---|" * len(by)]
+    for k, (v, m, x, d) in enumerate(zip(res["speeds"], res["e_mean"], rp["e_predicted"], rp["difference"])):
+        others = " | ".join("–" if by[q][k] is None else f"{by[q][k]:+.3f}" for q in by)
+        first = f"| {v:g} | {m:.3f} | {x:.3f} | {d:+.3f} | " if m is not None else f"| {v:g} | – | {x:.3f} | – | "
+        lines.append(first + others + " |")
+    lines += ["", "The choices varied (diagnostics, not the rule): predicted - e_mean per speed", "",
+              "| variant | gammaN [kg/s] | gammaN2 [kg/m] | " + " | ".join(f"{v:g} m/s" for v in res["speeds"]) + " |",
+              "|---|---|---|" + "---|" * len(res["speeds"])]
+    for name, r in rp["sensitivity"].items():
+        lines.append(f"| {name} | {r['gammaN']:.3g} | {r['gammaN2']:.3g} | "
+                     + " | ".join("–" if d is None else f"{d:+.3f}" for d in r["difference"]) + " |")
     return "\n".join(lines)
 
 
