@@ -124,6 +124,12 @@ def _energy_runs(block):
     return runs
 
 
+def _energy_loops(block):
+    """{cap speed: (loss.loops, loss.dissipated)} of the energy-tracked runs in ``block``."""
+    return {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
+            for v, (rows, i) in _energy_runs(block).items()}
+
+
 def rate_energy(block):
     """The energy-cycles runs in ``block`` (measure.rate_energy), slowest first: per loop the law's
     dissipation by term (loss.dissipated), its sum over the contacts' terms, the background drag's
@@ -149,8 +155,7 @@ def energy_prediction(block, params, info, speeds, res):
     """A second prediction from cycles alone: gammaN from the energy-tracked cycles
     (loss.viscous_gamma_dissipated, each faster run against the slowest; the median), and e of the
     meso pair with it at every speed; None without two energy runs."""
-    runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
-            for v, (rows, i) in _energy_runs(block).items()}
+    runs = _energy_loops(block)
     if len(runs) < 2:
         return None
     slow = min(runs)
@@ -170,8 +175,7 @@ def _extra_loss_points(block, reference=None):
     """[(label, (v_slow, v_fast, extra loss per metre))] of ``block``'s energy-tracked runs, each faster
     run's loops against its slowest run's, or against the run at ``reference`` m/s per cap (SI:
     relative speeds [m/s], loss per metre of path [N])."""
-    runs = {v: (loss.loops(rows, i["events"]), loss.dissipated(i["events"], i["event_energy"]))
-            for v, (rows, i) in _energy_runs(block).items()}
+    runs = _energy_loops(block)
     slow = min(runs) if reference is None and runs else reference
     if slow not in runs or len(runs) < 2:
         return []
