@@ -9,6 +9,7 @@
 # followed head-on collision of two single meso-particles: e is the closed form's, e_contact = e_rigid = e.
 # A clump is refused as an agglomerate. closest_approach (fragments moving on rigidly): a passing
 # sphere's smallest gap, an aimed one's touch, a spinning dumbbell sweeping a sphere, each by hand.
+# agglomerate.Watched (what a collision reads every few steps) equals the module functions bit for bit.
 import numpy as np
 from yade import O, Vector3, utils
 from yade import wrapper as w
@@ -92,6 +93,27 @@ O.step()
 bonds = impact.bonds([[a, c], [b]]) | impact.bonds([[a, b, c]])
 check(bonds == {(a, b)}, "bonds: only the touching pair of one agglomerate", str(bonds))
 check(impact.broken(bonds) == [], "broken: none while they touch")
+
+# agglomerate.Watched (a collision's watcher: checked once) gives the module functions' values, bit for bit
+from mesocontact.bulk import agglomerate  # noqa: E402
+d = O.bodies.append(utils.sphere((0.5, 1.7, 0), 0.9))  # touches a (b touches a already)
+O.bodies[b].state.vel, O.bodies[d].state.vel = Vector3(0.3, -0.1, 0.2), Vector3(-0.5, 0.4, 0.0)
+O.step()
+first, second = [a, c], [b, d]
+watched = agglomerate.Watched([first, second], [1.5, 1.6])
+pairs = [(i.id1, i.id2, on) for i, on in watched.joining()]
+check(pairs == [(i.id1, i.id2, on) for i, on in agglomerate.joining(first, second)] and len(pairs) == 2,
+      "Watched.joining: the same contacts as joining, in the same order", str(pairs))
+check(watched.meso_overlap() == agglomerate.meso_overlap([first, second], [1.5, 1.6])
+      and all(watched.velocity(k) == agglomerate.velocity(m)
+              and watched.centre_of_mass(k) == agglomerate.centre_of_mass(m) for k, m in enumerate((first, second))),
+      "Watched: meso_overlap, velocity and centre_of_mass equal the module functions'")
+try:
+    agglomerate.Watched([first, [b, 99]], [1.5, 1.6])
+    refused = ""
+except ValueError as exc:
+    refused = str(exc)
+check("members[1]" in refused, "Watched refuses a body that is not in the scene, naming members", refused)
 O.bodies[b].state.pos = Vector3(2.5, 0, 0)
 O.step()
 check(impact.broken(bonds) == [(a, b)], "broken: the pair moved apart", str(impact.broken(bonds)))

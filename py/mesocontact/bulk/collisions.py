@@ -83,21 +83,22 @@ class Collision:
         self.point_sum, self.point_weight, self.recontacts = Vector3(0, 0, 0), 0.0, 0
         self.first_impact = None  # a followed run's measures when the first impact ended (see _first_end)
         O.engines = [e for e in O.engines if not isinstance(e, _w.MesoBackgroundDamping)]
+        self._pair = agglomerate.Watched(self.members, self.radii)  # checked once; _watch reads it every few steps
         before_newton([_loop.runner(self._watch, every, "agg_watch")])
         self.rows = []
 
     def delta(self):
-        return agglomerate.meso_overlap(self.members, self.radii)
+        return self._pair.meso_overlap()
 
     def joined(self):
-        return agglomerate.contacts_between(*self.members) > 0
+        return any(True for _ in self._pair.joining())
 
     def _normal_force(self):
         """(contacts in overlap joining the two, the sum of their normal forces on the second
         agglomerate's particles, the sum of their contact points weighted by |normal force|, that
         weight)."""
         count, f, point, weight = 0, Vector3(0, 0, 0), Vector3(0, 0, 0), 0.0
-        for inter, on_id2 in agglomerate.joining(*self.members):
+        for inter, on_id2 in self._pair.joining():
             count += 1
             f += inter.phys.normalForce if on_id2 else -inter.phys.normalForce  # Law2: +normalForce acts on id2
             w = inter.phys.normalForce.norm()
@@ -118,7 +119,7 @@ class Collision:
             elif O.time - self.last > 1.5 * self.every * O.dt:
                 self.recontacts += 1  # joined again after at least one look without a joining contact
             self.last = O.time
-        v = [agglomerate.velocity(m).dot(self.n) for m in self.members]
+        v = [self._pair.velocity(k).dot(self.n) for k in (0, 1)]
         self.rows.append((O.iter, O.time, delta, v[0], v[1], f.dot(self.n) * self._side if count else 0.0))
 
     def run(self, v_rel, gap=0.05, quiet=1.0, max_time=None, progress=True, snapshot=None, unit="",
