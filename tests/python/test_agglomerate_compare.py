@@ -1,7 +1,8 @@
 """the agglomerate study's comparisons that need no YADE: the wall prediction written out by hand on a
 first loading (where it starts, k1 and the rigid wall's 2 k1), the misfit, and the
 tension-as-adhesion estimate (fa, the tail, kca, the closed form's e and the sticking speed); four
-mutations each fail it; the gammaN scan's worst differences and least of them, on a law written by hand."""
+mutations each fail it; the gammaN scan's worst differences and least of them, on a law written by hand; the ensemble
+table's counting (stuck as 0, an unended run left out of e_contact, the sample sd) on rows written by hand."""
 import unittest
 
 from mesocontact import theory
@@ -90,3 +91,30 @@ class GammaScan(unittest.TestCase):
             self.assertAlmostEqual(row["worst"]["a"], a, places=12)
             self.assertAlmostEqual(row["worst"]["b"], b, places=12)
         self.assertEqual(s["best_factor"], {"a": 1.0, "b": 4.0})
+
+
+class EnsembleTable(unittest.TestCase):
+    """ensemble_report.table on rows written by hand: a stuck run counts 0 in every measure, a run whose
+    first impact never ended (no e_contact) is left out of that measure only; mean and sample sd by hand."""
+
+    def row(self, **kw):
+        r = {"v_rel_m_s": 1.0, "seed": 1, "direction_index": 1, "stuck": False, "broken_mass_fraction": 0.0,
+             "bonds_broken_fraction": 0.0, "recontacts": 0, "e": 0.5, "e_normal": 0.5, "e_contact": 0.5,
+             "e_rigid": 0.5}
+        r.update(kw)
+        return r
+
+    def test_table(self):
+        from mesostudies.agglomerate import ensemble_report as er
+        rows = [self.row(e_contact=0.9), self.row(seed=2, e_contact=0.6, broken_mass_fraction=-2e-17),
+                self.row(direction_index=2, stuck=True, e_contact=None), self.row(seed=3, e_contact=None, recontacts=2)]
+        s = er.table(rows)[1.0]
+        self.assertEqual((s["n"], s["n_blocks"], s["n_directions"], s["stuck"]), (4, 3, 2, 1))
+        k = s["e_contact"]                       # 0.9, 0.6 and the stuck 0: mean 0.5, sd sqrt(0.21)
+        self.assertEqual(k["n"], 3)
+        self.assertAlmostEqual(k["mean"], 0.5, places=15)
+        self.assertAlmostEqual(k["sd"], 0.21 ** 0.5, places=15)
+        self.assertEqual((k["min"], k["max"]), (0.0, 0.9))
+        self.assertEqual(s["e"]["n"], 4)
+        self.assertEqual(s["runs_with_recontacts"], 1)
+        self.assertIn("| 0.00 % | 1 |", er.text({1.0: s}))   # the rounding residue reads 0, not -0.00

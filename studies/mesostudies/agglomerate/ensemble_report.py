@@ -70,6 +70,11 @@ def table(rows):
     return out
 
 
+def _percent(x):
+    """x in per cent; a rounding residue (1 - the fragments' share summed: |x| < 1e-12) reads 0."""
+    return f"{100 * (x if abs(x) >= 1e-12 else 0.0):.2f} %"
+
+
 def text(tab):
     lines = ["| v [m/s] | runs (blocks x directions) | e_rigid mean ± sd [min, max] | e mean ± sd | e_normal mean | "
              "e_contact mean [min, max] | stuck | fragmented | bonds broken | mass broken off | with re-contacts |",
@@ -82,7 +87,7 @@ def text(tab):
         lines.append(f"| {v:g} | {s['n']} ({s['n_blocks']} x {s['n_directions']}) | {f(c['mean'])} ± {f(c['sd'])} "
                      f"[{f(c['min'])}, {f(c['max'])}] | {f(e['mean'])} ± {f(e['sd'])} | {f(s['e_normal']['mean'])} | "
                      f"{f(k['mean'])} [{f(k['min'])}, {f(k['max'])}] | {s['stuck']} | {s['fragmented']} | "
-                     f"{100 * s['bonds_broken_fraction_mean']:.2f} % | {100 * s['broken_mass_mean']:.2f} % | "
+                     f"{_percent(s['bonds_broken_fraction_mean'])} | {_percent(s['broken_mass_mean'])} | "
                      f"{s['runs_with_recontacts']} |")
     return "\n".join(lines)
 
