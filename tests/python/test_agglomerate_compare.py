@@ -2,7 +2,8 @@
 first loading (where it starts, k1 and the rigid wall's 2 k1), the misfit, and the
 tension-as-adhesion estimate (fa, the tail, kca, the closed form's e and the sticking speed); four
 mutations each fail it; the gammaN scan's worst differences and least of them, on a law written by hand; the ensemble
-table's counting (stuck as 0, an unended run left out of e_contact, the sample sd) on rows written by hand."""
+table's counting (stuck as 0, an unended run left out of e_contact, the sample sd) on rows written by hand, and
+the verdict per speed (two standard errors either side of the line, partial ensembles, fragmentation)."""
 import unittest
 
 from mesocontact import theory
@@ -118,3 +119,39 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual(s["e"]["n"], 4)
         self.assertEqual(s["runs_with_recontacts"], 1)
         self.assertIn("| 0.00 % | 1 |", er.text({1.0: s}))   # the rounding residue reads 0, not -0.00
+
+    def test_verdict(self):
+        """verdict by hand: two standard errors (the larger of runs' and blocks') either side of the line."""
+        from mesostudies.agglomerate import ensemble_report as er
+        rows = [self.row(v_rel_m_s=v, seed=s, direction_index=k, e_contact=e0 + (0.01 if s == 2 else 0.0) * (k % 2))
+                for v, e0 in ((1.0, 0.8), (10.0, 0.5), (80.0, 0.6)) for s in (1, 2, 3) for k in range(1, 21)]
+        rows.append(self.row(v_rel_m_s=0.1, e_contact=0.9))
+        tab = er.table(rows)
+        vd = er.verdict(tab, {0.1: 0.9, 1.0: 0.85, 10.0: 0.62, 80.0: 0.6})
+        by = {r["speed"]: r for r in vd["rows"]}
+        self.assertEqual(by[0.01]["state"], "not measured")
+        self.assertEqual(by[0.1]["state"], "partial")          # one run: too few, and no standard error
+        self.assertEqual(by[0.1]["decides"], "undecided")
+        # 1 m/s: 60 values, 10 of them 0.81, the rest 0.8: sd by hand; blocks 0.8, 0.805, 0.8
+        sd = (10 * (0.81 - 0.8 - 0.1 / 60) ** 2 + 50 * (0.1 / 60) ** 2) ** 0.5 / 59 ** 0.5
+        self.assertAlmostEqual(by[1.0]["se_runs"], sd / 60 ** 0.5, places=12)
+        se_b = (2 * (0.005 / 3) ** 2 + (0.01 / 3) ** 2) ** 0.5 / 2 ** 0.5 / 3 ** 0.5
+        self.assertAlmostEqual(by[1.0]["se_blocks"], se_b, places=12)
+        self.assertEqual(by[1.0]["decides"], "met")             # 0.0483 + 2 * 0.0017 <= 0.1
+        self.assertEqual(by[10.0]["decides"], "missed")         # 0.1183 - 2 * 0.0017 > 0.1
+        self.assertEqual(by[80.0]["decides"], "met")
+        self.assertEqual([by[v]["state"] for v in (1.0, 10.0, 80.0)], ["within", "beyond", "within"])
+        self.assertEqual((vd["goal"], vd["firm"]), ("missed", 3))
+        vd = er.verdict(tab, {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
+        self.assertEqual(vd["goal"], "open")                    # 0.01 unmeasured, 0.1 partial
+        near = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.097, 10.0: 0.5, 80.0: 0.6})["rows"][2]
+        self.assertEqual((near["decides"], near["state"]), ("undecided", "within"))  # 0.097 + 2 * 0.00167 > 0.1
+        beyond = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.102, 10.0: 0.5, 80.0: 0.6})["rows"][2]
+        self.assertEqual((beyond["decides"], beyond["state"]), ("undecided", "beyond"))  # 0.102 - 2 * 0.00167 < 0.1
+        gap = er.verdict(er.table(rows[:-3] + rows[-2:]), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
+        self.assertEqual(gap["rows"][-1]["state"], "partial")   # 3 blocks and 20 directions, but 59 runs
+        rows[-2]["broken_mass_fraction"] = 0.02                 # one 80 m/s run fragments (> 1 % broken off)
+        frag = er.verdict(er.table(rows), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
+        self.assertEqual((frag["rows"][-1]["decides"], frag["rows"][-1]["state"], frag["goal"]),
+                         ("missed", "beyond", "missed"))
+        self.assertIn("| 10 | 60 (3 x 20) |", er.verdict_text(vd))

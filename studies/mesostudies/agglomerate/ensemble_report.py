@@ -63,11 +63,86 @@ def table(rows):
              "runs_with_recontacts": sum(1 for r in at if r["recontacts"] > 0)}
         for key in MEASURES:
             m, sd, n = _stats([_value(r, key) for r in at])
+            blocks = {seed: _stats([_value(r, key) for r in at if r["seed"] == seed])[0]
+                      for seed in sorted({r["seed"] for r in at})}
             s[key] = {"mean": m, "sd": sd, "n": n,
                       "min": min((_value(r, key) for r in at if _value(r, key) is not None), default=None),
-                      "max": max((_value(r, key) for r in at if _value(r, key) is not None), default=None)}
+                      "max": max((_value(r, key) for r in at if _value(r, key) is not None), default=None),
+                      "block_means": {str(k): x for k, x in blocks.items()}}
         out[v] = s
     return out
+
+
+GOAL_SPEEDS = (0.01, 0.1, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0)  # m/s: the goal's speeds, as the ensemble runs them
+GOAL_DIFFERENCE = 0.1
+FULL = (3, 20)  # blocks, directions: the issue's least ensemble
+
+
+def verdict(tab, predicted, measure="e_contact"):
+    """The goal per speed and as a whole: |e_mean - e_predicted| <= GOAL_DIFFERENCE at every goal speed
+    without fragmentation. ``tab``: table(); ``predicted``: {speed: e}. Per speed the difference, the
+    standard error of the mean over the runs and over the blocks' means, ``within`` (the issue's test on
+    the means, |difference| <= GOAL_DIFFERENCE, and no run fragmented), and how firmly the noise lets
+    that stand: ``decides`` 'met' or 'missed' when two standard errors (the larger of the two) either
+    side stay on one side of the line, else 'undecided'. ``state``: 'within' or 'beyond' for a full
+    speed (FULL blocks x directions), 'partial' for fewer runs, 'not measured' for none. The whole goal
+    is 'met' when every goal speed is full and within, 'missed' when a full speed is beyond, else 'open';
+    ``firm`` counts the full speeds that the noise decides the same way."""
+    rows = []
+    for v in GOAL_SPEEDS:
+        s = tab.get(v)
+        if s is None or s[measure]["mean"] is None:
+            rows.append({"speed": v, "n": 0, "state": "not measured"})
+            continue
+        k = s[measure]
+        d = predicted[v] - k["mean"]
+        se_runs = k["sd"] / math.sqrt(k["n"]) if k["n"] > 1 else None
+        bm = [x for x in k["block_means"].values() if x is not None]
+        se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
+        se = max((x for x in (se_runs, se_blocks) if x is not None), default=None)
+        if se is None:
+            state = "undecided"
+        elif abs(d) + 2 * se <= GOAL_DIFFERENCE:
+            state = "met"
+        elif abs(d) - 2 * se > GOAL_DIFFERENCE:
+            state = "missed"
+        else:
+            state = "undecided"
+        within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
+        if s["fragmented"]:
+            state = "missed"  # the goal asks for no fragmentation
+        full = s["n_blocks"] >= FULL[0] and s["n_directions"] >= FULL[1] and s["n"] >= FULL[0] * FULL[1]
+        rows.append({"speed": v, "n": s["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
+                     "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
+                     "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
+                     "fragmented": s["fragmented"], "decides": state,
+                     "state": ("within" if within else "beyond") if full else "partial"})
+    states = [r["state"] for r in rows]
+    whole = ("missed" if "beyond" in states else "met" if all(x == "within" for x in states) else "open")
+    firm = sum(1 for r in rows if r["state"] in ("within", "beyond")
+               and r["decides"] == ("met" if r["state"] == "within" else "missed"))
+    return {"measure": measure, "rows": rows, "goal": whole, "firm": firm}
+
+
+def verdict_text(vd):
+    full = sum(1 for r in vd["rows"] if r["state"] in ("within", "beyond"))
+    lines = [f"The goal on {vd['measure']} (|e_mean - e_predicted| <= {GOAL_DIFFERENCE} at every goal speed, no "
+             f"fragmentation): {vd['goal']}; {vd['firm']} of the {full} full speeds decided firmly (two standard "
+             "errors, the larger of over the runs and over the blocks' means, on one side of the line)", "",
+             "| v [m/s] | runs | mean ± sd | block means | predicted | difference | s.e. runs, blocks | decides "
+             "| state |", "|---|---|---|---|---|---|---|---|---|"]
+
+    def f(x, fmt=".3f"):
+        return "–" if x is None else format(x, fmt)
+    for r in vd["rows"]:
+        if not r["n"]:
+            lines.append(f"| {r['speed']:g} | 0 | – | – | – | – | – | – | {r['state']} |")
+            continue
+        blocks = ", ".join(f(x) for x in r["block_means"].values())
+        lines.append(f"| {r['speed']:g} | {r['n']} ({r['n_blocks']} x {r['n_directions']}) | {f(r['mean'])} ± "
+                     f"{f(r['sd'])} | {blocks} | {f(r['predicted'])} | {r['difference']:+.3f} | {f(r['se_runs'])}, "
+                     f"{f(r['se_blocks'])} | {r['decides']} | {r['state']} |")
+    return "\n".join(lines)
 
 
 def _percent(x):

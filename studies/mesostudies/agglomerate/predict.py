@@ -4,15 +4,17 @@
 What the law takes from where:
 - k1, kp, kc, phiF (and the overlap's offset): the fit to the slowest pair cycles (the campaign's
   cycles-v0.625, ``compare.fit``), nothing from a collision;
-- gammaN: the extra loss per cycle of the pair's cycles at collision-like cap speeds (rate-cycles-v*)
-  over the slow cycles at the same turns, over the slow cycles' path in contact (``loss.viscous_gamma``;
-  the median over the speeds and amplitudes measured);
+- the dashpots, three ways, each from cycles: the first prediction's gammaN from the rate cycles' loop
+  areas over the slow cycles' (``loss.viscous_gamma``, the median); the second's from the energy-tracked
+  cycles (``energy_prediction``); the third's gammaN and gammaN2 together from the energy-tracked cycles
+  of every block pooled (``rate_law_prediction``), the rule fixed before the final fit. The third is
+  the result (e_predicted, difference, fitted_to); the first is kept as first_prediction;
 - e(v): two meso-particles of that law (``compare.meso_collisions``) at each speed of the ensemble.
 
 Written: ensemble.json (speeds, n_blocks, n_directions, e_mean, e_sd over every block and direction
-of ``ensemble_report``'s primary measure, e_predicted, fitted_to, the other measures' means, and the
-tension beyond the first touch against the fitted law's, ``tension.report``),
-ensemble.md (the table) and ensemble.png in ``out``.
+of ``ensemble_report``'s primary measure, e_predicted, fitted_to, the verdict per speed
+(``ensemble_report.verdict``), the other measures' means, and the tension beyond the first touch
+against the fitted law's, ``tension.report``) and ensemble.md (the tables) in ``out``.
 """
 import json
 import os
@@ -82,11 +84,16 @@ def predict(out, campaign, info, progress=True):
     res["rate_energy"] = rate_energy(os.path.join(out, "block-s1"))
     res["energy_prediction"] = energy_prediction(os.path.join(out, "block-s1"), params, info, speeds, res)
     res["rate_law_prediction"] = rate_law_prediction(out, params, info, speeds, res)
+    _final(res)
     res["tension"] = tension.report(campaign, os.path.join(out, "block-s1"), params)
     res["goal"] = "|e_mean - e_predicted| <= 0.1 at every speed from 0.01 to 80 m/s without fragmentation"
     res["stuck_counted_as"] = 0.0
+    res["verdict"] = ensemble_report.verdict(tab, dict(zip(speeds, res["e_predicted"])), PRIMARY)
     outputs.write_atomic(os.path.join(out, "ensemble.json"), json.dumps(res, indent=1))
-    outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab) + "\n\n" + _verdict_table(res)
+    outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab)
+                         + "\n\n" + ensemble_report.verdict_text(res["verdict"])
+                         + "\n\nThe first prediction (gammaN from the rate cycles' loop areas):\n\n"
+                         + _verdict_table(res["first_prediction"], res)
                          + "\n\n" + _scan_table(res["gamma_scan"])
                          + "\n\n" + _energy_table(res["rate_energy"])
                          + "\n\n" + _energy_prediction_table(res["energy_prediction"], res)
@@ -315,10 +322,25 @@ def _scan_table(scan):
     return "\n".join(lines)
 
 
-def _verdict_table(res):
+def _final(res):
+    """The prediction the rule named (the third: both dashpots, every block pooled) becomes the result's
+    e_predicted, difference and fitted_to; the first (gammaN from the rate cycles' loop areas) moves to
+    first_prediction. Without a third prediction the first stays the result's."""
+    first = {k: res[k] for k in ("e_predicted", "difference", "fitted_to", "gammaN_per_run")}
+    res["first_prediction"] = first
+    rp = res["rate_law_prediction"]
+    if rp is None:
+        return
+    res["e_predicted"], res["difference"] = rp["e_predicted"], rp["difference"]
+    res["fitted_to"] = {"k1, kp, kc, phiF, shift": first["fitted_to"]["k1, kp, kc, phiF, shift"],
+                        "gammaN, gammaN2": f"{rp['gammaN']:.4g} kg/s, {rp['gammaN2']:.4g} kg/m: " + rp["fitted_to"],
+                        "collisions": "nothing"}
+
+
+def _verdict_table(pred, res):
     lines = [f"| v [m/s] | runs | {res['measure']} mean ± sd | predicted | difference |", "|---|---|---|---|---|"]
-    for v, n, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["e_mean"], res["e_sd"], res["e_predicted"],
-                                 res["difference"]):
+    for v, n, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["e_mean"], res["e_sd"], pred["e_predicted"],
+                                 pred["difference"]):
         lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |" if m is not None else
                      f"| {v:g} | {n} | – | {p:.3f} | – |")
     return "\n".join(lines)
