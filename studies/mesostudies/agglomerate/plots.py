@@ -96,3 +96,48 @@ def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, d
     ax.grid(alpha=0.3)
     outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")
     plt.close(fig)
+
+
+def ensemble(res, rows, path, measure="e_contact"):
+    """The ensemble against the predictions (predict's result ``res``, the collisions' ``rows``): every
+    run's ``measure`` (a stuck run at 0) as a dot beside its speed, each block's mean, the mean with two
+    standard errors (the larger of runs' and blocks'), and the three predictions from cycles, the
+    third (the result) with the goal's band of +-0.1 over the goal's speeds."""
+    fig, ax = plt.subplots(figsize=(11, 5))
+    speeds = res["speeds"]
+    seeds = sorted({r["seed"] for r in rows})
+    for k, seed in enumerate(seeds):
+        xs = [r["v_rel_m_s"] * 1.06 ** (k - 1) for r in rows if r["seed"] == seed]
+        ys = [0.0 if r["stuck"] else r.get(measure) for r in rows if r["seed"] == seed]
+        ax.plot([x for x, y in zip(xs, ys) if y is not None], [y for y in ys if y is not None], ".",
+                ms=3, color=f"C{k}", alpha=0.35, label=f"block {seed}: each run (stuck at 0)")
+    by = {r["speed"]: r for r in res["verdict"]["rows"] if r["n"]}
+    for k, seed in enumerate(seeds):
+        pts = [(v * 1.06 ** (k - 1), by[v]["block_means"].get(str(seed))) for v in speeds if v in by]
+        ax.plot([p[0] for p in pts if p[1] is not None], [p[1] for p in pts if p[1] is not None], "_", ms=12, mew=2,
+                color=f"C{k}", label=f"block {seed}: mean")
+    vs = [v for v in speeds if v in by]
+    se = [2 * max(x for x in (by[v]["se_runs"], by[v]["se_blocks"]) if x is not None) for v in vs]
+    ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=se, fmt="ks", ms=5, capsize=3,
+                label="ensemble mean, two standard errors")
+    goal = [v for v in speeds if v <= 80]
+    third = dict(zip(speeds, res["e_predicted"]))
+    ax.fill_between(goal, [third[v] - 0.1 for v in goal], [third[v] + 0.1 for v in goal], color="C3", alpha=0.12,
+                    label="the goal: third prediction +- 0.1")
+    ax.plot(speeds, res["e_predicted"], "C3-", lw=1.6, label="third prediction: both dashpots, blocks pooled")
+    if res.get("energy_prediction"):
+        ax.plot(speeds, res["energy_prediction"]["e_predicted"], "C4--", lw=1,
+                label="second: one dashpot, energy-tracked cycles")
+    ax.plot(speeds, res["first_prediction"]["e_predicted"], "C7:", lw=1.2, label="first: one dashpot, loop areas")
+    ax.set_xscale("log")
+    ax.set_xlabel("relative speed [m/s]")
+    ax.set_ylabel(f"{measure}: the contact point's normal e, with spin")
+    ax.axhline(1.0, color="0.7", lw=0.5)
+    ax.set_ylim(-0.1, 1.35)
+    ax.grid(alpha=0.3, which="both")
+    measured = sum(1 for r in res["verdict"]["rows"] if r["n"])
+    ax.set_title(f"Agglomerate collisions against the meso-particle law fitted to cycles alone: the goal "
+                 f"{res['verdict']['goal']} ({measured} of 8 goal speeds measured)", fontsize=9)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")
+    plt.close(fig)

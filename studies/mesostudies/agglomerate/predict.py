@@ -14,7 +14,8 @@ What the law takes from where:
 Written: ensemble.json (speeds, n_blocks, n_directions, e_mean, e_sd over every block and direction
 of ``ensemble_report``'s primary measure, e_predicted, fitted_to, the verdict per speed
 (``ensemble_report.verdict``), the other measures' means, and the tension beyond the first touch
-against the fitted law's, ``tension.report``) and ensemble.md (the tables) in ``out``.
+against the fitted law's, ``tension.report``), ensemble.md (the tables) and ensemble.png
+(``plots.ensemble``) in ``out``.
 """
 import json
 import os
@@ -22,7 +23,7 @@ import statistics
 
 from mesocontact import outputs
 from mesocontact.outputs import read_csv
-from . import compare, ensemble_report, loss, tension
+from . import compare, ensemble_report, loss, plots, tension
 
 # The issue's measure: e along the normal impulse with the spin, at the contact point (e_contact). It is not
 # bounded at a rough, tilted contact (above 1 in 4 of the first 42 runs), and e_rigid (the rigid motion's
@@ -90,6 +91,7 @@ def predict(out, campaign, info, progress=True):
     res["stuck_counted_as"] = 0.0
     res["verdict"] = ensemble_report.verdict(tab, dict(zip(speeds, res["e_predicted"])), PRIMARY)
     outputs.write_atomic(os.path.join(out, "ensemble.json"), json.dumps(res, indent=1))
+    plots.ensemble(res, ensemble_report.collected(out), os.path.join(out, "ensemble.png"), PRIMARY)
     outputs.write_atomic(os.path.join(out, "ensemble.md"), ensemble_report.text(tab)
                          + "\n\n" + ensemble_report.verdict_text(res["verdict"])
                          + "\n\nThe first prediction (gammaN from the rate cycles' loop areas):\n\n"
