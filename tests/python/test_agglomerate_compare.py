@@ -3,7 +3,8 @@ first loading (where it starts, k1 and the rigid wall's 2 k1), the misfit, and t
 tension-as-adhesion estimate (fa, the tail, kca, the closed form's e and the sticking speed); four
 mutations each fail it; the gammaN scan's worst differences and least of them, on a law written by hand; the ensemble
 table's counting (stuck as 0, an unended run left out of e_contact, the sample sd) on rows written by hand, and
-the verdict per speed (two standard errors either side of the line, partial ensembles, fragmentation)."""
+the verdict per speed (two standard errors either side of the line, partial ensembles, fragmentation), and
+what collect copies into the committed campaign."""
 import unittest
 
 from mesocontact import theory
@@ -155,3 +156,31 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual((frag["rows"][-1]["decides"], frag["rows"][-1]["state"], frag["goal"]),
                          ("missed", "beyond", "missed"))
         self.assertIn("| 10 | 60 (3 x 20) |", er.verdict_text(vd))
+
+
+class Collect(unittest.TestCase):
+    """collect copies what the report and the prediction read (finished runs, the collisions, the
+    descriptions, block 1's pair) and leaves out scenes, checkpoints, logs and runs still going."""
+
+    def test_collect(self):
+        import os
+        import tempfile
+        from mesostudies.agglomerate import collect
+        with tempfile.TemporaryDirectory() as src, tempfile.TemporaryDirectory() as dst:
+            names = {"block-s1": ["agglomerates.yade.gz", "agglomerates.yade.gz.json", "block.yade.gz",
+                                  "block.yade.gz.json", "pull-a0.02-v0.625.csv", "pull-a0.02-v0.625.json",
+                                  "pull-a0.1-v0.625.checkpoint.yade.gz", "pull-a0.1-v0.625.checkpoint.yade.gz.json",
+                                  "energy-cycles-v40.csv", "x.log", "ensemble/d1-v1.json", "ensemble/d1-v1.tmp"],
+                     "block-s2": ["agglomerates.yade.gz", "energy-cycles-v10.csv", "energy-cycles-v10.json",
+                                  "ensemble/d2-v3.json"]}
+            for block, files in names.items():
+                for f in files:
+                    os.makedirs(os.path.dirname(os.path.join(src, block, f)), exist_ok=True)
+                    open(os.path.join(src, block, f), "w").close()
+            self.assertEqual(collect.collect(src, dst), 9)
+            got = sorted(os.path.relpath(os.path.join(r, f), dst) for r, _, fs in os.walk(dst) for f in fs)
+            self.assertEqual(got, ["block-s1/agglomerates.yade.gz", "block-s1/agglomerates.yade.gz.json",
+                                   "block-s1/block.yade.gz.json", "block-s1/ensemble/d1-v1.json",
+                                   "block-s1/pull-a0.02-v0.625.csv", "block-s1/pull-a0.02-v0.625.json",
+                                   "block-s2/energy-cycles-v10.csv", "block-s2/energy-cycles-v10.json",
+                                   "block-s2/ensemble/d2-v3.json"])

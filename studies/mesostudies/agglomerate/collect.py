@@ -1,0 +1,58 @@
+"""The ensemble's committed campaign (issue #59; plain Python): from a working folder (``results/ensemble``)
+copy what the report and the prediction read into a campaign folder, leaving out the blocks' scenes,
+checkpoints and logs. Per block: every finished collision (ensemble/*.json), the finished cycle and pull
+runs (energy-cycles-*, rate-cycles-*, pull-* as CSV and JSON; a run still going has no JSON beside its
+CSV, or only a checkpoint) and the descriptions of the block and of its pair (*.yade.gz.json); block 1's
+pair itself too (agglomerates.yade.gz: the meso pair of ``predict`` takes its radii and masses)::
+
+    python3 -m mesostudies.agglomerate.collect results/ensemble campaigns/agglomerate/ensemble
+    yade -n -x studies/scripts/agglomerate.py predict --out campaigns/agglomerate/ensemble
+
+Returns (and prints) the number of files copied.
+"""
+import os
+import shutil
+import sys
+
+RUNS = ("energy-cycles-", "rate-cycles-", "pull-")
+DESCRIPTIONS = ("block.yade.gz.json", "agglomerates.yade.gz.json")
+
+
+def _wanted(folder, block, name):
+    """Whether ``name`` in block folder ``folder`` (named ``block``) belongs to the campaign."""
+    if name in DESCRIPTIONS or (block == "block-s1" and name == "agglomerates.yade.gz"):
+        return True
+    if not name.startswith(RUNS) or ".checkpoint" in name:
+        return False
+    stem, ext = os.path.splitext(name)
+    return ext in (".csv", ".json") and all(os.path.exists(os.path.join(folder, stem + e)) for e in (".csv", ".json"))
+
+
+def collect(src, dst):
+    n = 0
+    for block in sorted(b for b in os.listdir(src) if b.startswith("block-s")):
+        here = os.path.join(src, block)
+        for name in sorted(os.listdir(here)):
+            if os.path.isfile(os.path.join(here, name)) and _wanted(here, block, name):
+                os.makedirs(os.path.join(dst, block), exist_ok=True)
+                shutil.copy2(os.path.join(here, name), os.path.join(dst, block, name))
+                n += 1
+        runs = os.path.join(here, "ensemble")
+        if os.path.isdir(runs):
+            os.makedirs(os.path.join(dst, block, "ensemble"), exist_ok=True)
+            for name in sorted(f for f in os.listdir(runs) if f.endswith(".json")):
+                shutil.copy2(os.path.join(runs, name), os.path.join(dst, block, "ensemble", name))
+                n += 1
+    return n
+
+
+def main(argv):
+    if len(argv) != 2:
+        raise SystemExit("usage: python3 -m mesostudies.agglomerate.collect SRC DST")
+    if not os.path.isdir(argv[0]):
+        raise SystemExit(f"SRC = {argv[0]!r} is not a folder")
+    print(f"{collect(*argv)} files copied to {argv[1]}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
