@@ -184,3 +184,26 @@ class Collect(unittest.TestCase):
                                    "block-s1/pull-a0.02-v0.625.csv", "block-s1/pull-a0.02-v0.625.json",
                                    "block-s2/energy-cycles-v10.csv", "block-s2/energy-cycles-v10.json",
                                    "block-s2/ensemble/d2-v3.json"])
+
+
+class PullRange(unittest.TestCase):
+    """tension.pull_range on a pull written by hand (d0 = 1): loaded linearly from the touch at 1 to
+    1.1 (press work 0.5 * 2 * 0.1**2 = 0.01), back to the touch, then a constant tension of 0.004 from
+    the touch to 0.5 beyond it and nothing after: held beyond the touch 0.004 * min(m, 0.5) / 0.01 up to
+    each mark m, and the last force at 0.5. An attraction before the touch is not press work."""
+
+    def test_pull_range(self):
+        from mesostudies.agglomerate import tension
+        k, n = 2.0, 1000
+        load = [(i, 1.0 + 0.1 * i / n, k * 0.1 * i / n) for i in range(n + 1)]
+        back = [(n + i, 1.1 - 0.1 * i / n, k * (0.1 - 0.1 * i / n)) for i in range(1, n + 1)]
+        pull = [(2 * n + i, 1.0 - 2.0 * i / n, -0.004 if 1.0 - 2.0 * i / n > 0.5 else 0.0) for i in range(1, n + 1)]
+        events = [["touch", 0, 1.0, 0.0], ["loaded to 0.1 d0", n, 1.1, 0.2], ["unloaded", 2 * n, 1.0, 0.0]]
+        before = [(-100 + i, 0.95 + 0.0005 * i, -0.001) for i in range(100)]  # an attraction before the touch
+        r = tension.pull_range(before + load + back + pull, events, d0=1.0, marks=(0.2, 0.5, 1.0, 3.0))
+        self.assertAlmostEqual(r["press_work"], 0.01, places=12)
+        self.assertAlmostEqual(r["reached_d0"], 2.0, places=12)
+        self.assertEqual(sorted(r["held_over_press"]), [0.2, 0.5, 1.0])      # 3 d0 not reached
+        for m, want in ((0.2, 0.08), (0.5, 0.2), (1.0, 0.2)):
+            self.assertAlmostEqual(r["held_over_press"][m], want, delta=1.01 * 0.004 * 0.002 / 0.01)  # two half-rows
+        self.assertAlmostEqual(r["last_force_d0"], 0.5, delta=0.0021)  # within a row's step

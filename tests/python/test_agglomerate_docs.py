@@ -1,6 +1,6 @@
 """The agglomerate study's page: campaigns/agglomerate/summary.md is what its report writes from the
 committed summary, and the results section of docs/agglomerate.md quotes no number that page does
-not hold."""
+not hold; the ensemble page's verdict quotes only numbers of its campaign's ensemble.md."""
 import json
 import os
 import re
@@ -29,6 +29,18 @@ class AgglomerateDocs(unittest.TestCase):
             have = set(NUMBER.findall(f.read()))
         missing = sorted(set(NUMBER.findall(re.sub(r"`[^`]*`", "", results))) - have)
         self.assertEqual(missing, [], "numbers in docs/agglomerate.md's results found nowhere in summary.md")
+
+    def test_ensemble_verdict_quotes_its_campaign(self):
+        """The ensemble page's verdict and choices sections quote only numbers its campaign's ensemble.md holds."""
+        with open(os.path.join(ROOT, "docs", "agglomerate-ensemble.md")) as f:
+            text = f.read()
+        quoted = text[text.index("## The verdict"):text.index("## Which speeds inform")]
+        quoted += text[text.index("## What the fit's choices do"):text.index("## What the agglomerates do")]
+        quoted = quoted[:quoted.index("- γ0 rests on")] if "- γ0 rests on" in quoted else quoted
+        with open(os.path.join(RESULTS, "ensemble", "ensemble.md")) as f:
+            have = set(NUMBER.findall(f.read()))
+        missing = sorted(set(NUMBER.findall(re.sub(r"`[^`]*`|\(\.\./[^)]*\)", "", quoted))) - have)
+        self.assertEqual(missing, [], "numbers in the ensemble page's verdict found nowhere in its ensemble.md")
 
 
 if __name__ == "__main__":

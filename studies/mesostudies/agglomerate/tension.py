@@ -73,6 +73,28 @@ def unloadings(rows, events, law=None, d0=D0, band=BAND):
     return out
 
 
+MARKS = (0.05, 0.1, 0.2, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0)  # d0 beyond the first touch
+
+
+def pull_range(rows, events, d0=D0, marks=MARKS, quiet=1e-3):
+    """How far a pull's tension reaches (a pull run's rows and events, or a saved pull's: its checkpoint
+    holds both): the press work (first touch to the loaded turn), the work held beyond the first touch
+    (as ``unloadings``) up to each mark [d0 beyond the touch] the pull reached, over the press work, and
+    the last distance beyond the touch where |F| exceeded ``quiet`` times the run's largest |F|."""
+    touch = next(e[2] for e in events if e[0] == "touch")
+    start = next(e[1] for e in events if e[0] == "touch")
+    turn = next(e[1] for e in events if e[0].startswith("loaded to"))
+    press = loss.work([r for r in rows if start <= r[0] <= turn])
+    after = [r for r in rows if r[0] >= turn]
+    reached = (touch - min(r[1] for r in after)) / d0
+    held = {m: _work_below([r for r in after if r[1] >= touch - m * d0], touch) / press
+            for m in marks if m <= reached}
+    peak = max(abs(r[2]) for r in rows)
+    loud = [r for r in after if r[1] < touch and abs(r[2]) > quiet * peak]
+    return {"press_work": press, "reached_d0": reached, "held_over_press": held, "peak": peak,
+            "last_force_d0": (touch - min(r[1] for r in loud)) / d0 if loud else 0.0, "quiet": quiet}
+
+
 def table(runs):
     """Markdown rows of {name: (unloadings(...), the run's largest |F|)}: one line per unloading."""
     lines = ["| run | press [d0] | held beyond the first touch / press work | tension plateau / peak "
@@ -109,3 +131,22 @@ def report(campaign, block, params):
             runs[name] = unloadings(rows, events, compare.law_curve(params, rows, params["a12"]))
             peaks[name] = max(abs(r[2]) for r in rows)
     return {"runs": runs, "table": table({k: (v, peaks[k]) for k, v in runs.items()})}
+
+
+def main(argv):
+    """python3 -m mesostudies.agglomerate.tension RUN.json [RUN.csv]: pull_range of a pull run (its CSV
+    beside it) or of a saved pull (a checkpoint's .yade.gz.json, rows inside)."""
+    with open(argv[0]) as f:
+        info = json.load(f)
+    csv_path = argv[1] if len(argv) > 1 else argv[0][:-5] + ".csv"
+    rows = ([tuple(r) for r in info["rows"]] if "rows" in info else [tuple(r) for r in read_csv(csv_path)])
+    r = pull_range(rows, info["events"])
+    print(f"press work {r['press_work']:.4g}, pulled to {r['reached_d0']:.2f} d0 beyond the touch, |F| above "
+          f"{r['quiet']:g} of the peak until {r['last_force_d0']:.2f} d0")
+    for m, h in r["held_over_press"].items():
+        print(f"  held beyond the touch to {m:g} d0: {h:+.4f} of the press work")
+
+
+if __name__ == "__main__":
+    import sys
+    main(sys.argv[1:])
