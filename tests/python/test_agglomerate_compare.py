@@ -143,6 +143,8 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual(by[80.0]["decides"], "met")
         self.assertEqual([by[v]["state"] for v in (1.0, 10.0, 80.0)], ["within", "beyond", "within"])
         self.assertEqual((vd["goal"], vd["firm"]), ("missed", 3))
+        self.assertAlmostEqual(vd["fall"]["ensemble"], 0.5 - 0.6, places=12)   # 10 and 80 m/s: both + 0.1/60
+        self.assertAlmostEqual(vd["fall"]["predicted"], 0.62 - 0.6, places=12)
         vd = er.verdict(tab, {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
         self.assertEqual(vd["goal"], "open")                    # 0.01 unmeasured, 0.1 partial
         near = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.097, 10.0: 0.5, 80.0: 0.6})["rows"][2]
@@ -173,6 +175,7 @@ class Collect(unittest.TestCase):
                                   "energy-cycles-v40.csv", "x.log", "ensemble/d1-v1.json", "ensemble/d1-v1.tmp"],
                      "block-s2": ["agglomerates.yade.gz", "energy-cycles-v10.csv", "energy-cycles-v10.json",
                                   "ensemble/d2-v3.json"]}
+            open(os.path.join(src, "block-s1.log"), "w").close()   # a block's log beside the folders
             for block, files in names.items():
                 for f in files:
                     os.makedirs(os.path.dirname(os.path.join(src, block, f)), exist_ok=True)

@@ -37,7 +37,7 @@ class AgglomerateDocs(unittest.TestCase):
         quoted = text[text.index("## The verdict"):text.index("## Which speeds inform")]
         quoted += text[text.index("## What the fit's choices do"):text.index("## What the agglomerates do")]
         quoted = quoted[:quoted.index("- γ0 rests on")] if "- γ0 rests on" in quoted else quoted
-        with open(os.path.join(RESULTS, "ensemble", "ensemble.md")) as f:
+        with open(os.path.join(ROOT, "campaigns", "agglomerate-ensemble", "ensemble.md")) as f:
             have = set(NUMBER.findall(f.read()))
         missing = sorted(set(NUMBER.findall(re.sub(r"`[^`]*`|\(\.\./[^)]*\)", "", quoted))) - have)
         self.assertEqual(missing, [], "numbers in the ensemble page's verdict found nowhere in its ensemble.md")

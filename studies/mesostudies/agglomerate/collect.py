@@ -5,8 +5,8 @@ runs (energy-cycles-*, rate-cycles-*, pull-* as CSV and JSON; a run still going 
 CSV, or only a checkpoint) and the descriptions of the block and of its pair (*.yade.gz.json); block 1's
 pair itself too (agglomerates.yade.gz: the meso pair of ``predict`` takes its radii and masses)::
 
-    python3 -m mesostudies.agglomerate.collect results/ensemble campaigns/agglomerate/ensemble
-    yade -n -x studies/scripts/agglomerate.py predict --out campaigns/agglomerate/ensemble
+    python3 -m mesostudies.agglomerate.collect results/ensemble campaigns/agglomerate-ensemble
+    yade -n -x studies/scripts/agglomerate.py predict --out campaigns/agglomerate-ensemble
 
 Returns (and prints) the number of files copied.
 """
@@ -30,7 +30,7 @@ def _wanted(folder, block, name):
 
 def collect(src, dst):
     n = 0
-    for block in sorted(b for b in os.listdir(src) if b.startswith("block-s")):
+    for block in sorted(b for b in os.listdir(src) if b.startswith("block-s") and os.path.isdir(os.path.join(src, b))):
         here = os.path.join(src, block)
         for name in sorted(os.listdir(here)):
             if os.path.isfile(os.path.join(here, name)) and _wanted(here, block, name):

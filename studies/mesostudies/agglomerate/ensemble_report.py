@@ -76,6 +76,7 @@ def table(rows):
 GOAL_SPEEDS = (0.01, 0.1, 1.0, 3.0, 10.0, 20.0, 40.0, 80.0)  # m/s: the goal's speeds, as the ensemble runs them
 GOAL_DIFFERENCE = 0.1
 FULL = (3, 20)  # blocks, directions: the issue's least ensemble
+FALL = (10.0, 80.0)  # m/s: where the agglomerates' e falls and a rate law must follow
 
 
 def verdict(tab, predicted, measure="e_contact"):
@@ -121,7 +122,10 @@ def verdict(tab, predicted, measure="e_contact"):
     whole = ("missed" if "beyond" in states else "met" if all(x == "within" for x in states) else "open")
     firm = sum(1 for r in rows if r["state"] in ("within", "beyond")
                and r["decides"] == ("met" if r["state"] == "within" else "missed"))
-    return {"measure": measure, "rows": rows, "goal": whole, "firm": firm}
+    by = {r["speed"]: r for r in rows if r["n"]}
+    fall = ({"from": FALL[0], "to": FALL[1], "ensemble": by[FALL[0]]["mean"] - by[FALL[1]]["mean"],
+             "predicted": by[FALL[0]]["predicted"] - by[FALL[1]]["predicted"]} if all(v in by for v in FALL) else None)
+    return {"measure": measure, "rows": rows, "goal": whole, "firm": firm, "fall": fall}
 
 
 def verdict_text(vd):
@@ -142,6 +146,10 @@ def verdict_text(vd):
         lines.append(f"| {r['speed']:g} | {r['n']} ({r['n_blocks']} x {r['n_directions']}) | {f(r['mean'])} ± "
                      f"{f(r['sd'])} | {blocks} | {f(r['predicted'])} | {r['difference']:+.3f} | {f(r['se_runs'])}, "
                      f"{f(r['se_blocks'])} | {r['decides']} | {r['state']} |")
+    if vd.get("fall"):
+        f = vd["fall"]
+        lines += ["", f"From {f['from']:g} to {f['to']:g} m/s the mean falls by {f['ensemble']:.3f}, the prediction by "
+                  f"{f['predicted']:.3f}."]
     return "\n".join(lines)
 
 
