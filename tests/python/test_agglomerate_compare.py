@@ -109,7 +109,8 @@ class EnsembleTable(unittest.TestCase):
     def test_table(self):
         from mesostudies.agglomerate import ensemble_report as er
         rows = [self.row(e_contact=0.9), self.row(seed=2, e_contact=0.6, broken_mass_fraction=-2e-17),
-                self.row(direction_index=2, stuck=True, e_contact=None), self.row(seed=3, e_contact=None, recontacts=2)]
+                self.row(direction_index=2, stuck=True, e_contact=None),
+                self.row(seed=3, e_contact=None, recontacts=2)]
         s = er.table(rows)[1.0]
         self.assertEqual((s["n"], s["n_blocks"], s["n_directions"], s["stuck"]), (4, 3, 2, 1))
         k = s["e_contact"]                       # 0.9, 0.6 and the stuck 0: mean 0.5, sd sqrt(0.21)
@@ -119,10 +120,32 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual((k["min"], k["max"]), (0.0, 0.9))
         self.assertEqual(s["e"]["n"], 4)
         self.assertEqual(s["runs_with_recontacts"], 1)
-        self.assertIn("| 0.00 % | 1 |", er.text({1.0: s}))   # the rounding residue reads 0, not -0.00
+        self.assertIn("| 0.00 % (0.00 %) | 1 |", er.text({1.0: s}))  # the rounding residue reads 0, not -0.00
+        self.assertIn("| 1 (0.750) |", er.text({1.0: s}))  # one stuck; the others 0.9, 0.6
+        self.assertEqual(s["e_contact_above_1"], 0)
+        rows[0]["e_contact"] = 1.2                               # 1.2, 0.6, 0 (stuck): mean 0.6, capped 0.5333
+        s = er.table(rows)[1.0]
+        self.assertEqual(s["e_contact_above_1"], 1)
+        self.assertAlmostEqual(s["e_contact_mean_capped_at_1"], 1.6 / 3, places=15)
+        self.assertAlmostEqual(s["e_contact_mean_rebounding"], 0.9, places=15)   # 1.2 and 0.6; the stuck left out
+
+    def test_anova(self):
+        """2 blocks x 2 directions, y = block + direction + an interaction (+1, -1; -1, +1): [[1, 3], [1, 7]],
+        mean 3; SS blocks 2 ((2-3)^2 + (4-3)^2) = 4, directions 2 ((1-3)^2 + (5-3)^2) = 16, total 24, residual 4;
+        one df each: F 1 and 4. The table carries it for a complete grid only."""
+        from mesostudies.agglomerate import ensemble_report as er
+        a = er.anova_two_way([[1.0, 3.0], [1.0, 7.0]])
+        self.assertAlmostEqual(a["F_blocks"], 1.0, places=12)
+        self.assertAlmostEqual(a["F_directions"], 4.0, places=12)
+        self.assertEqual(a["df"], [1, 1, 1])
+        rows = [self.row(seed=b, direction_index=d, e_contact=y) for b, ys in ((1, (1.0, 3.0)), (2, (1.0, 7.0)))
+                for d, y in zip((1, 2), ys)]
+        self.assertAlmostEqual(er.table(rows)[1.0]["e_contact"]["anova"]["F_directions"], 4.0, places=12)
+        self.assertIsNone(er.table(rows[:3])[1.0]["e_contact"]["anova"])
 
     def test_verdict(self):
-        """verdict by hand: two standard errors (the larger of runs' and blocks') either side of the line."""
+        """verdict by hand: two standard errors of the runs, and Student's t (4.303 for 2 df) on the blocks'
+        means, either side of the line."""
         from mesostudies.agglomerate import ensemble_report as er
         rows = [self.row(v_rel_m_s=v, seed=s, direction_index=k, e_contact=e0 + (0.01 if s == 2 else 0.0) * (k % 2))
                 for v, e0 in ((1.0, 0.8), (10.0, 0.5), (80.0, 0.6)) for s in (1, 2, 3) for k in range(1, 21)]
@@ -138,25 +161,31 @@ class EnsembleTable(unittest.TestCase):
         self.assertAlmostEqual(by[1.0]["se_runs"], sd / 60 ** 0.5, places=12)
         se_b = (2 * (0.005 / 3) ** 2 + (0.01 / 3) ** 2) ** 0.5 / 2 ** 0.5 / 3 ** 0.5
         self.assertAlmostEqual(by[1.0]["se_blocks"], se_b, places=12)
-        self.assertEqual(by[1.0]["decides"], "met")             # 0.0483 + 2 * 0.0017 <= 0.1
-        self.assertEqual(by[10.0]["decides"], "missed")         # 0.1183 - 2 * 0.0017 > 0.1
+        self.assertEqual((by[1.0]["decides"], by[1.0]["decides_blocks"]), ("met", "met"))         # 0.0483 + 0.0072
+        self.assertEqual((by[10.0]["decides"], by[10.0]["decides_blocks"]), ("missed", "missed"))  # 0.1183 - 0.0072
         self.assertEqual(by[80.0]["decides"], "met")
         self.assertEqual([by[v]["state"] for v in (1.0, 10.0, 80.0)], ["within", "beyond", "within"])
-        self.assertEqual((vd["goal"], vd["firm"]), ("missed", 3))
+        self.assertEqual((vd["goal"], vd["firm"], vd["firm_blocks"]), ("missed", 3, 3))
         self.assertAlmostEqual(vd["fall"]["ensemble"], 0.5 - 0.6, places=12)   # 10 and 80 m/s: both + 0.1/60
         self.assertAlmostEqual(vd["fall"]["predicted"], 0.62 - 0.6, places=12)
         vd = er.verdict(tab, {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
         self.assertEqual(vd["goal"], "open")                    # 0.01 unmeasured, 0.1 partial
         near = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.097, 10.0: 0.5, 80.0: 0.6})["rows"][2]
-        self.assertEqual((near["decides"], near["state"]), ("undecided", "within"))  # 0.097 + 2 * 0.00167 > 0.1
+        self.assertEqual((near["decides"], near["decides_blocks"], near["state"]), ("met", "undecided", "within"))
+        # runs: 0.097 + 2 * 0.000485 <= 0.1; blocks: 0.097 + 4.303 * 0.00167 > 0.1
+        t = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.094, 10.0: 0.5, 80.0: 0.6})["rows"][2]
+        self.assertEqual(t["decides_blocks"], "undecided")      # 0.094 + 4.303 * 0.00167 > 0.1 (with 2: 0.0973)
+        r2 = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.0993, 10.0: 0.5, 80.0: 0.6})["rows"][2]
+        self.assertEqual(r2["decides"], "undecided")            # 0.0993 + 2 * 0.000485 > 0.1 (with 1: 0.0998)
         beyond = er.verdict(tab, {0.1: 0.9, 1.0: by[1.0]["mean"] + 0.102, 10.0: 0.5, 80.0: 0.6})["rows"][2]
-        self.assertEqual((beyond["decides"], beyond["state"]), ("undecided", "beyond"))  # 0.102 - 2 * 0.00167 < 0.1
+        self.assertEqual((beyond["decides"], beyond["decides_blocks"], beyond["state"]),
+                         ("missed", "undecided", "beyond"))  # 0.102 - 0.00097 > 0.1; 0.102 - 0.0072 < 0.1
         gap = er.verdict(er.table(rows[:-3] + rows[-2:]), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
         self.assertEqual(gap["rows"][-1]["state"], "partial")   # 3 blocks and 20 directions, but 59 runs
         rows[-2]["broken_mass_fraction"] = 0.02                 # one 80 m/s run fragments (> 1 % broken off)
         frag = er.verdict(er.table(rows), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})
-        self.assertEqual((frag["rows"][-1]["decides"], frag["rows"][-1]["state"], frag["goal"]),
-                         ("missed", "beyond", "missed"))
+        self.assertEqual((frag["rows"][-1]["decides"], frag["rows"][-1]["decides_blocks"], frag["rows"][-1]["state"],
+                          frag["goal"]), ("missed", "missed", "beyond", "missed"))
         self.assertIn("| 10 | 60 (3 x 20) |", er.verdict_text(vd))
 
 

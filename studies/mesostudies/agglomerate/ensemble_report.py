@@ -48,6 +48,22 @@ def _stats(xs):
     return m, sd, len(xs)
 
 
+def anova_two_way(grid):
+    """Two-way analysis of variance without replication of ``grid`` (rows: blocks, columns: directions,
+    one run each): F of the blocks and of the directions against the residual (the interaction), with
+    their degrees of freedom. Small F: the runs scatter about alike whatever their block or direction,
+    so the runs' standard error stands for the mean's."""
+    nb, nd = len(grid), len(grid[0])
+    m = sum(map(sum, grid)) / (nb * nd)
+    ss_b = nd * sum((sum(r) / nd - m) ** 2 for r in grid)
+    ss_d = nb * sum((sum(r[j] for r in grid) / nb - m) ** 2 for j in range(nd))
+    ss_res = sum((x - m) ** 2 for r in grid for x in r) - ss_b - ss_d
+    df_b, df_d, df_r = nb - 1, nd - 1, (nb - 1) * (nd - 1)
+    ms_r = ss_res / df_r
+    return {"F_blocks": (ss_b / df_b) / ms_r if ms_r > 0 else None,
+            "F_directions": (ss_d / df_d) / ms_r if ms_r > 0 else None, "df": [df_b, df_d, df_r]}
+
+
 def table(rows):
     """{speed: summary} over the rows."""
     out = {}
@@ -60,15 +76,25 @@ def table(rows):
              "broken_mass_mean": sum(r["broken_mass_fraction"] for r in at) / len(at),
              "bonds_broken_fraction_mean": sum(r["bonds_broken_fraction"] or 0 for r in at) / len(at),
              "recontacts_mean": sum(r["recontacts"] for r in at) / len(at),
-             "runs_with_recontacts": sum(1 for r in at if r["recontacts"] > 0)}
+             "runs_with_recontacts": sum(1 for r in at if r["recontacts"] > 0),
+             "broken_mass_max": max(r["broken_mass_fraction"] for r in at),
+             "e_contact_above_1": sum(1 for r in at if not r["stuck"] and (r.get("e_contact") or 0.0) > 1.0)}
+        capped = _stats([None if x is None else min(x, 1.0) for x in (_value(r, "e_contact") for r in at)])[0]
+        s["e_contact_mean_capped_at_1"] = capped
+        s["e_contact_mean_rebounding"] = _stats([r.get("e_contact") for r in at if not r["stuck"]])[0]
         for key in MEASURES:
             m, sd, n = _stats([_value(r, key) for r in at])
             blocks = {seed: _stats([_value(r, key) for r in at if r["seed"] == seed])[0]
                       for seed in sorted({r["seed"] for r in at})}
+            cells = {(r["seed"], r["direction_index"]): _value(r, key) for r in at}
+            seeds, dirs = sorted({c[0] for c in cells}), sorted({c[1] for c in cells})
+            complete = (len(seeds) > 1 and len(dirs) > 1 and len(cells) == len(at)
+                        and all(cells.get((b, d)) is not None for b in seeds for d in dirs))
+            anova = anova_two_way([[cells[(b, d)] for d in dirs] for b in seeds]) if complete else None
             s[key] = {"mean": m, "sd": sd, "n": n,
                       "min": min((_value(r, key) for r in at if _value(r, key) is not None), default=None),
                       "max": max((_value(r, key) for r in at if _value(r, key) is not None), default=None),
-                      "block_means": {str(k): x for k, x in blocks.items()}}
+                      "block_means": {str(k): x for k, x in blocks.items()}, "anova": anova}
         out[v] = s
     return out
 
@@ -79,16 +105,35 @@ FULL = (3, 20)  # blocks, directions: the issue's least ensemble
 FALL = (10.0, 80.0)  # m/s: where the agglomerates' e falls and a rate law must follow
 
 
+T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228,
+        15: 2.131, 20: 2.086, 30: 2.042}  # Student's t, two-sided 95 %, by degrees of freedom
+
+
+def _t975(df):
+    return T975[max(k for k in T975 if k <= df)]  # the nearest tabulated df below: a wider interval, not narrower
+
+
+def _decide(d, half):
+    if half is None:
+        return "undecided"
+    if abs(d) + half <= GOAL_DIFFERENCE:
+        return "met"
+    return "missed" if abs(d) - half > GOAL_DIFFERENCE else "undecided"
+
+
 def verdict(tab, predicted, measure="e_contact"):
     """The goal per speed and as a whole: |e_mean - e_predicted| <= GOAL_DIFFERENCE at every goal speed
     without fragmentation. ``tab``: table(); ``predicted``: {speed: e}. Per speed the difference, the
     standard error of the mean over the runs and over the blocks' means, ``within`` (the issue's test on
     the means, |difference| <= GOAL_DIFFERENCE, and no run fragmented), and how firmly the noise lets
-    that stand: ``decides`` 'met' or 'missed' when two standard errors (the larger of the two) either
-    side stay on one side of the line, else 'undecided'. ``state``: 'within' or 'beyond' for a full
-    speed (FULL blocks x directions), 'partial' for fewer runs, 'not measured' for none. The whole goal
-    is 'met' when every goal speed is full and within, 'missed' when a full speed is beyond, else 'open';
-    ``firm`` counts the full speeds that the noise decides the same way."""
+    that stand, two ways: ``decides`` with two standard errors of the runs either side (about 95 % when
+    the runs are independent: the table's analysis of variance says whether blocks or directions group
+    them), ``decides_blocks`` with Student's t for the blocks' means (95 %); each 'met' or 'missed' when
+    the interval stays on one side of the line, else 'undecided' (a fragmenting speed is 'missed').
+    ``state``: 'within' or 'beyond' for a full speed (FULL blocks x directions), 'partial' for fewer
+    runs, 'not measured' for none. The whole goal is 'met' when every goal speed is full and within,
+    'missed' when a full speed is beyond, else 'open'; ``firm`` and ``firm_blocks`` count the full
+    speeds that each interval decides the same way."""
     rows = []
     for v in GOAL_SPEEDS:
         s = tab.get(v)
@@ -100,52 +145,53 @@ def verdict(tab, predicted, measure="e_contact"):
         se_runs = k["sd"] / math.sqrt(k["n"]) if k["n"] > 1 else None
         bm = [x for x in k["block_means"].values() if x is not None]
         se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
-        se = max((x for x in (se_runs, se_blocks) if x is not None), default=None)
-        if se is None:
-            state = "undecided"
-        elif abs(d) + 2 * se <= GOAL_DIFFERENCE:
-            state = "met"
-        elif abs(d) - 2 * se > GOAL_DIFFERENCE:
-            state = "missed"
-        else:
-            state = "undecided"
+        runs = _decide(d, None if se_runs is None else 2 * se_runs)
+        blocks = _decide(d, None if se_blocks is None else _t975(len(bm) - 1) * se_blocks)
         within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
         if s["fragmented"]:
-            state = "missed"  # the goal asks for no fragmentation
+            runs = blocks = "missed"  # the goal asks for no fragmentation
         full = s["n_blocks"] >= FULL[0] and s["n_directions"] >= FULL[1] and s["n"] >= FULL[0] * FULL[1]
         rows.append({"speed": v, "n": s["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
                      "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
                      "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
-                     "fragmented": s["fragmented"], "decides": state,
-                     "state": ("within" if within else "beyond") if full else "partial"})
+                     "fragmented": s["fragmented"], "decides": runs, "decides_blocks": blocks,
+                     "anova": k.get("anova"), "state": ("within" if within else "beyond") if full else "partial"})
     states = [r["state"] for r in rows]
     whole = ("missed" if "beyond" in states else "met" if all(x == "within" for x in states) else "open")
-    firm = sum(1 for r in rows if r["state"] in ("within", "beyond")
-               and r["decides"] == ("met" if r["state"] == "within" else "missed"))
+
+    def firm(key):
+        return sum(1 for r in rows if r["state"] in ("within", "beyond")
+                   and r[key] == ("met" if r["state"] == "within" else "missed"))
     by = {r["speed"]: r for r in rows if r["n"]}
     fall = ({"from": FALL[0], "to": FALL[1], "ensemble": by[FALL[0]]["mean"] - by[FALL[1]]["mean"],
              "predicted": by[FALL[0]]["predicted"] - by[FALL[1]]["predicted"]} if all(v in by for v in FALL) else None)
-    return {"measure": measure, "rows": rows, "goal": whole, "firm": firm, "fall": fall}
+    return {"measure": measure, "rows": rows, "goal": whole, "firm": firm("decides"),
+            "firm_blocks": firm("decides_blocks"), "fall": fall}
 
 
 def verdict_text(vd):
     full = sum(1 for r in vd["rows"] if r["state"] in ("within", "beyond"))
     lines = [f"The goal on {vd['measure']} (|e_mean - e_predicted| <= {GOAL_DIFFERENCE} at every goal speed, no "
-             f"fragmentation): {vd['goal']}; {vd['firm']} of the {full} full speeds decided firmly (two standard "
-             "errors, the larger of over the runs and over the blocks' means, on one side of the line)", "",
-             "| v [m/s] | runs | mean ± sd | block means | predicted | difference | s.e. runs, blocks | decides "
-             "| state |", "|---|---|---|---|---|---|---|---|---|"]
+             f"fragmentation): {vd['goal']}; of the {full} full speeds, {vd['firm']} decided firmly by two standard "
+             f"errors of the runs, {vd['firm_blocks']} by Student's t on the blocks' means (95 %)", "",
+             "| v [m/s] | runs | mean ± sd | block means | predicted | difference | s.e. runs, blocks "
+             "| F blocks, directions (df) | decides: runs, blocks | state |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
 
     def f(x, fmt=".3f"):
         return "–" if x is None else format(x, fmt)
     for r in vd["rows"]:
         if not r["n"]:
-            lines.append(f"| {r['speed']:g} | 0 | – | – | – | – | – | – | {r['state']} |")
+            lines.append(f"| {r['speed']:g} | 0 | – | – | – | – | – | – | – | {r['state']} |")
             continue
         blocks = ", ".join(f(x) for x in r["block_means"].values())
+        a = r["anova"]
+        anova = "–"
+        if a and a["F_blocks"] is not None:
+            anova = f"{a['F_blocks']:.2f}, {a['F_directions']:.2f} ({a['df'][0]}, {a['df'][1]}, {a['df'][2]})"
         lines.append(f"| {r['speed']:g} | {r['n']} ({r['n_blocks']} x {r['n_directions']}) | {f(r['mean'])} ± "
                      f"{f(r['sd'])} | {blocks} | {f(r['predicted'])} | {r['difference']:+.3f} | {f(r['se_runs'])}, "
-                     f"{f(r['se_blocks'])} | {r['decides']} | {r['state']} |")
+                     f"{f(r['se_blocks'])} | {anova} | {r['decides']}, {r['decides_blocks']} | {r['state']} |")
     if vd.get("fall"):
         f = vd["fall"]
         lines += ["", f"From {f['from']:g} to {f['to']:g} m/s the mean falls by {f['ensemble']:.3f}, the prediction by "
@@ -160,8 +206,10 @@ def _percent(x):
 
 def text(tab):
     lines = ["| v [m/s] | runs (blocks x directions) | e_rigid mean ± sd [min, max] | e mean ± sd | e_normal mean | "
-             "e_contact mean [min, max] | stuck | fragmented | bonds broken | mass broken off | with re-contacts |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "e_contact mean [min, max] | above 1 (mean capped at 1) | stuck (the others' mean) | fragmented "
+             "| bonds broken "
+             "| mass broken off (largest) | with re-contacts |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for v, s in tab.items():
         c, e, k = s["e_rigid"], s["e"], s["e_contact"]
 
@@ -169,9 +217,11 @@ def text(tab):
             return "–" if x is None else format(x, fmt)
         lines.append(f"| {v:g} | {s['n']} ({s['n_blocks']} x {s['n_directions']}) | {f(c['mean'])} ± {f(c['sd'])} "
                      f"[{f(c['min'])}, {f(c['max'])}] | {f(e['mean'])} ± {f(e['sd'])} | {f(s['e_normal']['mean'])} | "
-                     f"{f(k['mean'])} [{f(k['min'])}, {f(k['max'])}] | {s['stuck']} | {s['fragmented']} | "
-                     f"{_percent(s['bonds_broken_fraction_mean'])} | {_percent(s['broken_mass_mean'])} | "
-                     f"{s['runs_with_recontacts']} |")
+                     f"{f(k['mean'])} [{f(k['min'])}, {f(k['max'])}] | {s['e_contact_above_1']} "
+                     f"({f(s['e_contact_mean_capped_at_1'])}) | {s['stuck']} ({f(s['e_contact_mean_rebounding'])}) | "
+                     f"{s['fragmented']} | "
+                     f"{_percent(s['bonds_broken_fraction_mean'])} | {_percent(s['broken_mass_mean'])} "
+                     f"({_percent(s['broken_mass_max'])}) | {s['runs_with_recontacts']} |")
     return "\n".join(lines)
 
 

@@ -106,20 +106,27 @@ def ensemble(res, rows, path, measure="e_contact"):
     fig, ax = plt.subplots(figsize=(11, 5))
     speeds = res["speeds"]
     seeds = sorted({r["seed"] for r in rows})
-    for k, seed in enumerate(seeds):
-        xs = [r["v_rel_m_s"] * 1.06 ** (k - 1) for r in rows if r["seed"] == seed]
+    for k, seed in enumerate(seeds):  # each block beside the speed, its directions spread across (no overlap)
+        xs = [r["v_rel_m_s"] * 1.07 ** (k - 1) * 1.004 ** (r["direction_index"] - 10.5) for r in rows
+              if r["seed"] == seed]
         ys = [0.0 if r["stuck"] else r.get(measure) for r in rows if r["seed"] == seed]
         ax.plot([x for x, y in zip(xs, ys) if y is not None], [y for y in ys if y is not None], ".",
                 ms=3, color=f"C{k}", alpha=0.35, label=f"block {seed}: each run (stuck at 0)")
     by = {r["speed"]: r for r in res["verdict"]["rows"] if r["n"]}
     for k, seed in enumerate(seeds):
-        pts = [(v * 1.06 ** (k - 1), by[v]["block_means"].get(str(seed))) for v in speeds if v in by]
+        pts = [(v * 1.07 ** (k - 1), by[v]["block_means"].get(str(seed))) for v in speeds if v in by]
         ax.plot([p[0] for p in pts if p[1] is not None], [p[1] for p in pts if p[1] is not None], "_", ms=12, mew=2,
                 color=f"C{k}", label=f"block {seed}: mean")
-    vs = [v for v in speeds if v in by]
-    se = [2 * max(x for x in (by[v]["se_runs"], by[v]["se_blocks"]) if x is not None) for v in vs]
-    ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=se, fmt="ks", ms=5, capsize=3,
-                label="ensemble mean, two standard errors")
+    for done, style, label in ((True, "ks", "mean, two standard errors of the runs (3 x 20 runs)"),
+                               (False, "ws", "mean of a speed still running")):
+        vs = [v for v in speeds if v in by and (by[v]["state"] != "partial") == done]
+        if vs:
+            ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[2 * (by[v]["se_runs"] or 0.0) for v in vs], fmt=style,
+                        mec="k", ecolor="k", ms=5, capsize=3, label=label)
+    beyond = [v for v in speeds if v not in by and res["e_mean"][speeds.index(v)] is not None]
+    if beyond:
+        ax.plot(beyond, [res["e_mean"][speeds.index(v)] for v in beyond], "kD", mfc="w", ms=5,
+                label="mean beyond the goal's speeds")
     goal = [v for v in speeds if v <= 80]
     third = dict(zip(speeds, res["e_predicted"]))
     ax.fill_between(goal, [third[v] - 0.1 for v in goal], [third[v] + 0.1 for v in goal], color="C3", alpha=0.12,
@@ -135,9 +142,9 @@ def ensemble(res, rows, path, measure="e_contact"):
     ax.axhline(1.0, color="0.7", lw=0.5)
     ax.set_ylim(-0.1, 1.35)
     ax.grid(alpha=0.3, which="both")
-    measured = sum(1 for r in res["verdict"]["rows"] if r["n"])
-    ax.set_title(f"Agglomerate collisions against the meso-particle law fitted to cycles alone: the goal "
-                 f"{res['verdict']['goal']} ({measured} of 8 goal speeds measured)", fontsize=9)
+    complete = sum(1 for r in res["verdict"]["rows"] if r["state"] in ("within", "beyond"))
+    ax.set_title(f"Agglomerate collisions against a head-on meso pair of the law fitted to cycles alone: the goal "
+                 f"{res['verdict']['goal']} ({complete} of 8 goal speeds complete)", fontsize=9)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     outputs.savefig_atomic(fig, path, dpi=120, bbox_inches="tight")
     plt.close(fig)
