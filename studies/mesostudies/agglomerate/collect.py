@@ -1,9 +1,11 @@
 """The ensemble's committed campaign (issue #59; plain Python): from a working folder (``results/ensemble``)
 copy what the report and the prediction read into a campaign folder, leaving out the blocks' scenes,
-checkpoints and logs. Per block: every finished collision (ensemble/*.json), the finished cycle and pull
-runs (energy-cycles-*, rate-cycles-*, pull-* as CSV and JSON; a run still going has no JSON beside its
-CSV, or only a checkpoint) and the descriptions of the block and of its pair (*.yade.gz.json); block 1's
-pair itself too (agglomerates.yade.gz: the meso pair of ``predict`` takes its radii and masses)::
+checkpoints' scenes and logs. Per block: every finished collision (ensemble/*.json), the finished cycle
+and pull runs (energy-cycles-*, rate-cycles-*, pull-* as CSV and JSON; a run still going has no JSON
+beside its CSV), a pull not finished as its last save's description (pull-*.checkpoint.yade.gz.json: its
+rows and events, which ``python3 -m mesostudies.agglomerate.tension`` reads), and the descriptions of the
+block and of its pair (*.yade.gz.json); block 1's pair itself too (agglomerates.yade.gz: the meso pair of
+``predict`` takes its radii and masses)::
 
     python3 -m mesostudies.agglomerate.collect results/ensemble campaigns/agglomerate-ensemble
     yade -n -x studies/scripts/agglomerate.py predict --out campaigns/agglomerate-ensemble
@@ -22,6 +24,9 @@ def _wanted(folder, block, name):
     """Whether ``name`` in block folder ``folder`` (named ``block``) belongs to the campaign."""
     if name in DESCRIPTIONS or (block == "block-s1" and name == "agglomerates.yade.gz"):
         return True
+    if name.startswith("pull-") and name.endswith(".checkpoint.yade.gz.json"):
+        stem = name[:-len(".checkpoint.yade.gz.json")]  # a pull not finished: its last save's rows and events
+        return not os.path.exists(os.path.join(folder, stem + ".json"))
     if not name.startswith(RUNS) or ".checkpoint" in name:
         return False
     stem, ext = os.path.splitext(name)
