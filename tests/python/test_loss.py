@@ -113,6 +113,20 @@ class Loops(unittest.TestCase):
         g1, g2, _ = loss.rate_dashpots(pts)
         self.assertEqual(g1, 0.0)
         self.assertAlmostEqual(g2, (3 * 2.5 + 8 * 7 + 24 * 21) / (9 + 64 + 576), places=12)
+        # relative=True: each point's columns and y over |y| (y' = 1), the 2x2 normal equations solved by hand
+        # for y = 3.6, 8, 20 (dv = 1, 2, 4; d(v^2) = 3, 8, 24); the residuals are y - fit, unweighted
+        pts = [(1.0, 2.0, 3.6), (1.0, 3.0, 8.0), (1.0, 5.0, 20.0)]
+        a = [1 / 3.6, 2 / 8, 4 / 20]
+        b = [3 / 3.6, 8 / 8, 24 / 20]
+        saa, sbb, sab = sum(x * x for x in a), sum(x * x for x in b), sum(x * y for x, y in zip(a, b))
+        det = saa * sbb - sab * sab
+        g1, g2, res = loss.rate_dashpots(pts, relative=True)
+        self.assertAlmostEqual(g1, (sum(a) * sbb - sum(b) * sab) / det, places=12)
+        self.assertAlmostEqual(g2, (saa * sum(b) - sab * sum(a)) / det, places=12)
+        self.assertAlmostEqual(res[0], 3.6 - g1 * 1 - g2 * 3, places=12)
+        self.assertNotAlmostEqual(g1, loss.rate_dashpots(pts)[0], places=3)   # the weights matter here
+        with self.assertRaisesRegex(ValueError, "y = 0"):
+            loss.rate_dashpots([(1.0, 2.0, 0.0), (1.0, 3.0, 8.0)], relative=True)
         # One pair of speeds, however many points, fixes only gammaN dv + gammaN2 d(v^2): refused
         for pts in ([(1.0, 2.0, 3.5), None], [(1.25, 80.0, 0.25), (1.25, 80.0, 0.43)]):
             with self.assertRaisesRegex(ValueError, "two pairs"):

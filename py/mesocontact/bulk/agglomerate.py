@@ -161,22 +161,24 @@ def check_pair(members, radii):
 def meso_overlap(members, radii):
     """delta = R1 + R2 - |x1 - x2| of two agglomerates' centres of mass."""
     check_pair(members, radii)
-    c = [centre_of_mass(m)[0] for m in members]
-    return radii[0] + radii[1] - (c[0] - c[1]).norm()
+    return _overlap([centre_of_mass(m)[0] for m in members], radii)
+
+
+def _overlap(centres, radii):
+    return radii[0] + radii[1] - (centres[0] - centres[1]).norm()
 
 
 def joining(first, second):
     """The contacts in overlap that join a body of ``first`` to one of ``second``: an iterator of
     (interaction, whether its id2 is the body of ``second``)."""
-    _bodies("first", first)
-    _ids("second", second)
-    return _joining(first, second)
+    return _joining(_bodies("first", first), set(_ids("second", second)))
 
 
-def _joining(first, second):
-    other = set(second)
-    for i in first:
-        for inter in O.bodies[i].intrs():
+def _joining(first_bodies, other):
+    """The contacts in overlap joining one of ``first_bodies`` to a body whose id is in ``other``."""
+    for b in first_bodies:
+        i = b.id
+        for inter in b.intrs():
             j = inter.id2 if inter.id1 == i else inter.id1
             if j in other and inter.isReal and inter.geom.penetrationDepth > 0:
                 yield inter, inter.id2 == j
@@ -202,17 +204,11 @@ class Watched:
         return _mass_weighted(self.bodies[k], "vel")[0]
 
     def meso_overlap(self):
-        c = [self.centre_of_mass(k)[0] for k in (0, 1)]
-        return self.radii[0] + self.radii[1] - (c[0] - c[1]).norm()
+        return _overlap([self.centre_of_mass(k)[0] for k in (0, 1)], self.radii)
 
     def joining(self):
         """As joining(first, second): (interaction, whether its id2 is the second's body)."""
-        for b in self.bodies[0]:
-            i = b.id
-            for inter in b.intrs():
-                j = inter.id2 if inter.id1 == i else inter.id1
-                if j in self._second and inter.isReal and inter.geom.penetrationDepth > 0:
-                    yield inter, inter.id2 == j
+        return _joining(self.bodies[0], self._second)
 
 
 def contacts_between(first, second):

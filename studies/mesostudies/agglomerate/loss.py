@@ -122,6 +122,8 @@ def rate_dashpots(points, relative=False):
         raise ValueError(f"rate_dashpots: {len(pts)} usable point(s) from {len(pairs)} pair(s) of speeds; two pairs "
                          "are needed for two dashpots (one pair fixes only their sum there)")
     raw = [(vf - vs, vf * vf - vs * vs, y) for vs, vf, y, *_ in pts]
+    if relative and any(y == 0 for *_, y in raw):
+        raise ValueError("rate_dashpots: relative=True weights each point by 1/|y|, and a point has y = 0")
     cols = [(a / abs(y), b / abs(y), y / abs(y)) for a, b, y in raw] if relative else raw
 
     def one(k):  # the best with the other dashpot at 0

@@ -328,7 +328,8 @@ def _final(res):
     """The prediction the rule named (the third: both dashpots, every block pooled) becomes the result's
     e_predicted, difference and fitted_to; the first (gammaN from the rate cycles' loop areas) moves to
     first_prediction. Without a third prediction the first stays the result's."""
-    first = {k: res[k] for k in ("e_predicted", "difference", "fitted_to", "gammaN_per_run")}
+    first = {k: res[k] for k in ("e_predicted", "difference", "fitted_to")}
+    first["gammaN_per_run"] = res.pop("gammaN_per_run")
     res["first_prediction"] = first
     rp = res["rate_law_prediction"]
     if rp is None:
