@@ -1,10 +1,12 @@
 """The statements of Appendix F for every finished repeat (issue 60 item 2): per perturbation factor an
-overlay of campaigns/tablet/chosen in which the tested sample's P480 tension run at each repeated
-amplitude is replaced by the repeat's (repeat-x<f>-tension-Dx<a>-P480), then
+overlay of campaigns/tablet/chosen in which the tested sample's tension run at each repeated amplitude
+and period is replaced by the repeat's (repeat-x<f>-tension-Dx<a>-P<period>), then
 mesostudies.tablet.statements.statements(overlay). Prints the chosen campaign's verdicts and each
 factor's, for the statements named (default 10 11 12 15; 'all' for every one), and writes
-verdicts.json into the repeats' folder (REPEATS, default results/repeats; the other lanes' runs in
-REPEATS + "2" and REPEATS + "3" are read too). Run from the repository:
+verdicts.json into the repeats' working folder (REPEATS, default results/repeats). The repeats are
+read from the committed campaign (campaigns/tablet/repeats, flat) and from the lanes' run bundles
+(REPEATS + lane, lane in LANES: <folder>/runs/<name>/; a bundle found in both is the lane's). Run from
+the repository:
 
     PYTHONPATH=py:studies python3 studies/scripts/tablet_repeats.py [10 12 15 | all]
 """
@@ -18,24 +20,29 @@ import sys
 from mesostudies.tablet import statements as S
 
 CHOSEN = os.path.abspath("campaigns/tablet/chosen")
+COMMITTED = os.path.abspath("campaigns/tablet/repeats")
 HERE = os.path.abspath(os.environ.get("REPEATS", "results/repeats"))
 OVERLAY = os.path.join(HERE, "overlay")
-LANES = ("", "2", "3")  # the lanes' folders: REPEATS, REPEATS2 (the second lane at 0.1, 0.2), REPEATS3 (0.3)
+LANES = ("", "2", "3", "-1920c", "-1920d")  # REPEATS + lane: the lanes' working folders
+NAME = re.compile(r"repeat-x([0-9.]+)-tension-Dx([0-9.]+)-P([0-9.]+)\.json$")
+PARTS = (".json", ".csv", "-branches.csv")  # a run's files
 
 
 def finished():
-    """{factor: {amplitude: run directory}} of the complete repeats (a bundle holds its JSON)."""
+    """{factor: {(amplitude, period): [its files]}} of the complete repeats (a run's JSON is written last)."""
     out = {}
-    pattern = os.path.join("runs", "repeat-x*-tension-Dx*-P480", "*.json")
-    for js in [j for lane in LANES for j in glob.glob(os.path.join(HERE + lane, pattern))]:
-        m = re.match(r"repeat-x([0-9.]+)-tension-Dx([0-9.]+)-P480\.json$", os.path.basename(js))
+    found = sorted(glob.glob(os.path.join(COMMITTED, "repeat-x*.json")))
+    found += [j for lane in LANES for j in sorted(glob.glob(os.path.join(HERE + lane, "runs", "repeat-x*", "*.json")))]
+    for js in found:
+        m = NAME.match(os.path.basename(js))
         if m:
-            out.setdefault(m.group(1), {})[float(m.group(2))] = os.path.dirname(js)
+            stem = js[:-len(".json")]
+            out.setdefault(m.group(1), {})[(float(m.group(2)), float(m.group(3)))] = [stem + e for e in PARTS]
     return out
 
 
 def overlay(factor, runs):
-    """campaigns/tablet/chosen with the repeats' runs in place of its P480 tension runs at their amplitudes."""
+    """campaigns/tablet/chosen with the repeats' runs in place of its tension runs at their amplitudes and periods."""
     d = os.path.join(OVERLAY, "x" + factor)
     shutil.rmtree(d, ignore_errors=True)
     os.makedirs(d)
@@ -43,15 +50,13 @@ def overlay(factor, runs):
         link = os.path.join(OVERLAY, side)
         if not os.path.lexists(link):
             os.symlink(os.path.join(CHOSEN, "..", side), link)
-    replaced = {f"tension-Dx{a:g}-P480{e}" for a in runs for e in (".json", ".csv", "-branches.csv")}
+    replaced = {f"tension-Dx{a:g}-P{p:g}{e}" for a, p in runs for e in PARTS}
     for f in os.listdir(CHOSEN):
         if f not in replaced:
             os.symlink(os.path.join(CHOSEN, f), os.path.join(d, f))
-    for where in runs.values():
-        for f in os.listdir(where):
-            if f == "MANIFEST.json":
-                continue
-            os.symlink(os.path.join(where, f), os.path.join(d, re.sub(r"^repeat-x[0-9.]+-", "", f)))
+    for files in runs.values():
+        for f in files:
+            os.symlink(f, os.path.join(d, re.sub(r"^repeat-x[0-9.]+-", "", os.path.basename(f))))
     return d
 
 
@@ -76,13 +81,44 @@ def _rate_at(table, amplitude=0.3):
               f"{100 * (max(vals) - min(vals)) / abs(m):.1f} %  {where}  z {(slow[k]['peak'] - m) / sd:+.1f}")
 
 
+def _p1920(table):
+    """The numbers the 1920 t_w runs decide, per run set that repeated one (and the campaign's): the retrace
+    (range of cycles 2-4 peaks over the first peak / over their mean) at 0.1 (#10: one branch when both are
+    at most 5 %), 0.2 (#15's 1920 t_w entry) and 0.3, and #12's 1920 t_w ratio (0.2's retrace over the smaller
+    amplitudes' largest; > 1.5). Returns {name: numbers}; each spread over the sets that repeated it."""
+    print("== P1920 numbers: retrace 0.1, 0.2, 0.3 (first/mean), #12 ratio at 1920")
+    out, spread = {}, {}
+    for name, row in table.items():
+        if name != "chosen" and not row["slow_amplitudes"]:
+            continue
+        runs = S.runs_of(CHOSEN if name == "chosen" else os.path.join(OVERLAY, name))
+        r = {a: S.retrace(runs[("tension", a, 1920.0)][1]) for a in (0.025, 0.05, 0.1, 0.2, 0.3)}
+        ratio = r[0.2][1] / max(r[a][1] for a in (0.025, 0.05, 0.1))
+        out[name] = {"retrace": {str(a): r[a] for a in (0.1, 0.2, 0.3)}, "ratio_12": ratio}
+        print(f"  {name:12s} " + "  ".join(f"{100 * r[a][0]:5.2f}/{100 * r[a][1]:5.2f} %" for a in (0.1, 0.2, 0.3))
+              + f"  {ratio:5.2f}")
+        repeated = row["slow_amplitudes"]
+        for k, v, a in (("retrace_0.1_mean", r[0.1][1], 0.1), ("retrace_0.2_first", r[0.2][0], 0.2),
+                        ("retrace_0.2_mean", r[0.2][1], 0.2), ("retrace_0.3_mean", r[0.3][1], 0.3),
+                        ("ratio_12", ratio, 0.2)):
+            if a in repeated:
+                spread.setdefault(k, []).append(v)
+    for k, v in spread.items():
+        print(f"  {k} at 1920: min {min(v):.4g}, max {max(v):.4g} over {len(v)} (chosen included)")
+    return out
+
+
 def main(argv):
     numbers = None if argv == ["all"] else [int(x) for x in argv] or [10, 11, 12, 15]
-    table = {"chosen": {"amplitudes": [0.1, 0.2, 0.3], "statements": S.statements(CHOSEN)}}
+    table = {"chosen": {"amplitudes": [0.1, 0.2, 0.3], "slow_amplitudes": [0.1, 0.2, 0.3],
+                        "statements": S.statements(CHOSEN)}}
     for factor, runs in sorted(finished().items(), key=lambda kv: abs(float(kv[0]) - 1)):
-        table["x" + factor] = {"amplitudes": sorted(runs), "statements": S.statements(overlay(factor, runs))}
+        table["x" + factor] = {"amplitudes": sorted(a for a, p in runs if p == 480.0),
+                               "slow_amplitudes": sorted(a for a, p in runs if p == 1920.0),
+                               "statements": S.statements(overlay(factor, runs))}
     for name, row in table.items():
-        print(f"== {name} (repeated amplitudes {row['amplitudes']})")
+        slow = f", at 1920 t_w {row['slow_amplitudes']}" if row["slow_amplitudes"] and name != "chosen" else ""
+        print(f"== {name} (repeated amplitudes {row['amplitudes']}{slow})")
         for s in row["statements"]:
             if numbers is None or s["n"] in numbers:
                 print(f"  #{s['n']} {s['verdict']}  {s['project']}")
@@ -116,6 +152,9 @@ def main(argv):
     for k, v in spread.items():
         print(f"  {k}: min {min(v):.4g}, max {max(v):.4g} over {len(v)} (chosen included)")
     _rate_at(table)
+    if any(row["slow_amplitudes"] for name, row in table.items() if name != "chosen"):
+        for name, numbers in _p1920(table).items():
+            table[name]["p1920"] = numbers
     with open(os.path.join(HERE, "verdicts.json"), "w") as f:
         json.dump(table, f, indent=1, ensure_ascii=False)
 

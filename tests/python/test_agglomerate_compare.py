@@ -191,7 +191,7 @@ class EnsembleTable(unittest.TestCase):
 
 class Collect(unittest.TestCase):
     """collect copies what the report and the prediction read (finished runs, the collisions, the
-    descriptions, block 1's pair, an unfinished pull's last save) and leaves out scenes, finished runs'
+    descriptions, every block's pair, an unfinished pull's last save) and leaves out scenes, finished runs'
     saves, logs and runs still going."""
 
     def test_collect(self):
@@ -211,12 +211,13 @@ class Collect(unittest.TestCase):
                 for f in files:
                     os.makedirs(os.path.dirname(os.path.join(src, block, f)), exist_ok=True)
                     open(os.path.join(src, block, f), "w").close()
-            self.assertEqual(collect.collect(src, dst), 10)
+            self.assertEqual(collect.collect(src, dst), 11)
             got = sorted(os.path.relpath(os.path.join(r, f), dst) for r, _, fs in os.walk(dst) for f in fs)
             self.assertEqual(got, ["block-s1/agglomerates.yade.gz", "block-s1/agglomerates.yade.gz.json",
                                    "block-s1/block.yade.gz.json", "block-s1/ensemble/d1-v1.json",
                                    "block-s1/pull-a0.02-v0.625.csv", "block-s1/pull-a0.02-v0.625.json",
                                    "block-s1/pull-a0.1-v0.625.checkpoint.yade.gz.json",
+                                   "block-s2/agglomerates.yade.gz",
                                    "block-s2/energy-cycles-v10.csv", "block-s2/energy-cycles-v10.json",
                                    "block-s2/ensemble/d2-v3.json"])
 

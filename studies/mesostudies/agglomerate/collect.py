@@ -4,8 +4,9 @@ checkpoints' scenes and logs. Per block: every finished collision (ensemble/*.js
 and pull runs (energy-cycles-*, rate-cycles-*, pull-* as CSV and JSON; a run still going has no JSON
 beside its CSV), a pull not finished as its last save's description (pull-*.checkpoint.yade.gz.json: its
 rows and events, which ``python3 -m mesostudies.agglomerate.tension`` reads), and the descriptions of the
-block and of its pair (*.yade.gz.json); block 1's pair itself too (agglomerates.yade.gz: the meso pair of
-``predict`` takes its radii and masses)::
+block and of its pair (*.yade.gz.json); every block's pair itself too (agglomerates.yade.gz: ``predict``
+takes the meso pair's radii and masses from block 1's, and a campaign copied to a new machine goes on
+without sintering its blocks again, an hour each)::
 
     python3 -m mesostudies.agglomerate.collect results/ensemble campaigns/agglomerate-ensemble
     yade -n -x studies/scripts/agglomerate.py predict --out campaigns/agglomerate-ensemble
@@ -20,9 +21,9 @@ RUNS = ("energy-cycles-", "rate-cycles-", "pull-")
 DESCRIPTIONS = ("block.yade.gz.json", "agglomerates.yade.gz.json")
 
 
-def _wanted(folder, block, name):
-    """Whether ``name`` in block folder ``folder`` (named ``block``) belongs to the campaign."""
-    if name in DESCRIPTIONS or (block == "block-s1" and name == "agglomerates.yade.gz"):
+def _wanted(folder, name):
+    """Whether ``name`` in block folder ``folder`` belongs to the campaign."""
+    if name in DESCRIPTIONS or name == "agglomerates.yade.gz":
         return True
     if name.startswith("pull-") and name.endswith(".checkpoint.yade.gz.json"):
         stem = name[:-len(".checkpoint.yade.gz.json")]  # a pull not finished: its last save's rows and events
@@ -38,7 +39,7 @@ def collect(src, dst):
     for block in sorted(b for b in os.listdir(src) if b.startswith("block-s") and os.path.isdir(os.path.join(src, b))):
         here = os.path.join(src, block)
         for name in sorted(os.listdir(here)):
-            if os.path.isfile(os.path.join(here, name)) and _wanted(here, block, name):
+            if os.path.isfile(os.path.join(here, name)) and _wanted(here, name):
                 os.makedirs(os.path.join(dst, block), exist_ok=True)
                 shutil.copy2(os.path.join(here, name), os.path.join(dst, block, name))
                 n += 1
