@@ -23,13 +23,13 @@ CHOSEN = os.path.abspath("campaigns/tablet/chosen")
 COMMITTED = os.path.abspath("campaigns/tablet/repeats")
 HERE = os.path.abspath(os.environ.get("REPEATS", "results/repeats"))
 OVERLAY = os.path.join(HERE, "overlay")
-LANES = ("", "2", "3", "-1920c", "-1920d")  # REPEATS + lane: the lanes' working folders
-NAME = re.compile(r"repeat-x([0-9.]+)-tension-Dx([0-9.]+)-P([0-9.]+)\.json$")
+LANES = ("", "2", "3", "-c", "-d")  # REPEATS + lane: the lanes' working folders
+NAME = re.compile(r"repeat-x([0-9.]+)-(tension|compression)-Dx([0-9.]+)-P([0-9.]+)\.json$")
 PARTS = (".json", ".csv", "-branches.csv")  # a run's files
 
 
 def finished():
-    """{factor: {(amplitude, period): [its files]}} of the complete repeats (a run's JSON is written last)."""
+    """{factor: {(mode, amplitude, period): [its files]}} of the complete repeats (a run's JSON is written last)."""
     out = {}
     found = sorted(glob.glob(os.path.join(COMMITTED, "repeat-x*.json")))
     found += [j for lane in LANES for j in sorted(glob.glob(os.path.join(HERE + lane, "runs", "repeat-x*", "*.json")))]
@@ -37,7 +37,20 @@ def finished():
         m = NAME.match(os.path.basename(js))
         if m:
             stem = js[:-len(".json")]
-            out.setdefault(m.group(1), {})[(float(m.group(2)), float(m.group(3)))] = [stem + e for e in PARTS]
+            out.setdefault(m.group(1), {})[(m.group(2), float(m.group(3)), float(m.group(4)))] = [
+                stem + e for e in PARTS]
+    return out
+
+
+def pulls():
+    """{factor: the pull's CSV} of the complete pull repeats (repeat-x<f>-pull: committed, or a lane's bundle)."""
+    found = sorted(glob.glob(os.path.join(COMMITTED, "repeat-x*-pull.json")))
+    found += [j for lane in LANES for j in sorted(glob.glob(os.path.join(HERE + lane, "repeat-x*-pull", "*.json")))]
+    out = {}
+    for js in found:
+        m = re.match(r"repeat-x([0-9.]+)-pull\.json$", os.path.basename(js))
+        if m:
+            out[m.group(1)] = js[:-len(".json")] + ".csv"
     return out
 
 
@@ -50,7 +63,7 @@ def overlay(factor, runs):
         link = os.path.join(OVERLAY, side)
         if not os.path.lexists(link):
             os.symlink(os.path.join(CHOSEN, "..", side), link)
-    replaced = {f"tension-Dx{a:g}-P{p:g}{e}" for a, p in runs for e in PARTS}
+    replaced = {f"{m}-Dx{a:g}-P{p:g}{e}" for m, a, p in runs for e in PARTS}
     for f in os.listdir(CHOSEN):
         if f not in replaced:
             os.symlink(os.path.join(CHOSEN, f), os.path.join(d, f))
@@ -108,16 +121,54 @@ def _p1920(table):
     return out
 
 
+def _compression(table):
+    """Statements 22-24 (the compression cycles' elasticity, plastic onset, retrace at 0.2) per run set that
+    repeated compression cycles, with the campaign's: each verdict and its numbers."""
+    print("== compression: #22, #23, #24 per run set that repeated them")
+    for name, row in table.items():
+        if name == "chosen" or row.get("compression"):
+            for st in row["statements"]:
+                if st["n"] in (22, 23, 24):
+                    print(f"  {name:12s} #{st['n']} {st['verdict']}  {st['project']}")
+
+
+def _pulls():
+    """Statement 21 (the tension branch's extent, ~ d0/5 within a factor 1.5) on each pull repeat and on the
+    campaign's pull read to the same end: peak, where the tension stays below half and a third of it for
+    good, and the verdict (both inside 0.133-0.3: ✓, one: ◐, none: ✗). Returns {name: numbers}."""
+    out = {}
+    found = pulls()
+    if not found:
+        return out
+    with open(next(iter(found.values()))[:-len(".csv")] + ".json") as f:
+        until = json.load(f)["until"]
+    print(f"== #21 on the pulls to Dx = {until:g}: peak (Dx), below half / a third for good from, verdict")
+    inside = [0.2 / S.APPROX, 0.2 * S.APPROX]
+    for name, csv in [("chosen", os.path.join(CHOSEN, "fig17.csv"))] + [("x" + k, v) for k, v in sorted(found.items())]:
+        rows = [r for r in S.read_csv(csv) if r[1] <= until]
+        peak = min(rows, key=lambda r: r[2])
+        branch = S.tension_extent(os.path.dirname(csv), os.path.basename(csv), until)
+        n_in = sum(1 for x in branch if inside[0] <= x <= inside[1]) if branch else 0
+        verdict = "–" if not branch else ("✓" if n_in == 2 else ("◐" if n_in else "✗"))
+        out[name] = {"peak": peak[2], "peak_Dx": peak[1], "half": branch and branch[0],
+                     "third": branch and branch[1], "verdict": verdict}
+        print(f"  {name:12s} {-peak[2]:.4f} ({peak[1]:.3f})  {branch[0]:.3f} / {branch[1]:.3f}  {verdict}"
+              if branch else f"  {name:12s} –")
+    return out
+
+
 def main(argv):
     numbers = None if argv == ["all"] else [int(x) for x in argv] or [10, 11, 12, 15]
     table = {"chosen": {"amplitudes": [0.1, 0.2, 0.3], "slow_amplitudes": [0.1, 0.2, 0.3],
                         "statements": S.statements(CHOSEN)}}
     for factor, runs in sorted(finished().items(), key=lambda kv: abs(float(kv[0]) - 1)):
-        table["x" + factor] = {"amplitudes": sorted(a for a, p in runs if p == 480.0),
-                               "slow_amplitudes": sorted(a for a, p in runs if p == 1920.0),
+        table["x" + factor] = {"amplitudes": sorted(a for m, a, p in runs if (m, p) == ("tension", 480.0)),
+                               "slow_amplitudes": sorted(a for m, a, p in runs if (m, p) == ("tension", 1920.0)),
+                               "compression": sorted(a for m, a, p in runs if m == "compression"),
                                "statements": S.statements(overlay(factor, runs))}
     for name, row in table.items():
         slow = f", at 1920 t_w {row['slow_amplitudes']}" if row["slow_amplitudes"] and name != "chosen" else ""
+        slow += f", compression {row['compression']}" if row.get("compression") else ""
         print(f"== {name} (repeated amplitudes {row['amplitudes']}{slow})")
         for s in row["statements"]:
             if numbers is None or s["n"] in numbers:
@@ -155,6 +206,10 @@ def main(argv):
     if any(row["slow_amplitudes"] for name, row in table.items() if name != "chosen"):
         for name, numbers in _p1920(table).items():
             table[name]["p1920"] = numbers
+    if any(row.get("compression") for row in table.values()):
+        _compression(table)
+    table["pulls_21"] = _pulls()
+    os.makedirs(HERE, exist_ok=True)
     with open(os.path.join(HERE, "verdicts.json"), "w") as f:
         json.dump(table, f, indent=1, ensure_ascii=False)
 

@@ -18,8 +18,8 @@ from .campaign.common import (
     FAST, FULL, PERIODS, PULL_SPEED, RATE_PERIODS, SLOW, is_master, mpy as _mpy, prepare, use_mpi,
 )
 from .campaign.runs import (
-    PERTURBED, PERTURBED_MORE, REPEAT_AMPLITUDES, REPEAT_FACTORS, RETURNS, TIMESTEP_FACTORS, TIMESTEP_RUNS, cyclic,
-    drag_share, factor_run, large_compression, pull, rates, repeats, timestep_study,
+    PERTURBED, PERTURBED_MORE, REPEAT_AMPLITUDES, REPEAT_FACTORS, REPEAT_PULL_UNTIL, RETURNS, TIMESTEP_FACTORS,
+    TIMESTEP_RUNS, cyclic, drag_share, factor_run, large_compression, pull, rates, repeats, timestep_study,
 )
 from .campaign.report import (
     compression_steps, drag_steps, factor_report, factor_table, large_compression_steps, pull_steps, rates_steps,
@@ -44,13 +44,15 @@ OPTIONS = (
     ("--no-run", dict(action="store_true", help="rates: only the periods whose runs are complete")),
     ("--speed", dict(type=float, default=PULL_SPEED, help="fig17: wall speed [mm/us]")),
     ("--until", dict(type=float, default=None,
-                     help="fig17: pull until Dx = UNTIL (default 9); profile: likewise (default 0.3); fig19: compress "
+                     help="fig17: pull until Dx = UNTIL (default 9); profile: likewise (default 0.3); repeats: the "
+                          "pull likewise (default 1); fig19: compress "
                           "until Dx = -UNTIL (default 3) (in d0)")),
     ("--factors",
      dict(default=None, help="timestep: comma-separated multiples of the campaign's time step (default 1,2,3,4 "
                              "and the perturbed 1.000001, 1.000002, 0.999999); repeats: multiples of the "
                              "campaign's tension step (default 1 +- k 1e-6, k = 1..5)")),
-    ("--runs", dict(default=None, help="timestep: comma-separated runs of tension, compression, pull (default all)")),
+    ("--runs", dict(default=None, help="timestep: comma-separated runs of tension, compression, pull (default all); "
+                                       "repeats: likewise (default tension)")),
     ("--material", dict(default="appendixF", choices=sorted(sample.MATERIALS),
                         help="prepare: particle parameters, Appendix F of the long paper or Table 2 of Luding 2008")),
     ("--kc-over-kp", dict(type=float, default=None, help="prepare: overrides the set's kc/kp")),
@@ -254,9 +256,10 @@ JOBS = Registry([
     Job("factors", _factors, "one pull of the factor study (a preparation), then its table."),
     Job("repeats", lambda a, amps, slow, periods: repeats(a.out, amps or REPEAT_AMPLITUDES,
                                                           a.factors or REPEAT_FACTORS, periods, a.quick,
-                                                          checkpoint=a.checkpoint),
-        "the tested sample's tension cycles with the campaign's step perturbed by 1e-6 .. 5e-6 (issue #60): the "
-        "spread of single runs' post-peak verdicts."),
+                                                          checkpoint=a.checkpoint, modes=a.runs or ("tension",),
+                                                          until=a.until or REPEAT_PULL_UNTIL),
+        "the tested sample's tension cycles (--runs: also compression cycles, the pull) with the campaign's step "
+        "perturbed by 1e-6 .. 5e-6 (issue #60): the spread of single runs' post-peak verdicts."),
     Job("affine", lambda a, amps, slow, periods: affine_run(a.out, a.quick, protocol=_preparation(a)),
         "the pull an affine stretch of the unconfined start's contacts would give (no steps run)."),
     Job("profile", lambda a, amps, slow, periods: profile_run(a.out, a.quick, protocol=_preparation(a),

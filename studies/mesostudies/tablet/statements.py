@@ -297,7 +297,7 @@ def statements(d):
             "misses it but the paper's 8 lies within one sd of the realizations' mean",
             "✓" if lc and 8 / APPROX <= lc <= 8 * APPROX else ("◐" if spread is not None and spread <= 1 else "✗"),
             why=chance)
-        branch = _tension_extent(d)
+        branch = tension_extent(d)
         add("the elastic, irreversible tension branch is strongly developed only for Dx ~ d0/5",
             (f"peak tension {-pull['max_tension']:.3g} at Dx = {pull['max_tension_Dx']:.3f}; below half the peak "
              f"for good from Dx = {branch[0]:.3f}, below a third from {branch[1]:.3f}") if branch else "–",
@@ -397,13 +397,13 @@ def _far_force(run, d):
     return max(last, key=lambda r: r[1])[2]
 
 
-def _tension_extent(d):
+def tension_extent(d, name="fig17.csv", until=None):
     """Where the pull's tension stays below half and below a third of its peak for good (Dx past
-    the peak), from fig17.csv; None without it."""
-    p = os.path.join(d, "fig17.csv")
+    the peak, to the pull's end or to Dx = ``until``), from the pull ``name`` in ``d``; None without it."""
+    p = os.path.join(d, name)
     if not os.path.exists(p):
         return None
-    rows = read_csv(p)
+    rows = [r for r in read_csv(p) if until is None or r[1] <= until]
     peak = min(rows, key=lambda r: r[2])
     out = []
     for frac in (0.5, 1 / 3):

@@ -374,23 +374,39 @@ def timestep_study(outdir, quick=False, factors=TIMESTEP_FACTORS + (PERTURBED,) 
 # (DT_FACTORS['tension']) multiplied by 1 + k 1e-6, k = +-1 .. +-5, far below any integration error:
 # the sample is chaotic after the peak, so the spread over these runs is what a single run's
 # post-peak verdict may move by. The unperturbed runs are the campaign's own (factor 1 repeats them).
+# The compression cycles and the pull repeat the same way (their own steps, DT_FACTORS[mode]).
 REPEAT_FACTORS = tuple(1 + s * k * 1e-6 for k in range(1, 6) for s in (1, -1))
 REPEAT_AMPLITUDES = (0.2, 0.1)
+REPEAT_PULL_UNTIL = 1.0  # d0: past the tension's extent (statement 21 reads it below 0.3), 1/9 of Fig. 17's pull
 
 
 def repeats(outdir, amplitudes=REPEAT_AMPLITUDES, factors=REPEAT_FACTORS, periods=PERIODS["tension"][:1], quick=False,
-            progress=True, checkpoint=False):
-    """The campaign's tension cycles (run_cycles) at each factor, amplitude and period, the step
-    DT_FACTORS['tension'] x factor, each named repeat-x<factor>-tension-Dx<a>-P<period> (complete
-    runs are read back); ``checkpoint``: each saved on the way (run_cycles). Returns {name: description}."""
+            progress=True, checkpoint=False, modes=("tension",), until=REPEAT_PULL_UNTIL):
+    """The campaign's cycles (run_cycles) in each of ``modes`` ('tension', 'compression') at each factor,
+    amplitude and period, the step DT_FACTORS[mode] x factor, each named
+    repeat-x<factor>-<mode>-Dx<a>-P<period> (complete runs are read back); ``checkpoint``: each saved on
+    the way (run_cycles). Mode 'pull': Fig. 17's pull to Dx = ``until`` at each factor, its step
+    DT_FACTORS['pull'] x factor, in the bundle repeat-x<factor>-pull (one snapshot, at the start; a
+    complete bundle is not run again). Returns {name: description}."""
     out = {}
     for factor in factors:
-        for amplitude in amplitudes:
-            for period in periods:
-                info, _ = run_cycles(outdir, "tension", amplitude, period, quick, progress,
-                                     prefix=f"repeat-x{factor:.10g}-", dt_factor=DT_FACTORS["tension"] * factor,
-                                     checkpoint=checkpoint)
-                out[info["name"]] = info
+        for mode in modes:
+            if mode == "pull":
+                tag = f"repeat-x{factor:.10g}-pull"
+                done = os.path.join(root(outdir, quick), tag, tag + ".json")
+                if os.path.exists(done):
+                    with open(done) as f:
+                        out[tag] = json.load(f)
+                    continue
+                out[tag] = pull(outdir, quick, until=until, progress=progress, dx_marks=FIG17_DX[:1], tag=tag,
+                                dt_factor=DT_FACTORS["pull"] * factor)
+                continue
+            for amplitude in amplitudes:
+                for period in periods:
+                    info, _ = run_cycles(outdir, mode, amplitude, period, quick, progress,
+                                         prefix=f"repeat-x{factor:.10g}-", dt_factor=DT_FACTORS[mode] * factor,
+                                         checkpoint=checkpoint)
+                    out[info["name"]] = info
     return out
 
 
