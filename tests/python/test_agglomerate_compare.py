@@ -187,6 +187,17 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual((frag["rows"][-1]["decides"], frag["rows"][-1]["decides_blocks"], frag["rows"][-1]["state"],
                           frag["goal"]), ("missed", "missed", "beyond", "missed"))
         self.assertIn("| 10 | 60 (3 x 20) |", er.verdict_text(vd))
+        # A speed beyond the goal's (160 m/s) gets its own row, measured alike, that does not count: missed by
+        # 0.3 there, the goal stays as it was without it ('open': 0.01 m/s unmeasured, 0.1 partial).
+        rows[-2]["broken_mass_fraction"] = 0.0
+        far = rows + [self.row(v_rel_m_s=160.0, seed=s, direction_index=k, e_contact=0.3) for s in (1, 2, 3)
+                      for k in range(1, 21)]
+        wide = er.verdict(er.table(far), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6, 160.0: 0.6})
+        self.assertEqual((wide["rows"][-1]["speed"], wide["rows"][-1]["state"], wide["rows"][-1]["decides"]),
+                         (160.0, "outside the goal", "missed"))
+        self.assertEqual((wide["goal"], wide["firm"]), ("open", 3))
+        self.assertIn("| 160 | 60 (3 x 20) |", er.verdict_text(wide))
+        self.assertEqual(len(er.verdict(er.table(far), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})["rows"]), 8)
 
 
 class Collect(unittest.TestCase):

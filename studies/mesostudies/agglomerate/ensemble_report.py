@@ -121,6 +121,28 @@ def _decide(d, half):
     return "missed" if abs(d) - half > GOAL_DIFFERENCE else "undecided"
 
 
+def _verdict_row(v, s, predicted, measure):
+    """verdict()'s row for speed ``v`` (``s``: table()'s entry, or None)."""
+    if s is None or s[measure]["mean"] is None:
+        return {"speed": v, "n": 0, "state": "not measured"}
+    k = s[measure]
+    d = predicted[v] - k["mean"]
+    se_runs = k["sd"] / math.sqrt(k["n"]) if k["n"] > 1 else None
+    bm = [x for x in k["block_means"].values() if x is not None]
+    se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
+    runs = _decide(d, None if se_runs is None else 2 * se_runs)
+    blocks = _decide(d, None if se_blocks is None else _t975(len(bm) - 1) * se_blocks)
+    within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
+    if s["fragmented"]:
+        runs = blocks = "missed"  # the goal asks for no fragmentation
+    full = s["n_blocks"] >= FULL[0] and s["n_directions"] >= FULL[1] and s["n"] >= FULL[0] * FULL[1]
+    return {"speed": v, "n": s["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
+            "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
+            "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
+            "fragmented": s["fragmented"], "decides": runs, "decides_blocks": blocks,
+            "anova": k.get("anova"), "state": ("within" if within else "beyond") if full else "partial"}
+
+
 def verdict(tab, predicted, measure="e_contact"):
     """The goal per speed and as a whole: |e_mean - e_predicted| <= GOAL_DIFFERENCE at every goal speed
     without fragmentation. ``tab``: table(); ``predicted``: {speed: e}. Per speed the difference, the
@@ -131,32 +153,15 @@ def verdict(tab, predicted, measure="e_contact"):
     them), ``decides_blocks`` with Student's t for the blocks' means (95 %); each 'met' or 'missed' when
     the interval stays on one side of the line, else 'undecided' (a fragmenting speed is 'missed').
     ``state``: 'within' or 'beyond' for a full speed (FULL blocks x directions), 'partial' for fewer
-    runs, 'not measured' for none. The whole goal is 'met' when every goal speed is full and within,
+    runs, 'not measured' for none, 'outside the goal' for a measured speed beyond the goal's (a row of its
+    own, measured the same way, that does not count). The whole goal is 'met' when every goal speed is full and within,
     'missed' when a full speed is beyond, else 'open'; ``firm`` and ``firm_blocks`` count the full
     speeds that each interval decides the same way."""
-    rows = []
-    for v in GOAL_SPEEDS:
-        s = tab.get(v)
-        if s is None or s[measure]["mean"] is None:
-            rows.append({"speed": v, "n": 0, "state": "not measured"})
-            continue
-        k = s[measure]
-        d = predicted[v] - k["mean"]
-        se_runs = k["sd"] / math.sqrt(k["n"]) if k["n"] > 1 else None
-        bm = [x for x in k["block_means"].values() if x is not None]
-        se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
-        runs = _decide(d, None if se_runs is None else 2 * se_runs)
-        blocks = _decide(d, None if se_blocks is None else _t975(len(bm) - 1) * se_blocks)
-        within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
-        if s["fragmented"]:
-            runs = blocks = "missed"  # the goal asks for no fragmentation
-        full = s["n_blocks"] >= FULL[0] and s["n_directions"] >= FULL[1] and s["n"] >= FULL[0] * FULL[1]
-        rows.append({"speed": v, "n": s["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
-                     "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
-                     "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
-                     "fragmented": s["fragmented"], "decides": runs, "decides_blocks": blocks,
-                     "anova": k.get("anova"), "state": ("within" if within else "beyond") if full else "partial"})
-    states = [r["state"] for r in rows]
+    rows = [_verdict_row(v, tab.get(v), predicted, measure) for v in GOAL_SPEEDS]
+    # Speeds beyond the goal's (160 m/s) the same way, marked so: not part of the goal.
+    rows += [dict(_verdict_row(v, tab[v], predicted, measure), state="outside the goal")
+             for v in sorted(tab) if v not in GOAL_SPEEDS and v in predicted and tab[v][measure]["mean"] is not None]
+    states = [r["state"] for r in rows if r["speed"] in GOAL_SPEEDS]
     whole = ("missed" if "beyond" in states else "met" if all(x == "within" for x in states) else "open")
 
     def firm(key):
