@@ -109,7 +109,7 @@ T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8
         15: 2.131, 20: 2.086, 30: 2.042}  # Student's t, two-sided 95 %, by degrees of freedom
 
 
-def _t975(df):
+def t975(df):
     return T975[max(k for k in T975 if k <= df)]  # the nearest tabulated df below: a wider interval, not narrower
 
 
@@ -131,12 +131,12 @@ def _verdict_row(v, s, predicted, measure):
     bm = [x for x in k["block_means"].values() if x is not None]
     se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
     runs = _decide(d, None if se_runs is None else 2 * se_runs)
-    blocks = _decide(d, None if se_blocks is None else _t975(len(bm) - 1) * se_blocks)
+    blocks = _decide(d, None if se_blocks is None else t975(len(bm) - 1) * se_blocks)
     within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
     if s["fragmented"]:
         runs = blocks = "missed"  # the goal asks for no fragmentation
     full = s["n_blocks"] >= FULL[0] and s["n_directions"] >= FULL[1] and s["n"] >= FULL[0] * FULL[1]
-    return {"speed": v, "n": s["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
+    return {"speed": v, "n": s["n"], "n_measured": k["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
             "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
             "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
             "fragmented": s["fragmented"], "decides": runs, "decides_blocks": blocks,
@@ -194,7 +194,9 @@ def verdict_text(vd):
         anova = "–"
         if a and a["F_blocks"] is not None:
             anova = f"{a['F_blocks']:.2f}, {a['F_directions']:.2f} ({a['df'][0]}, {a['df'][1]}, {a['df'][2]})"
-        lines.append(f"| {r['speed']:g} | {r['n']} ({r['n_blocks']} x {r['n_directions']}) | {f(r['mean'])} ± "
+        measured = f"; {r['n_measured']} measured" if r.get("n_measured", r["n"]) != r["n"] else ""
+        lines.append(f"| {r['speed']:g} | {r['n']} ({r['n_blocks']} x {r['n_directions']}{measured}) | "
+                     f"{f(r['mean'])} ± "
                      f"{f(r['sd'])} | {blocks} | {f(r['predicted'])} | {r['difference']:+.3f} | {f(r['se_runs'])}, "
                      f"{f(r['se_blocks'])} | {anova} | {r['decides']}, {r['decides_blocks']} | {r['state']} |")
     if vd.get("fall"):

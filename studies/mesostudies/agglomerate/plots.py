@@ -5,6 +5,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from mesocontact import outputs  # noqa: E402
+from . import ensemble_report  # noqa: E402
 
 
 def cycles(runs, law, path, d0, force_scale, touch):
@@ -100,29 +101,41 @@ def restitution(speeds, e_agg, e_meso, e_theory, broken, path, e_viscous=None, d
 
 def ensemble(res, rows, path, measure="e_contact"):
     """The ensemble against the predictions (predict's result ``res``, the collisions' ``rows``): every
-    run's ``measure`` (a stuck run at 0) as a dot beside its speed, each block's mean, the mean with two
-    standard errors (the larger of runs' and blocks'), and the three predictions from cycles, the
-    third (the result) with the goal's band of +-0.1 over the goal's speeds."""
+    run's ``measure`` as a dot beside its speed (a stuck run as a cross at 0), each block's mean, the mean
+    with two standard errors of the runs (thick) and the blocks' Student's t interval (thin, wider), a
+    speed outside the goal's in grey, and the three predictions from cycles, the third (the result) with
+    the goal's band of +-0.1 over the goal's speeds."""
     fig, ax = plt.subplots(figsize=(11, 5))
     speeds = res["speeds"]
     seeds = sorted({r["seed"] for r in rows})
     for k, seed in enumerate(seeds):  # each block beside the speed, its directions spread across (no overlap)
         xs = [r["v_rel_m_s"] * 1.07 ** (k - 1) * 1.004 ** (r["direction_index"] - 10.5) for r in rows
               if r["seed"] == seed]
-        ys = [0.0 if r["stuck"] else r.get(measure) for r in rows if r["seed"] == seed]
+        ys = [None if r["stuck"] else r.get(measure) for r in rows if r["seed"] == seed]
         ax.plot([x for x, y in zip(xs, ys) if y is not None], [y for y in ys if y is not None], ".",
-                ms=3, color=f"C{k}", alpha=0.35, label=f"block {seed}: each run (stuck at 0)")
+                ms=3, color=f"C{k}", alpha=0.35, label=f"block {seed}: each run")
+        stuck = [x for x, r in zip(xs, (r for r in rows if r["seed"] == seed)) if r["stuck"]]
+        ax.plot(stuck, [0.0] * len(stuck), "x", ms=3, color=f"C{k}", alpha=0.6,
+                label=f"block {seed}: stuck (counted at 0)")
     by = {r["speed"]: r for r in res["verdict"]["rows"] if r["n"]}
     for k, seed in enumerate(seeds):
         pts = [(v * 1.07 ** (k - 1), by[v]["block_means"].get(str(seed))) for v in speeds if v in by]
         ax.plot([p[0] for p in pts if p[1] is not None], [p[1] for p in pts if p[1] is not None], "_", ms=12, mew=2,
                 color=f"C{k}", label=f"block {seed}: mean")
-    for done, style, label in ((True, "ks", "mean, two standard errors of the runs (3 x 20 runs)"),
-                               (False, "ws", "mean of a speed still running")):
-        vs = [v for v in speeds if v in by and (by[v]["state"] != "partial") == done]
-        if vs:
-            ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[2 * (by[v]["se_runs"] or 0.0) for v in vs], fmt=style,
-                        mec="k", ecolor="k", ms=5, capsize=3, label=label)
+    kinds = (("within", "beyond"), "k", "k", "mean of the runs measured, two standard errors of the runs"), \
+        (("outside the goal",), "0.55", "0.55", "the same, beyond the goal's speeds"), \
+        (("partial",), "w", "k", "mean of a speed still running")
+    for states, face, edge, label in kinds:
+        vs = [v for v in speeds if v in by and by[v]["state"] in states]
+        if not vs:
+            continue
+        t = [by[v]["se_blocks"] and ensemble_report.t975(len(by[v]["block_means"]) - 1) * by[v]["se_blocks"]
+             for v in vs]
+        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[x or 0.0 for x in t], fmt="none", ecolor=edge, lw=0.7,
+                    capsize=6, alpha=0.6,
+                    label="thin bars: the blocks' Student's t interval (95 %)" if face == "k" else None)
+        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[2 * (by[v]["se_runs"] or 0.0) for v in vs], fmt="s",
+                    mfc=face, mec=edge, ecolor=edge, elinewidth=1.8, ms=5, capsize=3, label=label)
     beyond = [v for v in speeds if v not in by and res["e_mean"][speeds.index(v)] is not None]
     if beyond:
         ax.plot(beyond, [res["e_mean"][speeds.index(v)] for v in beyond], "kD", mfc="w", ms=5,
