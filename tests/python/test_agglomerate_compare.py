@@ -198,6 +198,16 @@ class EnsembleTable(unittest.TestCase):
         self.assertEqual((wide["goal"], wide["firm"]), ("open", 3))
         self.assertIn("| 160 | 60 (3 x 20) |", er.verdict_text(wide))
         self.assertEqual(len(er.verdict(er.table(far), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6})["rows"]), 8)
+        self.assertAlmostEqual(by[1.0]["half_blocks"], 4.303 * se_b, places=12)
+        self.assertAlmostEqual(by[1.0]["half_runs"], 2 * sd / 60 ** 0.5, places=12)
+        # A run whose first impact never ended (not stuck, no e_contact) is a run but not measured: said so.
+        self.assertNotIn(" measured)", er.verdict_text(wide))
+        far[-1]["e_contact"] = None
+        lone = er.verdict(er.table(far), {0.1: 0.9, 1.0: 0.85, 10.0: 0.55, 80.0: 0.6, 160.0: 0.6})
+        self.assertEqual((lone["rows"][-1]["n"], lone["rows"][-1]["n_measured"]), (60, 59))
+        self.assertIn("| 160 | 60 (3 x 20; 59 measured) |", er.verdict_text(lone))
+        far[-1]["e_rigid"] = None
+        self.assertIn("| 160 | 60 (3 x 20; e_contact of 59, e_rigid of 59) |", er.text(er.table(far)))
 
 
 class Collect(unittest.TestCase):

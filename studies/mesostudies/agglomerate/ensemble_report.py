@@ -130,8 +130,9 @@ def _verdict_row(v, s, predicted, measure):
     se_runs = k["sd"] / math.sqrt(k["n"]) if k["n"] > 1 else None
     bm = [x for x in k["block_means"].values() if x is not None]
     se_blocks = _stats(bm)[1] / math.sqrt(len(bm)) if len(bm) > 1 else None
-    runs = _decide(d, None if se_runs is None else 2 * se_runs)
-    blocks = _decide(d, None if se_blocks is None else t975(len(bm) - 1) * se_blocks)
+    half_runs = None if se_runs is None else 2 * se_runs
+    half_blocks = None if se_blocks is None else t975(len(bm) - 1) * se_blocks
+    runs, blocks = _decide(d, half_runs), _decide(d, half_blocks)
     within = abs(d) <= GOAL_DIFFERENCE and not s["fragmented"]
     if s["fragmented"]:
         runs = blocks = "missed"  # the goal asks for no fragmentation
@@ -139,6 +140,7 @@ def _verdict_row(v, s, predicted, measure):
     return {"speed": v, "n": s["n"], "n_measured": k["n"], "n_blocks": s["n_blocks"], "n_directions": s["n_directions"],
             "mean": k["mean"], "sd": k["sd"], "block_means": k["block_means"], "predicted": predicted[v],
             "difference": d, "se_runs": se_runs, "se_blocks": se_blocks, "within": within,
+            "half_runs": half_runs, "half_blocks": half_blocks,
             "fragmented": s["fragmented"], "decides": runs, "decides_blocks": blocks,
             "anova": k.get("anova"), "state": ("within" if within else "beyond") if full else "partial"}
 
@@ -222,7 +224,8 @@ def text(tab):
 
         def f(x, fmt=".3f"):
             return "–" if x is None else format(x, fmt)
-        lines.append(f"| {v:g} | {s['n']} ({s['n_blocks']} x {s['n_directions']}) | {f(c['mean'])} ± {f(c['sd'])} "
+        few = f"; e_contact of {k['n']}, e_rigid of {c['n']}" if s["n"] != k["n"] or s["n"] != c["n"] else ""
+        lines.append(f"| {v:g} | {s['n']} ({s['n_blocks']} x {s['n_directions']}{few}) | {f(c['mean'])} ± {f(c['sd'])} "
                      f"[{f(c['min'])}, {f(c['max'])}] | {f(e['mean'])} ± {f(e['sd'])} | {f(s['e_normal']['mean'])} | "
                      f"{f(k['mean'])} [{f(k['min'])}, {f(k['max'])}] | {s['e_contact_above_1']} "
                      f"({f(s['e_contact_mean_capped_at_1'])}) | {s['stuck']} ({f(s['e_contact_mean_rebounding'])}) | "

@@ -5,7 +5,6 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from mesocontact import outputs  # noqa: E402
-from . import ensemble_report  # noqa: E402
 
 
 def cycles(runs, law, path, d0, force_scale, touch):
@@ -129,12 +128,11 @@ def ensemble(res, rows, path, measure="e_contact"):
         vs = [v for v in speeds if v in by and by[v]["state"] in states]
         if not vs:
             continue
-        t = [by[v]["se_blocks"] and ensemble_report.t975(len(by[v]["block_means"]) - 1) * by[v]["se_blocks"]
-             for v in vs]
-        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[x or 0.0 for x in t], fmt="none", ecolor=edge, lw=0.7,
+        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[by[v]["half_blocks"] or 0.0 for v in vs], fmt="none",
+                    ecolor=edge, lw=0.7,
                     capsize=6, alpha=0.6,
                     label="thin bars: the blocks' Student's t interval (95 %)" if face == "k" else None)
-        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[2 * (by[v]["se_runs"] or 0.0) for v in vs], fmt="s",
+        ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[by[v]["half_runs"] or 0.0 for v in vs], fmt="s",
                     mfc=face, mec=edge, ecolor=edge, elinewidth=1.8, ms=5, capsize=3, label=label)
     beyond = [v for v in speeds if v not in by and res["e_mean"][speeds.index(v)] is not None]
     if beyond:

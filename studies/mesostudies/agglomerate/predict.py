@@ -70,7 +70,7 @@ def predict(out, campaign, info, progress=True):
     e_pred = compare.meso_collisions(params, info, [v / 1e3 for v in speeds], progress=progress, gammaN=gamma)
     res = {"speeds": speeds, "n_blocks": [tab[v]["n_blocks"] for v in speeds],
            "n_directions": [tab[v]["n_directions"] for v in speeds], "n_runs": [tab[v]["n"] for v in speeds],
-           "measure": PRIMARY,
+           "measure": PRIMARY, "n_measured": [tab[v][PRIMARY]["n"] for v in speeds],
            "e_mean": [tab[v][PRIMARY]["mean"] for v in speeds], "e_sd": [tab[v][PRIMARY]["sd"] for v in speeds],
            "e_predicted": e_pred,
            "fitted_to": {"k1, kp, kc, phiF, shift": f"the pair's slow cycles ({SLOW}, campaigns/agglomerate)",
@@ -342,8 +342,9 @@ def _final(res):
 
 def _verdict_table(pred, res):
     lines = [f"| v [m/s] | runs | {res['measure']} mean ± sd | predicted | difference |", "|---|---|---|---|---|"]
-    for v, n, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["e_mean"], res["e_sd"], pred["e_predicted"],
-                                 pred["difference"]):
+    for v, n, k, m, sd, p, d in zip(res["speeds"], res["n_runs"], res.get("n_measured", res["n_runs"]), res["e_mean"],
+                                    res["e_sd"], pred["e_predicted"], pred["difference"]):
+        n = f"{n} ({k} measured)" if k != n else n
         lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |" if m is not None else
                      f"| {v:g} | {n} | – | {p:.3f} | – |")
     return "\n".join(lines)
