@@ -42,6 +42,28 @@ class TestStatements(unittest.TestCase):
         sd = (sum((c - m) ** 2 for c in chains) / (len(chains) - 1)) ** 0.5
         self.assertEqual(row["verdict"], "✓" if 8 / 1.5 <= last <= 12 else ("◐" if abs(8 - m) <= sd else "✗"))
 
+    def test_same_start_to_the_last_bits(self):
+        """#7 (one start for every run): an L0 read again in another process may differ in its last bit
+        (the repeats at 0.3: 0.11605591726922296 against ...303), which is the same start; 1e-6 apart is not."""
+        def seven(l0):
+            with tempfile.TemporaryDirectory() as top:
+                d = os.path.join(top, "chosen")
+                os.mkdir(d)
+                os.symlink(os.path.abspath(os.path.join(DOCS, "factors")), os.path.join(top, "factors"))
+                for f in os.listdir(os.path.join(DOCS, "chosen")):
+                    if f != "tension-Dx0.3-P480.json":
+                        os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
+                with open(os.path.join(DOCS, "chosen", "tension-Dx0.3-P480.json")) as f:
+                    j = json.load(f)
+                j["L0"] = l0(j["L0"])
+                with open(os.path.join(d, "tension-Dx0.3-P480.json"), "w") as f:
+                    json.dump(j, f)
+                row = next(s for s in statements.statements(d) if s["paper"].startswith("all simulations start"))
+            return row["verdict"], row["project"]
+        self.assertEqual(seven(lambda x: x), ("✓", "18 runs, 1 distinct L0"))
+        self.assertEqual(seven(lambda x: x - 7e-17), ("✓", "18 runs, 1 distinct L0 (to 1e-12; 2 to the bit)"))
+        self.assertEqual(seven(lambda x: x * (1 + 1e-6)), ("✗", "18 runs, 2 distinct L0"))
+
     def test_a_statement_without_its_file_is_not_judged(self):
         with tempfile.TemporaryDirectory() as top:  # the chosen campaign without roughness.json, beside ../factors
             d = os.path.join(top, "chosen")
