@@ -1,7 +1,7 @@
 """the tablet's pages: the generated ones (`campaigns/tablet`: `chosen/summary.md`, `summary.md`,
-`chosen/statements.md`, `branch/experiments.md`) are what their scripts write from the committed
-files; `docs/tablet/README.md` quotes no number that those pages, `chosen/peaks.md` and
-`factors/factors.md` do not hold (every result on it computed by a script: a number typed by hand is
+`chosen/statements.md`, `branch/experiments.md`, `repeats/verdicts.txt`) are what their scripts write
+from the committed files; `docs/tablet/README.md` quotes no number that those pages, `chosen/peaks.md`
+and `factors/factors.md` do not hold (every result on it computed by a script: a number typed by hand is
 caught, numbers inside commands are not results), `docs/tablet/branch.md` only numbers of
 `experiments.md` and `factors.md`; and each picture the prose shows (`docs/tablet/pictures`) is the
 campaign's own file, byte for byte."""
@@ -54,7 +54,20 @@ class TabletDocs(unittest.TestCase):
     def generated(self):
         return "".join(_read(*p) for p in (("chosen", "summary.md"), ("chosen", "statements.md"),
                                            ("chosen", "peaks.md"), ("factors", "factors.md"),
-                                           ("branch", "experiments.md")))
+                                           ("branch", "experiments.md"), ("repeats", "verdicts.txt")))
+
+    def test_repeats_verdicts_are_generated(self):
+        """repeats/verdicts.txt is what studies/scripts/tablet_repeats.py prints from that folder alone."""
+        import subprocess
+        import sys
+        import tempfile
+        with tempfile.TemporaryDirectory() as tmp:
+            env = dict(os.environ, REPEATS=os.path.join(tmp, "repeats"),
+                       PYTHONPATH=os.pathsep.join(os.path.join(ROOT, x) for x in ("py", "studies")))
+            out = subprocess.run([sys.executable, os.path.join(ROOT, "studies", "scripts", "tablet_repeats.py"), "all"],
+                                 cwd=ROOT, env=env, capture_output=True, text=True, check=True).stdout
+        self.assertEqual(out, _read("repeats", "verdicts.txt"),
+                         "repeats/verdicts.txt differs from what tablet_repeats.py all prints")
 
     def test_readme_quotes_generated_numbers(self):
         self.assertEqual(missing_numbers(_prose("README.md"), self.generated()), [],
