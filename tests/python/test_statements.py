@@ -10,6 +10,17 @@ from mesostudies.tablet import statements
 DOCS = os.path.join(os.path.dirname(__file__), "..", "..", "campaigns", "tablet")
 
 
+def _chosen_without(top, name):
+    """campaigns/tablet/chosen linked into top/chosen (beside ../factors) without the file ``name``."""
+    d = os.path.join(top, "chosen")
+    os.mkdir(d)
+    os.symlink(os.path.abspath(os.path.join(DOCS, "factors")), os.path.join(top, "factors"))
+    for f in os.listdir(os.path.join(DOCS, "chosen")):
+        if f != name:
+            os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
+    return d
+
+
 class TestStatements(unittest.TestCase):
     def test_committed_campaign(self):
         chosen = os.path.join(DOCS, "chosen")
@@ -47,12 +58,7 @@ class TestStatements(unittest.TestCase):
         whose start differs from the campaign's by 2.3e-11 in its force) is another start, as is 1e-6 apart."""
         def seven(l0):
             with tempfile.TemporaryDirectory() as top:
-                d = os.path.join(top, "chosen")
-                os.mkdir(d)
-                os.symlink(os.path.abspath(os.path.join(DOCS, "factors")), os.path.join(top, "factors"))
-                for f in os.listdir(os.path.join(DOCS, "chosen")):
-                    if f != "tension-Dx0.3-P480.json":
-                        os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
+                d = _chosen_without(top, "tension-Dx0.3-P480.json")
                 with open(os.path.join(DOCS, "chosen", "tension-Dx0.3-P480.json")) as f:
                     j = json.load(f)
                 j["L0"] = l0(j["L0"])
@@ -65,13 +71,8 @@ class TestStatements(unittest.TestCase):
         self.assertEqual(seven(lambda x: x * (1 + 1e-6)), ("✗", "18 runs, 2 distinct L0"))
 
     def test_a_statement_without_its_file_is_not_judged(self):
-        with tempfile.TemporaryDirectory() as top:  # the chosen campaign without roughness.json, beside ../factors
-            d = os.path.join(top, "chosen")
-            os.mkdir(d)
-            os.symlink(os.path.abspath(os.path.join(DOCS, "factors")), os.path.join(top, "factors"))
-            for f in os.listdir(os.path.join(DOCS, "chosen")):
-                if f != "roughness.json":
-                    os.symlink(os.path.abspath(os.path.join(DOCS, "chosen", f)), os.path.join(d, f))
+        with tempfile.TemporaryDirectory() as top:  # the chosen campaign without roughness.json
+            d = _chosen_without(top, "roughness.json")
             row = next(s for s in statements.statements(d)
                        if s["paper"].startswith("the contact surface has developed a roughness"))
         self.assertEqual(row["verdict"], "–")
