@@ -134,10 +134,6 @@ def ensemble(res, rows, path, measure="e_contact"):
                     label="thin bars: the blocks' Student's t interval (95 %)" if face == "k" else None)
         ax.errorbar(vs, [by[v]["mean"] for v in vs], yerr=[by[v]["half_runs"] or 0.0 for v in vs], fmt="s",
                     mfc=face, mec=edge, ecolor=edge, elinewidth=1.8, ms=5, capsize=3, label=label)
-    beyond = [v for v in speeds if v not in by and res["e_mean"][speeds.index(v)] is not None]
-    if beyond:
-        ax.plot(beyond, [res["e_mean"][speeds.index(v)] for v in beyond], "kD", mfc="w", ms=5,
-                label="mean beyond the goal's speeds")
     goal = [v for v in speeds if v <= 80]
     third = dict(zip(speeds, res["e_predicted"]))
     ax.fill_between(goal, [third[v] - 0.1 for v in goal], [third[v] + 0.1 for v in goal], color="C3", alpha=0.12,

@@ -342,7 +342,7 @@ def _final(res):
 
 def _verdict_table(pred, res):
     lines = [f"| v [m/s] | runs | {res['measure']} mean ± sd | predicted | difference |", "|---|---|---|---|---|"]
-    for v, n, k, m, sd, p, d in zip(res["speeds"], res["n_runs"], res.get("n_measured", res["n_runs"]), res["e_mean"],
+    for v, n, k, m, sd, p, d in zip(res["speeds"], res["n_runs"], res["n_measured"], res["e_mean"],
                                     res["e_sd"], pred["e_predicted"], pred["difference"]):
         n = f"{n} ({k} measured)" if k != n else n
         lines.append(f"| {v:g} | {n} | {m:.3f} ± {sd:.3f} | {p:.3f} | {d:+.3f} |" if m is not None else

@@ -393,9 +393,9 @@ def repeats(outdir, amplitudes=REPEAT_AMPLITUDES, factors=REPEAT_FACTORS, period
         for mode in modes:
             if mode == "pull":
                 tag = f"repeat-x{factor:.10g}-pull"
-                done = os.path.join(root(outdir, quick), tag, tag + ".json")
-                if os.path.exists(done):
-                    with open(done) as f:
+                where = os.path.join(root(outdir, quick), tag)
+                if _out.complete(where):
+                    with open(os.path.join(where, tag + ".json")) as f:
                         out[tag] = json.load(f)
                     continue
                 out[tag] = pull(outdir, quick, until=until, progress=progress, dx_marks=FIG17_DX[:1], tag=tag,
